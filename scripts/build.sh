@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Configures and builds camcov. Usage: scripts/build.sh [release|sanitize]
+#   release  (default) optimised build in build/
+#   sanitize AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+kind=${1:-release}
+case "$kind" in
+  release)  dir="$repo/build";      flags=(-DCMAKE_BUILD_TYPE=Release) ;;
+  sanitize) dir="$repo/build-asan"; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
+  *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
+esac
+cmake -S "$repo" -B "$dir" -G Ninja "${flags[@]}" >/dev/null
+cmake --build "$dir" --parallel "$(nproc)"
+echo "$dir"

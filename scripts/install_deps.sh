@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package camcov needs to build, test and benchmark.
+# Idempotent: packages already present are skipped, so a second run costs one dpkg query.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git clang-format
+  libboost-dev                      # Boost.Geometry (header-only)
+  libompl-dev                       # OMPL: PRM* motion planning
+  libeigen3-dev                     # Eigen (pulled by OMPL too)
+  nlohmann-json3-dev                # JSON
+  libcairo2-dev                     # frames (PNG, SVG)
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev  # videos
+  libx264-dev
+  ffmpeg                            # ffprobe, used by tests to check videos
+  libgtest-dev libgmock-dev         # tests
+  libcli11-dev libfmt-dev           # command line, formatting
+  libbenchmark-dev                  # Google Benchmark
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install_deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install_deps: done"

@@ -1,0 +1,35 @@
+// `camcov validate FILE...`: one line per scene file, exit 2 if any is bad.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "cli/command.h"
+#include "scene/scene_loader.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+
+Registration addValidateCommand(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("validate", "Check scene files; one line per file, exit 2 if any is bad");
+  auto files = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("files", *files, "scene files (JSON)")->required();
+  return {cmd, [files] {
+            int exitCode = 0;
+            for (const auto& file : *files) {
+              try {
+                const scene::Scene s = scene::loadScene(file);
+                std::cout << fmt::format("ok    {}: {} target(s), {} obstacle(s), {} camera(s)\n",
+                                         file, s.targets.size(), s.obstacles.size(),
+                                         s.cameras.size());
+              } catch (const InputError& e) {
+                std::cout << "error " << e.what() << "\n";
+                exitCode = 2;
+              }
+            }
+            return exitCode;
+          }};
+}
+
+}  // namespace camcov::cli

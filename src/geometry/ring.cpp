@@ -1,0 +1,133 @@
+#include "geometry/ring.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace camcov::geometry {
+
+double signedArea(std::span<const Vec2> ring) {
+  double twiceArea = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    twiceArea += cross(ring[i], ring[(i + 1) % n]);
+  }
+  return 0.5 * twiceArea;
+}
+
+double perimeter(std::span<const Vec2> ring) {
+  double length = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i)
+    length += distance(ring[i], ring[(i + 1) % n]);
+  return length;
+}
+
+void normalizeRing(Ring& ring) {
+  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
+}
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = norm2(ab);
+  const double u = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return distance(p, a + ab * u);
+}
+
+double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    best = std::min(best, distanceToSegment(p, ring[i], ring[(i + 1) % n]));
+  }
+  return best;
+}
+
+Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
+  if (distanceToBoundary(ring, p) <= tolerance) return Containment::OnBoundary;
+  // Crossing number with the half-open rule, so a ray through a vertex counts once.
+  bool inside = false;
+  for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
+    const Vec2 a = ring[i], b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double xCross = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < xCross) inside = !inside;
+    }
+  }
+  return inside ? Containment::Inside : Containment::Outside;
+}
+
+double distanceToPolygon(std::span<const Vec2> ring, Vec2 p) {
+  const double d = distanceToBoundary(ring, p);
+  if (d == 0.0) return 0.0;
+  return locate(ring, p, 0.0) == Containment::Inside ? 0.0 : d;
+}
+
+bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b);
+  const double d3 = orient(a, b, c), d4 = orient(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+    return true;
+  }
+  // Touching or collinear cases: an endpoint lying on the other segment.
+  auto onSegment = [](Vec2 p, Vec2 q, Vec2 r) {  // r on [p, q], given collinear
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) ||
+         (d3 == 0 && onSegment(a, b, c)) || (d4 == 0 && onSegment(a, b, d));
+}
+
+double distanceBetweenPolygons(std::span<const Vec2> a, std::span<const Vec2> b) {
+  if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
+  if (locate(a, b[0], 0.0) != Containment::Outside ||
+      locate(b, a[0], 0.0) != Containment::Outside) {
+    return 0.0;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2 b0 = b[j], b1 = b[(j + 1) % b.size()];
+      if (segmentsIntersect(a0, a1, b0, b1)) return 0.0;
+      best = std::min({best, distanceToSegment(a0, b0, b1), distanceToSegment(a1, b0, b1),
+                       distanceToSegment(b0, a0, a1), distanceToSegment(b1, a0, a1)});
+    }
+  }
+  return best;
+}
+
+EdgePair findSelfIntersection(std::span<const Vec2> ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    // Adjacent edges share b; they only collide if the second folds back over the first.
+    if (orient(a, b, c) == 0.0 && dot(a - b, c - b) > 0.0) return {i, (i + 1) % n};
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing vertex
+      if (segmentsIntersect(a, b, ring[j], ring[(j + 1) % n])) return {i, j};
+    }
+  }
+  return {};
+}
+
+void transformRing(Ring& ring, double angle, Vec2 offset) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Vec2& v : ring)
+    v = {c * v.x - s * v.y + offset.x, s * v.x + c * v.y + offset.y};
+}
+
+void placeRing(std::span<const Vec2> local, double angle, Vec2 offset, Ring& out) {
+  out.assign(local.begin(), local.end());
+  transformRing(out, angle, offset);
+}
+
+Box boundingBox(std::span<const Vec2> ring) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Box box{{inf, inf}, {-inf, -inf}};
+  for (const Vec2 v : ring) {
+    box.min = {std::min(box.min.x, v.x), std::min(box.min.y, v.y)};
+    box.max = {std::max(box.max.x, v.x), std::max(box.max.y, v.y)};
+  }
+  return box;
+}
+
+}  // namespace camcov::geometry

@@ -1,0 +1,55 @@
+#pragma once
+// Simple polygons as open vertex rings. Convention used everywhere above this layer:
+// counter-clockwise, first vertex not repeated, at least 3 vertices.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace camcov::geometry {
+
+using Ring = std::vector<Vec2>;
+
+// Positive for counter-clockwise rings (shoelace formula).
+double signedArea(std::span<const Vec2> ring);
+double perimeter(std::span<const Vec2> ring);
+// Drops a repeated closing vertex and reverses clockwise rings: the loader's normalisation.
+void normalizeRing(Ring& ring);
+
+enum class Containment { Outside, OnBoundary, Inside };
+// Point location with the boundary widened by `tolerance` (an absolute distance).
+Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance = 1e-9);
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b);
+// Distance from p to the ring's boundary (edges only, ignores the interior).
+double distanceToBoundary(std::span<const Vec2> ring, Vec2 p);
+// Distance from p to the closed polygon: 0 inside, else the distance to the boundary.
+double distanceToPolygon(std::span<const Vec2> ring, Vec2 p);
+// Shortest distance between the closed polygons a and b (0 if they overlap).
+double distanceBetweenPolygons(std::span<const Vec2> a, std::span<const Vec2> b);
+
+// Do closed segments [a, b] and [c, d] share a point?
+bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+// Index pair (i, j) of two non-adjacent edges that touch, or {npos, npos} if the ring is simple.
+// Edge i runs from ring[i] to ring[i+1]. Quadratic: meant for validation, not hot loops.
+struct EdgePair {
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  std::size_t first = npos;
+  std::size_t second = npos;
+  bool found() const { return first != npos; }
+};
+EdgePair findSelfIntersection(std::span<const Vec2> ring);
+
+// Rotate every vertex by `angle` about the origin, then translate by `offset`, in place.
+void transformRing(Ring& ring, double angle, Vec2 offset);
+// The same from a local shape into `out` (its buffer reused).
+void placeRing(std::span<const Vec2> local, double angle, Vec2 offset, Ring& out);
+
+struct Box {
+  Vec2 min;
+  Vec2 max;
+};
+Box boundingBox(std::span<const Vec2> ring);
+
+}  // namespace camcov::geometry

@@ -1,0 +1,40 @@
+#pragma once
+// Placement of every object at any time t (SPEC section 2): translation along the closed
+// path, rotation by angularVelocity·t about the reference point, and the deformation
+// extension. The controller asks only for the present; nothing here looks ahead on its own.
+#include <vector>
+
+#include "kinematics/path_motion.h"
+#include "kinematics/world.h"
+#include "scene/scene.h"
+
+namespace camcov::kinematics {
+
+struct ObjectPose {
+  geometry::Vec2 reference;  // reference point in world coordinates
+  double angle = 0.0;        // rotation of the shape, radians (ω·t, not wrapped)
+};
+
+class Kinematics {
+ public:
+  explicit Kinematics(const scene::Scene& scene);
+
+  // Fills `out` (reusing its buffers, so a caller stepping through time allocates nothing).
+  void worldAt(double t, World& out) const;
+  World worldAt(double t) const;
+
+  ObjectPose targetPose(std::size_t i, double t) const;
+  ObjectPose obstaclePose(std::size_t i, double t) const;
+  const scene::Scene& scene() const { return scene_; }
+
+ private:
+  static ObjectPose pose(const scene::MovingObject& object, const PathMotion& motion, double t);
+  static void place(const scene::MovingObject& object, const PathMotion& motion, double t,
+                    geometry::Ring& out);
+
+  scene::Scene scene_;  // a copy: small, and a Kinematics must not outlive what it describes
+  std::vector<PathMotion> targetMotion_;
+  std::vector<PathMotion> obstacleMotion_;
+};
+
+}  // namespace camcov::kinematics

@@ -1,0 +1,205 @@
+#include "params/parameter_table.h"
+
+#include <fmt/format.h>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <type_traits>
+
+#include "util/input_error.h"
+
+namespace camcov::params {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One row of the table from two member pointers: the group in Parameters, the field in it.
+template <auto Group, auto Field>
+constexpr ParamField row(const char* key, const char* symbol, const char* unit,
+                         const char* description, double min, double max) {
+  using Value = std::remove_cvref_t<decltype(std::declval<Parameters>().*Group.*Field)>;
+  return {key,
+          symbol,
+          unit,
+          description,
+          min,
+          max,
+          std::is_integral_v<Value>,
+          [](const Parameters& p) { return static_cast<double>(p.*Group.*Field); },
+          [](Parameters& p, double v) { p.*Group.*Field = static_cast<Value>(v); }};
+}
+
+using P = Parameters;
+constexpr std::array kTable{
+    row<&P::reward, &RewardParams::lambda1>("reward.lambda1", "λ1", "",
+                                            "weight of coverage in the reward, eq. (8)", 0, kInf),
+    row<&P::reward, &RewardParams::lambda2>(
+        "reward.lambda2", "λ2", "", "weight of utilization in the reward, eq. (8)", 0, kInf),
+    row<&P::reward, &RewardParams::lambda3>("reward.lambda3", "λ3", "",
+                                            "weight of repulsion in the reward, eq. (8)", 0, kInf),
+    row<&P::reward, &RewardParams::d2>("reward.d2", "d2", "m",
+                                       "sensing radius: objects farther away add no repulsion, "
+                                       "eq. (7); also the range of the executor's repulsive force",
+                                       1e-6, kInf),
+    row<&P::global, &GlobalParams::K>(
+        "global.K", "K", "", "samples per camera in Algorithm 2; run time grows linearly", 1, 1e7),
+    row<&P::global, &GlobalParams::T1>(
+        "global.T1", "T1", "s", "period of global optimization (also run at t = 0)", 1e-6, kInf),
+    row<&P::global, &GlobalParams::tau>("global.tau", "τ", "",
+                                        "replan only if the global reward exceeds the current "
+                                        "one by this factor",
+                                        1, kInf),
+    row<&P::local, &LocalParams::epsilon>("local.epsilon", "ε", "m | rad",
+                                          "step of the numerical gradient of the reward", 1e-12, 1),
+    row<&P::local, &LocalParams::alpha>("local.alpha", "α", "m² per unit reward",
+                                        "gradient-ascent step size for translation", 0, kInf),
+    row<&P::local, &LocalParams::beta>("local.beta", "β", "rad² per unit reward",
+                                       "gradient-ascent step size for rotation", 0, kInf),
+    row<&P::planner, &PlannerParams::p>("planner.p", "p", "",
+                                        "probability of a uniform sample instead of the "
+                                        "visibility sampler",
+                                        0, 1),
+    row<&P::planner, &PlannerParams::T2>("planner.T2", "T2", "s",
+                                         "planning budget; charged as T2 × milestonesPerSecond "
+                                         "roadmap milestones, so runs stay deterministic",
+                                         1e-6, kInf),
+    row<&P::planner, &PlannerParams::d1>(
+        "planner.d1", "d1", "m", "clearance to every object for a valid planner state", 0, kInf),
+    row<&P::planner, &PlannerParams::milestonesPerSecond>(
+        "planner.milestonesPerSecond", "", "1/s",
+        "roadmap milestones standing for one second of T2 (our deterministic budget)", 1, 1e7),
+    row<&P::potential, &PotentialParams::lambda4>(
+        "potential.lambda4", "λ4", "", "weight of the attractive force, eq. (11)", 0, kInf),
+    row<&P::potential, &PotentialParams::lambda5>(
+        "potential.lambda5", "λ5", "", "weight of the repulsive force, eq. (11)", 0, kInf),
+    row<&P::potential, &PotentialParams::T3>(
+        "potential.T3", "T3", "s", "abort a plan after this long without progress", 0, kInf),
+    row<&P::sim, &SimParams::dt>("sim.dt", "dt", "s", "fixed simulation time step", 1e-4, 10),
+    row<&P::sim, &SimParams::duration>("sim.duration", "T", "s", "simulated time per run", 0, 1e6),
+    row<&P::sim, &SimParams::delta>("sim.delta", "δ", "m",
+                                    "a camera closer than this to an object or another camera "
+                                    "is in collision (a measured metric)",
+                                    0, kInf),
+};
+
+void checkValue(const ParamField& f, double v, const std::string& where) {
+  if (!std::isfinite(v)) throw InputError(where + ": " + f.key + " must be a finite number");
+  if (f.integer && v != std::floor(v)) {
+    throw InputError(fmt::format("{}: {} must be a whole number, is {}", where, f.key, v));
+  }
+  if (v < f.min || v > f.max) {
+    throw InputError(fmt::format("{}: {} = {} is outside [{}, {}]", where, f.key, v, f.min, f.max));
+  }
+}
+
+std::string_view groupOf(std::string_view key) {
+  return key.substr(0, key.find('.'));
+}
+std::string_view nameOf(std::string_view key) {
+  return key.substr(key.find('.') + 1);
+}
+
+}  // namespace
+
+std::span<const ParamField> parameterTable() {
+  return kTable;
+}
+
+const ParamField* findParameter(std::string_view key) {
+  for (const auto& f : kTable) {
+    if (key == f.key) return &f;
+  }
+  return nullptr;
+}
+
+nlohmann::json toJson(const Parameters& p) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& f : kTable) {
+    auto& slot = j[std::string(groupOf(f.key))][std::string(nameOf(f.key))];
+    if (f.integer) {
+      slot = static_cast<long long>(f.get(p));
+    } else {
+      slot = f.get(p);
+    }
+  }
+  return j;
+}
+
+Parameters fromJson(const nlohmann::json& j, const std::string& source, Parameters base) {
+  if (!j.is_object()) throw InputError(source + ": parameters must be a JSON object");
+  for (const auto& [group, fields] : j.items()) {
+    if (!fields.is_object()) {
+      throw InputError(source + ": " + group + ": expected an object of parameters");
+    }
+    for (const auto& [name, value] : fields.items()) {
+      const std::string key = group + "." + name;
+      const ParamField* f = findParameter(key);
+      if (f == nullptr) throw InputError(source + ": " + key + ": unknown parameter");
+      if (!value.is_number()) throw InputError(source + ": " + key + ": expected a number");
+      const double v = value.get<double>();
+      checkValue(*f, v, source);
+      f->set(base, v);
+    }
+  }
+  return base;
+}
+
+Parameters loadParameters(const std::string& file, Parameters base) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file + ": cannot open parameter file");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file + ": invalid JSON: " + e.what());
+  }
+  return fromJson(j, file, base);
+}
+
+void applyAssignment(Parameters& p, std::string_view assignment) {
+  const std::string where = "--set " + std::string(assignment);
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos) throw InputError(where + ": expected group.name=value");
+  const std::string key(assignment.substr(0, eq));
+  const std::string text(assignment.substr(eq + 1));
+  const ParamField* f = findParameter(key);
+  if (f == nullptr) {
+    std::string known;
+    for (const auto& field : kTable)
+      known += std::string(known.empty() ? "" : ", ") + field.key;
+    throw InputError(where + ": unknown parameter '" + key + "' (known: " + known + ")");
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) {
+    throw InputError(where + ": '" + text + "' is not a number");
+  }
+  checkValue(*f, v, where);
+  f->set(p, v);
+}
+
+void validate(const Parameters& p) {
+  for (const auto& f : kTable)
+    checkValue(f, f.get(p), "parameters");
+}
+
+std::vector<std::string> warnings(const Parameters& p) {
+  std::vector<std::string> result;
+  const double bound = p.sim.delta * p.sim.delta * (p.reward.lambda1 + p.reward.lambda2);
+  if (p.reward.lambda3 < bound) {
+    result.push_back(fmt::format(
+        "reward.lambda3 = {} is below δ²(λ1 + λ2) = {}: eq. (9) no longer guarantees that a "
+        "collision lowers the reward",
+        p.reward.lambda3, bound));
+  }
+  if (p.reward.d2 < p.sim.delta) {
+    result.push_back("reward.d2 < sim.delta: repulsion starts only inside the collision distance");
+  }
+  return result;
+}
+
+}  // namespace camcov::params

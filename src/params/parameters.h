@@ -1,0 +1,61 @@
+#pragma once
+// Every tunable of the method in one place, Table I of the paper as defaults (SPEC section 5),
+// plus the simulation settings of SPEC section 3. The field table in parameter_table.h
+// declares each one's key, symbol, unit and valid range once; JSON, --set and the report all
+// read that table.
+namespace camcov::params {
+
+// Reward, eq. (5)-(8).
+struct RewardParams {
+  double lambda1 = 1.0;  // λ1, weight of coverage eq. (3)
+  double lambda2 = 0.2;  // λ2, weight of utilization eq. (5)
+  double lambda3 = 1.0;  // λ3, weight of repulsion eq. (6)
+  double d2 = 2.0;       // d2, m, sensing radius of invdist eq. (7)
+};
+
+// Global optimization, Algorithm 2 and its trigger (section V-A).
+struct GlobalParams {
+  int K = 500;       // K, samples per camera
+  double T1 = 5.0;   // T1, s, period of global optimization
+  double tau = 1.2;  // τ, factor by which the global reward must beat the current one
+};
+
+// Local optimization, gradient ascent (section V-E).
+struct LocalParams {
+  double epsilon = 1e-6;  // ε, numerical-gradient step (m for x, y; rad for γ)
+  double alpha = 0.5;     // α, gradient step size for translation
+  double beta = 0.005;    // β, gradient step size for rotation
+};
+
+// Motion planning, PRM* (section V-C).
+struct PlannerParams {
+  double p = 0.1;   // p, probability of a uniform sample instead of the visibility sampler
+  double T2 = 0.5;  // T2, s, planning time budget (charged as milestones, see below)
+  double d1 = 1.0;  // d1, m, clearance from every object for a state to be valid
+  double milestonesPerSecond = 2000.0;  // roadmap milestones that stand for one second of T2
+};
+
+// Execution with artificial potentials (section V-D).
+struct PotentialParams {
+  double lambda4 = 1.0;  // λ4, weight of the attractive force eq. (11)
+  double lambda5 = 1.0;  // λ5, weight of the repulsive force eq. (11)
+  double T3 = 2.0;       // T3, s, abort a plan after this long without progress
+};
+
+// Simulation (SPEC section 3).
+struct SimParams {
+  double dt = 0.1;         // s, fixed time step
+  double duration = 30.0;  // s, simulated time per run (the paper's 30 s)
+  double delta = 0.5;      // δ, m, distance below which a camera is in collision
+};
+
+struct Parameters {
+  RewardParams reward;
+  GlobalParams global;
+  LocalParams local;
+  PlannerParams planner;
+  PotentialParams potential;
+  SimParams sim;
+};
+
+}  // namespace camcov::params

@@ -1,0 +1,59 @@
+#pragma once
+// A scene as loaded from the published benchmark's JSON format (SPEC section 2), already
+// normalised: rings open and counter-clockwise, angles in radians, defaults filled in.
+// Time-dependent placement lives one layer up, in kinematics/.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/ring.h"
+#include "geometry/vec2.h"
+
+namespace camcov::scene {
+
+// Our extension for deforming objects (paper section II: targets "translate, rotate, and/or
+// deform"). The local shape is interpolated vertex by vertex, linearly in time, through
+// (0, shape), (keyframes[0].time, keyframes[0].shape), ..., (period, shape), then repeats.
+struct DeformationKeyframe {
+  double time = 0.0;     // seconds into the cycle, strictly inside (0, period)
+  geometry::Ring shape;  // same vertex count and correspondence as the object's shape
+};
+
+struct Deformation {
+  double period = 0.0;                         // seconds, > 0
+  std::vector<DeformationKeyframe> keyframes;  // strictly increasing times
+};
+
+// A target or an obstacle.
+struct MovingObject {
+  geometry::Ring shape;              // local coordinates about the reference point, CCW
+  std::vector<geometry::Vec2> path;  // waypoints of the reference point; one point = static
+  double velocity = 1.0;             // m/s along the path (closed loop), > 0
+  double angularVelocity = 0.0;      // rad/s, counter-clockwise about the reference point
+  std::optional<Deformation> deformation;
+
+  bool isStatic() const {
+    return path.size() == 1 && angularVelocity == 0.0 && !deformation.has_value();
+  }
+};
+
+struct CameraSpec {
+  geometry::Pose initial;           // p_j(0); yaw γ in radians, wrapped to [-π, π]
+  double maxVelocity = 0.0;         // v_j^max, m/s, > 0
+  double maxAngularVelocity = 0.0;  // γ̇_j^max, rad/s, > 0
+};
+
+struct Scene {
+  std::string name;         // file stem, e.g. "dynamic9"
+  std::string description;  // optional "description" key (our extension), may be empty
+  geometry::Ring boundary;  // B: time-invariant simple polygon, CCW
+  std::vector<MovingObject> targets;
+  std::vector<MovingObject> obstacles;
+  double fovHalfAngle = 0.0;  // θ, radians, in (0, π)
+  std::vector<CameraSpec> cameras;
+};
+
+// Placement of an object at t = 0: the shape about the first waypoint, unrotated, undeformed.
+geometry::Ring initialPolygon(const MovingObject& object);
+
+}  // namespace camcov::scene

@@ -1,0 +1,265 @@
+#include "scene/scene_loader.h"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "scene/scene_error.h"
+#include "scene/scene_validation.h"
+#include "scene/wkt.h"
+
+namespace camcov::scene {
+namespace {
+
+using nlohmann::json;
+
+// A JSON value together with where it sits in the file, so every error can say so.
+class Node {
+ public:
+  Node(const json& value, std::string path, const std::string& file)
+      : value_(value), path_(std::move(path)), file_(file) {}
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw SceneError(file_, path_, problem);
+  }
+
+  const std::string& path() const { return path_; }
+  bool has(const char* key) const { return value_.contains(key); }
+
+  Node child(const char* key) const {
+    if (!value_.contains(key)) {
+      Node(value_, join(key), file_).fail("missing required key");
+    }
+    return Node(value_.at(key), join(key), file_);
+  }
+  Node element(std::size_t i) const {
+    return Node(value_.at(i), path_ + "[" + std::to_string(i) + "]", file_);
+  }
+
+  const json& object(std::initializer_list<const char*> allowedKeys) const {
+    if (!value_.is_object()) fail("expected an object, found " + typeName());
+    for (const auto& [key, unused] : value_.items()) {
+      if (std::none_of(allowedKeys.begin(), allowedKeys.end(),
+                       [&](const char* k) { return key == k; })) {
+        std::string allowed;
+        for (const char* k : allowedKeys)
+          allowed += std::string(allowed.empty() ? "" : ", ") + k;
+        Node(value_, join(key.c_str()), file_).fail("unknown key (allowed here: " + allowed + ")");
+      }
+    }
+    return value_;
+  }
+  std::size_t arraySize() const {
+    if (!value_.is_array()) fail("expected an array, found " + typeName());
+    return value_.size();
+  }
+  double number() const {
+    if (!value_.is_number()) fail("expected a number, found " + typeName());
+    const double v = value_.get<double>();
+    if (!std::isfinite(v)) fail("number is not finite");
+    return v;
+  }
+  std::string string() const {
+    if (!value_.is_string()) fail("expected a string, found " + typeName());
+    return value_.get<std::string>();
+  }
+  std::vector<geometry::Vec2> wktRing() const {
+    try {
+      return parseWktPolygonRing(string());
+    } catch (const WktError& e) {
+      fail(e.what());
+    }
+  }
+  geometry::Vec2 wktPoint() const {
+    try {
+      return parseWktPoint(string());
+    } catch (const WktError& e) {
+      fail(e.what());
+    }
+  }
+
+ private:
+  std::string join(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  std::string typeName() const { return value_.type_name(); }
+
+  const json& value_;
+  std::string path_;
+  const std::string& file_;
+};
+
+// Shapes and the boundary: at least 3 distinct vertices, no zero-length edge, non-zero area,
+// no self-intersection. Returns the ring normalised to open + counter-clockwise.
+geometry::Ring simpleRing(const Node& node) {
+  geometry::Ring ring = node.wktRing();
+  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  std::set<std::pair<double, double>> distinct;
+  for (const auto& v : ring)
+    distinct.insert({v.x, v.y});
+  if (distinct.size() < 3) {
+    node.fail("polygon needs at least 3 distinct vertices, has " + std::to_string(distinct.size()));
+  }
+  if (const std::string problem = describeRingDefect(ring); !problem.empty()) node.fail(problem);
+  geometry::normalizeRing(ring);
+  return ring;
+}
+
+std::vector<geometry::Vec2> path(const Node& node) {
+  std::vector<geometry::Vec2> waypoints = node.wktRing();
+  if (waypoints.size() > 1) {
+    double length = 0.0;
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+      length += geometry::distance(waypoints[i], waypoints[(i + 1) % waypoints.size()]);
+    }
+    if (length == 0.0) {
+      node.fail("path of " + std::to_string(waypoints.size()) +
+                " waypoints has zero length; a static object has a one-point path");
+    }
+  }
+  return waypoints;
+}
+
+double positive(const Node& node, const char* what) {
+  const double v = node.number();
+  if (v <= 0.0) node.fail(fmt::format("{} must be positive, is {}", what, v));
+  return v;
+}
+
+Deformation deformation(const Node& node, const geometry::Ring& writtenShape) {
+  node.object({"period", "keyframes"});
+  Deformation result;
+  result.period = positive(node.child("period"), "period");
+  const Node frames = node.child("keyframes");
+  const std::size_t count = frames.arraySize();
+  if (count == 0) frames.fail("needs at least one keyframe");
+  double previous = 0.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Node frame = frames.element(i);
+    frame.object({"time", "shape"});
+    const Node timeNode = frame.child("time");
+    const double time = timeNode.number();
+    if (time <= previous || time >= result.period) {
+      timeNode.fail("keyframe times must increase strictly inside (0, period)");
+    }
+    previous = time;
+    const Node shapeNode = frame.child("shape");
+    geometry::Ring shape = shapeNode.wktRing();
+    if (shape.size() > 1 && shape.front() == shape.back()) shape.pop_back();
+    if (shape.size() != writtenShape.size()) {
+      shapeNode.fail("keyframe has " + std::to_string(shape.size()) + " vertices, shape has " +
+                     std::to_string(writtenShape.size()) + "; vertex i must match vertex i");
+    }
+    if ((geometry::signedArea(shape) > 0) != (geometry::signedArea(writtenShape) > 0)) {
+      shapeNode.fail("keyframe is written in the opposite orientation to shape");
+    }
+    if (const std::string problem = describeRingDefect(shape); !problem.empty()) {
+      shapeNode.fail(problem);
+    }
+    result.keyframes.push_back({time, std::move(shape)});
+  }
+  return result;
+}
+
+MovingObject movingObject(const Node& node) {
+  node.object({"shape", "path", "velocity", "angularVelocity", "deformation"});
+  MovingObject object;
+  const Node shapeNode = node.child("shape");
+  object.shape = simpleRing(shapeNode);
+  object.path = path(node.child("path"));
+  if (node.has("velocity")) object.velocity = positive(node.child("velocity"), "velocity");
+  if (node.has("angularVelocity")) object.angularVelocity = node.child("angularVelocity").number();
+  if (node.has("deformation")) {
+    // Keyframes correspond vertex by vertex to the shape as written; normalise them together.
+    geometry::Ring written = shapeNode.wktRing();
+    if (written.size() > 1 && written.front() == written.back()) written.pop_back();
+    Deformation d = deformation(node.child("deformation"), written);
+    if (geometry::signedArea(written) < 0) {
+      for (auto& frame : d.keyframes)
+        std::reverse(frame.shape.begin(), frame.shape.end());
+    }
+    object.deformation = std::move(d);
+    if (const std::string problem = describeDeformationDefect(object); !problem.empty()) {
+      node.child("deformation").fail(problem);
+    }
+  }
+  return object;
+}
+
+std::vector<MovingObject> objects(const Node& node) {
+  std::vector<MovingObject> result;
+  for (std::size_t i = 0, n = node.arraySize(); i < n; ++i) {
+    result.push_back(movingObject(node.element(i)));
+  }
+  return result;
+}
+
+CameraSpec camera(const Node& node) {
+  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity"});
+  CameraSpec camera;
+  const geometry::Vec2 pos = node.child("pos").wktPoint();
+  const double yawDegrees = node.child("angle").number();
+  camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
+  camera.maxVelocity = positive(node.child("maxVelocity"), "maxVelocity");
+  camera.maxAngularVelocity = positive(node.child("maxAngularVelocity"), "maxAngularVelocity");
+  return camera;
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
+  json document;
+  try {
+    document = json::parse(jsonText);
+  } catch (const json::exception& e) {  // parse errors, and numbers beyond double range
+    throw SceneError(sourceName, "", std::string("invalid JSON: ") + e.what());
+  }
+  const Node root(document, "", sourceName);
+  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description"});
+
+  Scene scene;
+  scene.name = std::filesystem::path(sourceName).stem().string();
+  if (root.has("description")) scene.description = root.child("description").string();
+  scene.boundary = simpleRing(root.child("boundary"));
+
+  const Node targets = root.child("targets");
+  scene.targets = objects(targets);
+  if (scene.targets.empty()) targets.fail("a scene needs at least one target");
+  if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"));
+
+  const Node fov = root.child("cameraFoV");
+  const double fovDegrees = fov.number();
+  if (fovDegrees <= 0.0 || fovDegrees >= 180.0) {
+    fov.fail(
+        fmt::format("half-angle field of view must be in (0, 180) degrees, is {}", fovDegrees));
+  }
+  scene.fovHalfAngle = geometry::degToRad(fovDegrees);
+
+  const Node cameras = root.child("cameras");
+  const std::size_t cameraCount = cameras.arraySize();
+  if (cameraCount == 0) cameras.fail("a scene needs at least one camera");
+  if (cameraCount > kMaxCameras) {
+    cameras.fail("at most " + std::to_string(kMaxCameras) + " cameras are supported, found " +
+                 std::to_string(cameraCount));
+  }
+  for (std::size_t i = 0; i < cameraCount; ++i)
+    scene.cameras.push_back(camera(cameras.element(i)));
+
+  if (const PlacementDefect defect = findPlacementDefect(scene); !defect.jsonPath.empty()) {
+    throw SceneError(sourceName, defect.jsonPath, defect.problem);
+  }
+  return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError(file.string(), "", "cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(file.string(), "", "read error");
+  return parseScene(text.str(), file.string());
+}
+
+}  // namespace camcov::scene

@@ -1,0 +1,107 @@
+// End-to-end: the camcov executable as a user runs it.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "camcov/version.h"
+#include "support/run_camcov.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+TEST(Cli, PrintsVersion) {
+  const auto r = runCamcov("--version");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find(kVersion), std::string::npos);
+}
+
+TEST(Cli, EverySubcommandHasHelp) {
+  for (const char* sub : {"validate", "state", "params"}) {
+    const auto r = runCamcov(std::string(sub) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << sub;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
+  }
+  EXPECT_EQ(runCamcov("--help").exitCode, 0);
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(runCamcov("").exitCode, 2);                     // no subcommand
+  EXPECT_EQ(runCamcov("frobnicate").exitCode, 2);           // unknown subcommand
+  EXPECT_EQ(runCamcov("state").exitCode, 2);                // missing file
+  EXPECT_EQ(runCamcov("params --set nope=1").exitCode, 2);  // unknown parameter
+}
+
+TEST(CliValidate, AcceptsEveryPublishedAndOwnScene) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  std::string args = "validate";
+  for (const auto& dir : {publishedScenesDir(), ownScenesDir()}) {
+    for (const auto& f : jsonFilesIn(dir))
+      args.append(" ").append(f.string());
+  }
+  const auto r = runCamcov(args);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("error"), std::string::npos) << r.out;
+}
+
+TEST(CliValidate, EveryBadFileExitsTwoNamingTheFile) {
+  for (const auto& f : jsonFilesIn(testDataDir() / "bad")) {
+    const auto r = runCamcov("validate " + f.string());
+    EXPECT_EQ(r.exitCode, 2) << f;
+    const std::string expected = "error " + f.string();  // then ": " and the JSON path
+    EXPECT_NE(r.out.find(expected + ": "), std::string::npos) << r.out;
+  }
+}
+
+TEST(CliValidate, OneBadFileAmongGoodOnesStillFailsAndReportsEach) {
+  const auto good = ownScenesDir() / "fig1_example.json";
+  const auto bad = testDataDir() / "bad" / "no_cameras.json";
+  const auto r = runCamcov("validate " + good.string() + " " + bad.string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.out.find("ok    " + good.string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("error " + bad.string()), std::string::npos) << r.out;
+}
+
+TEST(CliState, Dynamic9AtSevenPointThreeFollowsTheLoopRule) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  const auto r =
+      runCamcov("state " + (publishedScenesDir() / "dynamic9.json").string() + " --time 7.3");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scene"], "dynamic9");
+  EXPECT_EQ(j["targets"].size(), 6u);
+  EXPECT_EQ(j["cameras"].size(), 5u);
+  // Target 0 goes (0 5) -> (0 -5) at 0.5 m/s: 3.65 m down after 7.3 s.
+  EXPECT_NEAR(j["targets"][0]["reference"][1].get<double>(), 1.35, 1e-12);
+  // Polygon vertices are the shape about the reference; first vertex (-1, 0) of the shape.
+  const auto& poly = j["targets"][0]["polygon"];
+  double twiceArea = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto& a = poly[i];
+    const auto& b = poly[(i + 1) % poly.size()];
+    twiceArea += a[0].get<double>() * b[1].get<double>() - b[0].get<double>() * a[1].get<double>();
+  }
+  EXPECT_GT(twiceArea, 0.0) << "rings are counter-clockwise";
+  EXPECT_NE(poly[0], poly[poly.size() - 1]) << "rings are open";
+}
+
+TEST(CliState, MissingSceneFileExitsTwo) {
+  const auto r = runCamcov("state /nonexistent.json --time 1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/nonexistent.json"), std::string::npos) << r.err;
+}
+
+TEST(CliParams, PrintsDefaultsAndAppliesOverridesInOrder) {
+  auto r = runCamcov("params --set global.K=50 --set global.K=60 --set planner.T2=0.25");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["global"]["K"], 60);
+  EXPECT_EQ(j["planner"]["T2"], 0.25);
+  EXPECT_EQ(j["reward"]["lambda2"], 0.2);
+  r = runCamcov("params --describe");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("λ1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace camcov::testing

@@ -1,0 +1,113 @@
+#include "geometry/ring.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace camcov::geometry {
+namespace {
+
+const Ring kUnitSquare{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+TEST(SignedArea, PositiveForCounterClockwiseNegativeForClockwise) {
+  EXPECT_DOUBLE_EQ(signedArea(kUnitSquare), 1.0);
+  Ring cw(kUnitSquare.rbegin(), kUnitSquare.rend());
+  EXPECT_DOUBLE_EQ(signedArea(cw), -1.0);
+  EXPECT_DOUBLE_EQ(perimeter(kUnitSquare), 4.0);
+}
+
+TEST(NormalizeRing, DropsClosingVertexAndMakesCounterClockwise) {
+  Ring ring{{0, 0}, {0, 1}, {1, 1}, {1, 0}, {0, 0}};  // closed, clockwise
+  normalizeRing(ring);
+  ASSERT_EQ(ring.size(), 4u);
+  EXPECT_GT(signedArea(ring), 0.0);
+}
+
+TEST(Locate, DistinguishesInsideOutsideAndBoundary) {
+  EXPECT_EQ(locate(kUnitSquare, {0.5, 0.5}), Containment::Inside);
+  EXPECT_EQ(locate(kUnitSquare, {1.5, 0.5}), Containment::Outside);
+  EXPECT_EQ(locate(kUnitSquare, {1.0, 0.5}), Containment::OnBoundary);          // on an edge
+  EXPECT_EQ(locate(kUnitSquare, {1.0, 1.0}), Containment::OnBoundary);          // on a vertex
+  EXPECT_EQ(locate(kUnitSquare, {1.0 + 1e-12, 0.5}), Containment::OnBoundary);  // within tolerance
+}
+
+TEST(Locate, RayThroughVertexCountsOnce) {
+  // The horizontal ray from (0, 1) passes exactly through the diamond's vertices (±1, 1)...
+  const Ring diamond{{0, 0}, {1, 1}, {0, 2}, {-1, 1}};
+  EXPECT_EQ(locate(diamond, {0, 1}), Containment::Inside);
+  EXPECT_EQ(locate(diamond, {-2, 1}), Containment::Outside);
+  EXPECT_EQ(locate(diamond, {2, 1}), Containment::Outside);
+}
+
+TEST(Locate, NonConvexPocketIsOutside) {
+  const Ring u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+  EXPECT_EQ(locate(u, {1.5, 2}), Containment::Outside);
+  EXPECT_EQ(locate(u, {0.5, 2}), Containment::Inside);
+}
+
+TEST(DistanceToSegment, HandlesDegenerateSegmentAndEndpoints) {
+  EXPECT_DOUBLE_EQ(distanceToSegment({3, 4}, {0, 0}, {0, 0}), 5.0);
+  EXPECT_DOUBLE_EQ(distanceToSegment({0.5, 2}, {0, 0}, {1, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(distanceToSegment({4, 4}, {0, 0}, {1, 0}), 5.0);
+}
+
+TEST(DistanceToPolygon, IsZeroInsideAndOnBoundary) {
+  EXPECT_EQ(distanceToPolygon(kUnitSquare, {0.5, 0.5}), 0.0);
+  EXPECT_EQ(distanceToPolygon(kUnitSquare, {1.0, 0.5}), 0.0);
+  EXPECT_DOUBLE_EQ(distanceToPolygon(kUnitSquare, {0.5, 3.0}), 2.0);
+  EXPECT_DOUBLE_EQ(distanceToBoundary(kUnitSquare, {0.5, 0.5}), 0.5);
+}
+
+TEST(DistanceBetweenPolygons, ZeroWhenTouchingOverlappingOrNested) {
+  Ring shifted;
+  placeRing(kUnitSquare, 0.0, {1, 0}, shifted);  // shares the edge x = 1
+  EXPECT_EQ(distanceBetweenPolygons(kUnitSquare, shifted), 0.0);
+  placeRing(kUnitSquare, 0.0, {0.5, 0.5}, shifted);  // overlaps
+  EXPECT_EQ(distanceBetweenPolygons(kUnitSquare, shifted), 0.0);
+  const Ring big{{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};
+  EXPECT_EQ(distanceBetweenPolygons(big, kUnitSquare), 0.0);  // nested
+  placeRing(kUnitSquare, 0.0, {3, 4}, shifted);
+  EXPECT_DOUBLE_EQ(distanceBetweenPolygons(kUnitSquare, shifted), std::hypot(2.0, 3.0));
+}
+
+TEST(SegmentsIntersect, CoversCrossingTouchingCollinearAndDisjoint) {
+  EXPECT_TRUE(segmentsIntersect({0, 0}, {2, 2}, {0, 2}, {2, 0}));   // proper crossing
+  EXPECT_TRUE(segmentsIntersect({0, 0}, {2, 0}, {1, 0}, {1, 5}));   // T-junction
+  EXPECT_TRUE(segmentsIntersect({0, 0}, {2, 0}, {1, 0}, {3, 0}));   // collinear overlap
+  EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {2, 0}, {3, 0}));  // collinear, apart
+  EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {0, 1}, {1, 1}));  // parallel
+}
+
+TEST(FindSelfIntersection, AcceptsSimpleRingsIncludingCollinearVertices) {
+  EXPECT_FALSE(findSelfIntersection(kUnitSquare).found());
+  const Ring collinear{{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_FALSE(findSelfIntersection(collinear).found());
+}
+
+TEST(FindSelfIntersection, ReportsBowtieSpikeAndTouchingVertex) {
+  const Ring bowtie{{0, 0}, {2, 2}, {2, 0}, {0, 2}};
+  EXPECT_TRUE(findSelfIntersection(bowtie).found());
+  const Ring spike{{0, 0}, {2, 0}, {1, 0}, {1, 1}};  // edge 1 folds back over edge 0
+  EXPECT_TRUE(findSelfIntersection(spike).found());
+  // Vertex 3 touches edge 0 at its middle: not simple although no edges cross.
+  const Ring touching{{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
+  EXPECT_TRUE(findSelfIntersection(touching).found());
+}
+
+TEST(PlaceRing, RotatesAboutOriginThenTranslates) {
+  Ring out;
+  placeRing(kUnitSquare, std::numbers::pi / 2, {10, 0}, out);
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_NEAR(out[1].x, 10.0, 1e-15);  // (1, 0) -> (0, 1) -> (10, 1)
+  EXPECT_NEAR(out[1].y, 1.0, 1e-15);
+  EXPECT_GT(signedArea(out), 0.0);  // rotation keeps orientation
+}
+
+TEST(BoundingBox, SpansAllVertices) {
+  const Box box = boundingBox(Ring{{-1, 2}, {3, -4}, {0, 5}});
+  EXPECT_EQ(box.min, (Vec2{-1, -4}));
+  EXPECT_EQ(box.max, (Vec2{3, 5}));
+}
+
+}  // namespace
+}  // namespace camcov::geometry

@@ -1,0 +1,93 @@
+// Every class of bad scene file in tests/data/bad/ is rejected with a message that names the
+// file, the JSON path and the problem (SPEC section 2).
+#include <gtest/gtest.h>
+
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+#include "support/test_paths.h"
+
+namespace camcov::scene {
+namespace {
+
+struct BadCase {
+  const char* file;      // in tests/data/bad/, without ".json"
+  const char* jsonPath;  // expected SceneError::jsonPath()
+  const char* fragment;  // expected in the message
+};
+
+const BadCase kBadCases[] = {
+    {"invalid_json", "", "invalid JSON"},
+    {"empty_file", "", "invalid JSON"},
+    {"huge_number", "", "number overflow"},
+    {"top_level_array", "", "expected an object"},
+    {"missing_boundary", "boundary", "missing required key"},
+    {"missing_cameras", "cameras", "missing required key"},
+    {"missing_camera_angle", "cameras[0].angle", "missing required key"},
+    {"boundary_not_string", "boundary", "expected a string"},
+    {"fov_not_number", "cameraFoV", "expected a number"},
+    {"velocity_not_number", "targets[0].velocity", "expected a number"},
+    {"unknown_key", "targets[0].velocty", "unknown key"},
+    {"wkt_unbalanced", "targets[0].shape", "invalid WKT"},
+    {"wkt_point_for_polygon", "targets[0].shape", "invalid WKT"},
+    {"wkt_polygon_for_point", "cameras[0].pos", "invalid WKT"},
+    {"wkt_three_numbers", "targets[0].shape", "has 3 numbers"},
+    {"wkt_nan", "targets[0].shape", "not a finite number"},
+    {"wkt_inf", "cameras[0].pos", "not a finite number"},
+    {"polygon_with_hole", "targets[0].shape", "holes"},
+    {"two_vertices", "targets[0].shape", "at least 3 distinct vertices"},
+    {"repeated_vertices", "targets[0].shape", "at least 3 distinct vertices"},
+    {"zero_length_edge", "targets[0].shape", "zero-length edge"},
+    {"zero_area", "targets[0].shape", "collinear"},
+    {"self_intersecting_shape", "targets[0].shape", "intersects itself"},
+    {"self_intersecting_boundary", "boundary", "intersects itself"},
+    {"zero_length_path", "targets[0].path", "zero length"},
+    {"negative_velocity", "targets[0].velocity", "must be positive"},
+    {"zero_max_velocity", "cameras[0].maxVelocity", "must be positive"},
+    {"negative_max_angular_velocity", "cameras[0].maxAngularVelocity", "must be positive"},
+    {"fov_zero", "cameraFoV", "(0, 180)"},
+    {"fov_180", "cameraFoV", "(0, 180)"},
+    {"no_cameras", "cameras", "at least one camera"},
+    {"no_targets", "targets", "at least one target"},
+    {"too_many_cameras", "cameras", "at most 64"},
+    {"camera_outside_boundary", "cameras[0].pos", "outside the boundary"},
+    {"camera_inside_target", "cameras[0].pos", "inside targets[0]"},
+    {"camera_inside_obstacle", "cameras[0].pos", "inside obstacles[0]"},
+    {"object_outside_boundary", "obstacles[0].shape", "outside the boundary"},
+    {"deformation_vertex_count", "targets[0].deformation.keyframes[0].shape", "vertices"},
+    {"deformation_time_outside_period", "targets[0].deformation.keyframes[0].time", "(0, period)"},
+    {"deformation_opposite_orientation", "targets[0].deformation.keyframes[0].shape",
+     "opposite orientation"},
+    {"deformation_interpolation_not_simple", "targets[0].deformation", "not simple"},
+    {"deformation_no_keyframes", "targets[0].deformation.keyframes", "at least one keyframe"},
+};
+
+class BadScene : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadScene, IsRejectedWithFileJsonPathAndProblem) {
+  const BadCase& c = GetParam();
+  const auto file = testing::testDataDir() / "bad" / (std::string(c.file) + ".json");
+  ASSERT_TRUE(std::filesystem::exists(file)) << file;
+  try {
+    loadScene(file);
+    FAIL() << "accepted " << file;
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.jsonPath(), c.jsonPath) << message;
+    EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(c.fragment), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllClasses, BadScene, ::testing::ValuesIn(kBadCases),
+                         [](const auto& info) { return std::string(info.param.file); });
+
+TEST(BadSceneSet, EveryFileInTheFolderHasACase) {
+  for (const auto& file : testing::jsonFilesIn(testing::testDataDir() / "bad")) {
+    const bool listed = std::any_of(std::begin(kBadCases), std::end(kBadCases),
+                                    [&](const BadCase& c) { return file.stem() == c.file; });
+    EXPECT_TRUE(listed) << file << " has no expectation in kBadCases";
+  }
+}
+
+}  // namespace
+}  // namespace camcov::scene

@@ -1,0 +1,93 @@
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "scene/scene_error.h"
+#include "support/test_paths.h"
+
+namespace camcov::scene {
+namespace {
+
+using geometry::Vec2;
+
+TEST(LoadScene, LoadsEveryPublishedScene) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  const auto files = testing::jsonFilesIn(testing::publishedScenesDir());
+  EXPECT_EQ(files.size(), 32u);
+  for (const auto& file : files) {
+    SCOPED_TRACE(file.string());
+    const Scene s = loadScene(file);
+    EXPECT_EQ(s.name, file.stem().string());
+    EXPECT_GT(geometry::signedArea(s.boundary), 0.0);
+    for (const auto& t : s.targets)
+      EXPECT_GT(geometry::signedArea(t.shape), 0.0);
+  }
+}
+
+TEST(LoadScene, LoadsEveryOwnScene) {
+  const auto files = testing::jsonFilesIn(testing::ownScenesDir());
+  EXPECT_GE(files.size(), 12u);
+  for (const auto& file : files) {
+    SCOPED_TRACE(file.string());
+    EXPECT_NO_THROW(loadScene(file));
+  }
+}
+
+TEST(LoadScene, NormalisesClockwiseShapesAndAppliesDefaults) {
+  // Published static1 writes its triangle clockwise; the defaults fill velocity.
+  const Scene s = parseScene(R"js({
+    "boundary": "POLYGON((-15 -15,15 -15,15 15,-15 15))",
+    "targets": [{"shape": "POLYGON((-2 -1,2 1,2 -1))", "path": "POLYGON((0 0))"}],
+    "obstacles": [],
+    "cameraFoV": 30,
+    "cameras": [{"pos": "POINT(0 -10)", "angle": 310, "maxVelocity": 2.0,
+                 "maxAngularVelocity": 1.0}]})js",
+                             "static_like.json");
+  EXPECT_EQ(s.name, "static_like");
+  ASSERT_EQ(s.targets.size(), 1u);
+  const auto& shape = s.targets[0].shape;
+  ASSERT_EQ(shape.size(), 3u);
+  EXPECT_DOUBLE_EQ(geometry::signedArea(shape), 4.0);
+  EXPECT_EQ(s.targets[0].velocity, 1.0);
+  EXPECT_EQ(s.targets[0].angularVelocity, 0.0);
+  EXPECT_TRUE(s.targets[0].isStatic());
+  EXPECT_NEAR(s.fovHalfAngle, std::numbers::pi / 6, 1e-15);
+  EXPECT_NEAR(s.cameras[0].initial.yaw, -50.0 * std::numbers::pi / 180.0, 1e-12);  // 310° wraps
+  EXPECT_TRUE(s.obstacles.empty());
+}
+
+TEST(LoadScene, ObstaclesKeyIsOptionalAndDescriptionIsKept) {
+  const Scene s = parseScene(R"js({
+    "description": "one square",
+    "boundary": "POLYGON((-5 -5,5 -5,5 5,-5 5))",
+    "targets": [{"shape": "POLYGON((0 0,1 0,1 1,0 1))", "path": "POLYGON((0 0))"}],
+    "cameraFoV": 45,
+    "cameras": [{"pos": "POINT(-4 -4)", "angle": 45, "maxVelocity": 1, "maxAngularVelocity": 1}]})js",
+                             "x.json");
+  EXPECT_EQ(s.description, "one square");
+  EXPECT_TRUE(s.obstacles.empty());
+}
+
+TEST(LoadScene, CameraOnTheBoundaryOrOnAnObjectEdgeIsAllowed) {
+  EXPECT_NO_THROW(parseScene(R"js({
+    "boundary": "POLYGON((-5 -5,5 -5,5 5,-5 5))",
+    "targets": [{"shape": "POLYGON((0 0,1 0,1 1,0 1))", "path": "POLYGON((0 0))"}],
+    "cameraFoV": 30,
+    "cameras": [{"pos": "POINT(-5 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+                {"pos": "POINT(0.5 0)", "angle": -90, "maxVelocity": 1, "maxAngularVelocity": 1}]})js",
+                             "edge.json"));
+}
+
+TEST(LoadScene, MissingFileIsAnInputErrorNamingTheFile) {
+  try {
+    loadScene("/nonexistent/scene.json");
+    FAIL() << "expected SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace camcov::scene
