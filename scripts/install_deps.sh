@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git clang-format
   libboost-dev                      # Boost.Geometry (header-only)
   libompl-dev                       # OMPL: PRM* motion planning
+  libboost-filesystem-dev libboost-serialization-dev libboost-system-dev  # linked by OMPL
   libeigen3-dev                     # Eigen (pulled by OMPL too)
   nlohmann-json3-dev                # JSON
   libcairo2-dev                     # frames (PNG, SVG)

@@ -3,6 +3,7 @@
 // runs after parsing and returns the process exit code (0 ok, 2 bad input).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace camcov::cli {
@@ -15,8 +16,18 @@ struct Registration {
   Action action;
 };
 
+// The command line camcov was started with (argv), for results metadata.
+const std::vector<std::string>& invocation();
+void setInvocation(int argc, char** argv);
+
 Registration addValidateCommand(CLI::App& app);
 Registration addStateCommand(CLI::App& app);
 Registration addParamsCommand(CLI::App& app);
+Registration addInspectCommand(CLI::App& app);
+Registration addRunCommand(CLI::App& app);
+Registration addRenderCommand(CLI::App& app);
+Registration addVideoCommand(CLI::App& app);
+Registration addBenchCommand(CLI::App& app);
+Registration addMergeCommand(CLI::App& app);
 
 }  // namespace camcov::cli

@@ -8,16 +8,29 @@
 #include "cli/command.h"
 #include "util/input_error.h"
 
+namespace camcov::cli {
+namespace {
+std::vector<std::string> commandLine;
+}  // namespace
+const std::vector<std::string>& invocation() {
+  return commandLine;
+}
+void setInvocation(int argc, char** argv) {
+  commandLine.assign(argv, argv + argc);
+}
+}  // namespace camcov::cli
+
 int main(int argc, char** argv) {
   using namespace camcov;
   CLI::App app{"camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian)"};
   app.set_version_flag("--version", std::string("camcov ") + kVersion);
   app.require_subcommand(1);
   const std::vector<cli::Registration> commands{
-      cli::addValidateCommand(app),
-      cli::addStateCommand(app),
-      cli::addParamsCommand(app),
+      cli::addValidateCommand(app), cli::addStateCommand(app), cli::addParamsCommand(app),
+      cli::addInspectCommand(app),  cli::addRunCommand(app),   cli::addRenderCommand(app),
+      cli::addVideoCommand(app),    cli::addBenchCommand(app), cli::addMergeCommand(app),
   };
+  cli::setInvocation(argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -26,19 +26,58 @@ void normalizeRing(Ring& ring) {
   if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
 }
 
-double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = norm2(ab);
   const double u = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, a + ab * u);
+  return a + ab * u;
+}
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  return distance(p, closestPointOnSegment(p, a, b));
+}
+
+namespace {
+double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  return norm2(p - closestPointOnSegment(p, a, b));
+}
+}  // namespace
+
+double distanceBetweenSegments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (segmentsIntersect(a, b, c, d)) return 0.0;
+  // Disjoint segments are closest at an endpoint of one of them.
+  return std::sqrt(
+      std::min({squaredDistanceToSegment(a, c, d), squaredDistanceToSegment(b, c, d),
+                squaredDistanceToSegment(c, a, b), squaredDistanceToSegment(d, a, b)}));
+}
+
+double distanceSegmentToBoundary(std::span<const Vec2> ring, Vec2 a, Vec2 b) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    best = std::min(best, distanceBetweenSegments(a, b, ring[i], ring[(i + 1) % n]));
+  }
+  return best;
+}
+
+Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p) {
+  Vec2 best = ring.empty() ? p : ring[0];
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2 q = closestPointOnSegment(p, ring[i], ring[(i + 1) % n]);
+    if (const double d = distance(p, q); d < bestDistance) {
+      bestDistance = d;
+      best = q;
+    }
+  }
+  return best;
 }
 
 double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    best = std::min(best, distanceToSegment(p, ring[i], ring[(i + 1) % n]));
+    best = std::min(best, squaredDistanceToSegment(p, ring[i], ring[(i + 1) % n]));
   }
-  return best;
+  return std::sqrt(best);
 }
 
 Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {

@@ -22,8 +22,15 @@ enum class Containment { Outside, OnBoundary, Inside };
 Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance = 1e-9);
 
 double distanceToSegment(Vec2 p, Vec2 a, Vec2 b);
+Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b);
+// The point of the ring's boundary closest to p.
+Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p);
 // Distance from p to the ring's boundary (edges only, ignores the interior).
 double distanceToBoundary(std::span<const Vec2> ring, Vec2 p);
+// Shortest distance between closed segments [a, b] and [c, d] (0 if they touch).
+double distanceBetweenSegments(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+// Shortest distance from segment [a, b] to the ring's boundary (0 if it touches or crosses).
+double distanceSegmentToBoundary(std::span<const Vec2> ring, Vec2 a, Vec2 b);
 // Distance from p to the closed polygon: 0 inside, else the distance to the boundary.
 double distanceToPolygon(std::span<const Vec2> ring, Vec2 p);
 // Shortest distance between the closed polygons a and b (0 if they overlap).

@@ -8,10 +8,10 @@
 namespace camcov::kinematics {
 
 struct World {
-  double time = 0.0;                         // t, seconds
-  geometry::Ring boundary;                   // B: simple, CCW, occludes
-  std::vector<geometry::Ring> targets;       // T(t): CCW rings; their boundaries are covered
-  std::vector<geometry::Ring> obstacles;     // O(t): CCW rings; occlude, are not covered
+  double time = 0.0;                      // t, seconds
+  geometry::Ring boundary;                // B: simple, CCW, occludes
+  std::vector<geometry::Ring> targets;    // T(t): CCW rings; their boundaries are covered
+  std::vector<geometry::Ring> obstacles;  // O(t): CCW rings; occlude, are not covered
 };
 
 }  // namespace camcov::kinematics

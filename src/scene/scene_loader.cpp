@@ -3,11 +3,10 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
+#include "scene/read_text.h"
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
 #include "scene/wkt.h"
@@ -254,12 +253,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string(), "", "cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(file.string(), "", "read error");
-  return parseScene(text.str(), file.string());
+  return parseScene(readText(file), file.string());
 }
 
 }  // namespace camcov::scene

@@ -17,7 +17,7 @@ TEST(Cli, PrintsVersion) {
 }
 
 TEST(Cli, EverySubcommandHasHelp) {
-  for (const char* sub : {"validate", "state", "params"}) {
+  for (const char* sub : {"validate", "state", "params", "inspect", "run"}) {
     const auto r = runCamcov(std::string(sub) + " --help");
     EXPECT_EQ(r.exitCode, 0) << sub;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;

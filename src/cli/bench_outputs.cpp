@@ -1,0 +1,46 @@
+#include "cli/bench_outputs.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+
+#include "results/ompl_benchmark_log.h"
+
+namespace camcov::cli {
+
+int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
+                      const std::vector<results::JobOutcome>& outcomes) {
+  const results::BatchSummary summary = results::summarize(outcomes);
+  folder.writeSummary(summary);
+  const auto logs = results::writeOmplBenchmarkLogs(folder, manifest.parameters);
+
+  std::map<std::pair<std::string, std::string>, const results::MethodSummary*> rows;
+  for (const auto& m : summary.methods)
+    rows[{m.scene, m.method}] = &m;
+  auto cell = [&](const std::string& scene, const std::string& method) {
+    const auto it = rows.find({scene, method});
+    if (it == rows.end() || it->second->runs == 0) return std::string("-");
+    const auto& c = it->second->coverage;
+    return fmt::format("{:.3f} ± {:.3f}", c.mean, c.sd);
+  };
+  std::cout << fmt::format("{:<34} {:>15} {:>15}  {:<6} {}\n", "scene (average coverage)", "paper",
+                           "local", "winner", "p");
+  for (const auto& c : summary.scenes) {
+    std::cout << fmt::format("{:<34} {:>15} {:>15}  {:<6} {}\n", c.scene, cell(c.scene, "paper"),
+                             cell(c.scene, "local"), c.winner.empty() ? "-" : c.winner,
+                             c.winner.empty() ? std::string("-") : fmt::format("{:.3g}", c.pValue));
+  }
+  std::cout << fmt::format("paper wins {}, ties {}, local wins {}; {} failed jobs\n",
+                           summary.paperWins, summary.ties, summary.localWins,
+                           summary.failures.size());
+  for (const auto& f : summary.failures) {
+    std::cout << fmt::format("  failed: {} {} seed {}: {}\n", f.scene, f.method, f.seed, f.error);
+  }
+  std::cout << fmt::format(
+      "wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl\n",
+      folder.root().string(), logs.size(), folder.root().string());
+  return summary.failures.empty() ? 0 : 1;
+}
+
+}  // namespace camcov::cli

@@ -1,0 +1,73 @@
+// `camcov merge DIR... --out DIR`: combine the results folders of shards (or of separate
+// machines) into one, then write the summary and logs as `camcov bench` would.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "cli/bench_outputs.h"
+#include "cli/command.h"
+#include "params/parameter_table.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MergeOptions {
+  std::vector<std::string> inputs;
+  std::string out;
+};
+
+int merge(const MergeOptions& o) {
+  const results::BatchFolder target(o.out);
+  std::optional<results::BatchManifest> manifest;
+  std::map<std::string, results::JobTiming> timings;
+  for (const auto& input : o.inputs) {
+    const results::BatchFolder source(input);
+    const auto m = source.readManifest();
+    if (!m) throw InputError(input + ": not a camcov bench folder (no batch.json)");
+    if (!manifest) {
+      manifest = m;
+    } else {
+      if (params::toJson(m->parameters) != params::toJson(manifest->parameters)) {
+        throw InputError(input + ": made with other parameters than " + o.inputs.front());
+      }
+      for (const auto& scene : m->scenes) {
+        const bool known = std::any_of(manifest->scenes.begin(), manifest->scenes.end(),
+                                       [&](const auto& s) { return s.name == scene.name; });
+        if (!known) manifest->scenes.push_back(scene);
+      }
+    }
+    for (const auto& [stem, t] : source.readTimings())
+      timings[stem] = t;
+    if (fs::exists(target.runsDir()) && fs::equivalent(source.runsDir(), target.runsDir()))
+      continue;
+    fs::create_directories(target.runsDir());
+    for (const auto& entry : fs::directory_iterator(source.runsDir())) {
+      if (entry.path().filename().string().find(".tmp-") != std::string::npos) continue;
+      fs::copy_file(entry.path(), target.runsDir() / entry.path().filename(),
+                    fs::copy_options::overwrite_existing);
+    }
+  }
+  manifest->command = invocation();
+  target.writeManifest(*manifest);
+  target.writeTimings(timings);
+  return writeBenchOutputs(target, *manifest, target.allJobs());
+}
+
+}  // namespace
+
+Registration addMergeCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "merge", "Combine bench folders (shards, machines) into one; write summary and logs");
+  auto o = std::make_shared<MergeOptions>();
+  cmd->add_option("folders", o->inputs, "bench --out folders to combine")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--out,-o", o->out, "the combined folder (may be one of the inputs)")->required();
+  return {cmd, [o] { return merge(*o); }};
+}
+
+}  // namespace camcov::cli

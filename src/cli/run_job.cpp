@@ -1,0 +1,45 @@
+#include "cli/run_job.h"
+
+#include <memory>
+
+#include "camcov/version.h"
+#include "control/local_controller.h"
+#include "control/paper_controller.h"
+#include "scene/read_text.h"
+#include "scene/scene_loader.h"
+#include "sim/simulator.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+
+void requireKnownMethod(const std::string& method) {
+  if (method != "paper" && method != "local") {
+    throw InputError("unknown method '" + method + "' (known: paper, local)");
+  }
+}
+
+results::RunRecord runJob(const JobSpec& job) {
+  requireKnownMethod(job.method);
+  const std::string text = scene::readText(job.sceneFile);
+  const scene::Scene scene = scene::parseScene(text, job.sceneFile.string());
+
+  results::RunRecord run;
+  run.metadata = {scene.name,
+                  job.sceneFile.string(),
+                  results::fnv1a(text),
+                  job.method,
+                  job.seed,
+                  job.parameters,
+                  kVersion};
+  std::unique_ptr<control::Controller> controller;
+  if (job.method == "paper") {
+    controller = std::make_unique<control::PaperController>(scene, job.parameters, job.seed);
+  } else {
+    controller = std::make_unique<control::LocalController>(scene, job.parameters);
+  }
+  results::RunRecorder recorder(run);
+  run.summary = sim::simulate(scene, job.parameters, *controller, recorder);
+  return run;
+}
+
+}  // namespace camcov::cli

@@ -1,0 +1,47 @@
+#pragma once
+// The controller side of the simulation loop (SPEC section 3): at each step it sees only the
+// present — the world now and the cameras' poses now — and answers with camera velocities
+// u_j = ṗ_j (paper section II). The simulator saturates and integrates them.
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "kinematics/world.h"
+
+namespace camcov::control {
+
+struct Observation {
+  double time = 0.0;  // t, s
+  const kinematics::World& world;
+  std::span<const geometry::Pose> cameras;
+};
+
+struct CameraCommand {
+  geometry::Vec2 velocity;       // [ẋ, ẏ], m/s (saturated by the simulator to v_max)
+  double angularVelocity = 0.0;  // γ̇, rad/s (saturated to γ̇_max)
+};
+
+// Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",
+// "plan-completed", ... (see docs of each controller).
+struct ControlEvent {
+  double time = 0.0;
+  std::string kind;
+  int camera = -1;                   // -1: the whole team
+  std::string detail;                // human-readable
+  std::vector<geometry::Pose> path;  // the planned path, for "plan" events
+};
+
+class Controller {
+ public:
+  virtual ~Controller() = default;
+  // Fills one command per camera.
+  virtual void control(const Observation& observation, std::span<CameraCommand> commands) = 0;
+  // The goal camera j is heading for, if it follows a plan (drawn in frames).
+  virtual std::optional<geometry::Pose> goal(std::size_t camera) const = 0;
+  // Moves the events since the last call into `out`.
+  virtual void takeEvents(std::vector<ControlEvent>& out) = 0;
+};
+
+}  // namespace camcov::control

@@ -1,0 +1,35 @@
+#include "control/local_controller.h"
+
+namespace camcov::control {
+
+CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to, double dt) {
+  return {(to.position() - from.position()) / dt, geometry::wrapAngle(to.yaw - from.yaw) / dt};
+}
+
+std::vector<planners::StepLimits> stepLimits(const scene::Scene& scene, double dt) {
+  std::vector<planners::StepLimits> limits;
+  for (const auto& c : scene.cameras)
+    limits.push_back({c.maxVelocity * dt, c.maxAngularVelocity * dt});
+  return limits;
+}
+
+std::uint64_t allCameras(std::size_t count) {
+  return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+}
+
+LocalController::LocalController(const scene::Scene& scene, const params::Parameters& params)
+    : limits_(stepLimits(scene, params.sim.dt)),
+      dt_(params.sim.dt),
+      model_(params.reward, scene.fovHalfAngle),
+      local_(params.local) {}
+
+void LocalController::control(const Observation& observation, std::span<CameraCommand> commands) {
+  model_.setWorld(observation.world);
+  team_.assign(observation.cameras.begin(), observation.cameras.end());
+  local_.improve(model_, team_, allCameras(team_.size()), limits_);
+  for (std::size_t j = 0; j < team_.size(); ++j) {
+    commands[j] = commandTowards(observation.cameras[j], team_[j], dt_);
+  }
+}
+
+}  // namespace camcov::control

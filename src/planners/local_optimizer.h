@@ -1,0 +1,39 @@
+#pragma once
+// Local optimization (paper section V-E): gradient ascent on the reward for one camera's pose,
+// with a forward-difference gradient over ε, steps α (translation) and β (rotation),
+// saturated to what the camera can do in one time step, taken only if the reward rises.
+#include <cstdint>
+#include <span>
+
+#include "geometry/vec2.h"
+#include "params/parameters.h"
+#include "reward/reward_model.h"
+
+namespace camcov::planners {
+
+struct StepLimits {
+  double maxTranslation = 0.0;  // m per step: v_max · dt
+  double maxRotation = 0.0;     // rad per step: γ̇_max · dt
+};
+
+class LocalOptimizer {
+ public:
+  explicit LocalOptimizer(const params::LocalParams& params) : params_(params) {}
+
+  // The pose camera j of `team` should move to in one step (its current pose if no step
+  // along the gradient raises reward(team)). `team` is restored before returning.
+  // `currentReward` is reward(team) as given (the caller usually has it).
+  geometry::Pose step(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
+                      double currentReward, StepLimits limits) const;
+
+  // One step for each camera j whose bit is set in `movable`, in index order, each against
+  // the team as the cameras before it left it (so moves never conflict). Updates `team`;
+  // returns its reward.
+  double improve(reward::RewardModel& model, std::span<geometry::Pose> team, std::uint64_t movable,
+                 std::span<const StepLimits> limits) const;
+
+ private:
+  params::LocalParams params_;
+};
+
+}  // namespace camcov::planners

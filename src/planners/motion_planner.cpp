@@ -1,0 +1,278 @@
+#include "planners/motion_planner.h"
+
+#include <ompl/base/MotionValidator.h>
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/ValidStateSampler.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/datastructures/NearestNeighborsLinear.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/util/Console.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "planners/state_validity.h"
+#include "planners/visibility_sampler.h"
+#include "reward/reward_model.h"
+
+namespace camcov::planners {
+namespace {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+// eq. (10) divides by a single camera's reward; a pose that sees nothing (or is repelled)
+// would divide by zero or flip the sign, so the reward is floored here: such poses cost
+// 1/kMinReward per metre, hundreds of times more than a pose that sees a target well.
+constexpr double kMinReward = 1e-3;
+// Sample attempts allowed per milestone before the budget gives up (a world with almost no
+// valid space must not loop forever).
+constexpr std::size_t kSampleAttemptsPerMilestone = 50;
+
+geometry::Pose toPose(const ob::State* s) {
+  const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+  return {se2->getX(), se2->getY(), se2->getYaw()};
+}
+
+void fromPose(const geometry::Pose& p, ob::State* s) {
+  auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+  se2->setXY(p.x, p.y);
+  // OMPL's SO(2) is [-π, π): π itself (a camera at 180°) must become -π.
+  const double yaw = geometry::wrapAngle(p.yaw);
+  se2->setYaw(yaw >= std::numbers::pi ? yaw - 2.0 * std::numbers::pi : yaw);
+}
+
+// Everything the planner's callbacks share: the world at the planning instant.
+struct PlanningWorld {
+  PlanningWorld(const kinematics::World& w, const params::Parameters& params, double halfFov,
+                std::uint64_t seed)
+      : world(w),
+        validity(params.planner.d1),
+        reward(params.reward, halfFov),
+        random(seed),
+        uniformProbability(params.planner.p),
+        halfFov(halfFov),
+        box(geometry::boundingBox(world.boundary)) {
+    validity.setWorld(world);
+    reward.setWorld(world);
+    objects = world.targets;
+    objects.insert(objects.end(), world.obstacles.begin(), world.obstacles.end());
+  }
+
+  kinematics::World world;
+  StateValidity validity;
+  reward::RewardModel reward;
+  Random random;
+  double uniformProbability;
+  double halfFov;
+  geometry::Box box;
+  std::vector<geometry::Ring> objects;
+  VisibilitySampler sampler;
+  std::size_t samplesDrawn = 0;
+};
+
+// The sampler of section V-C: uniform with probability p, otherwise a pose that sees a point
+// of some object's boundary.
+class CoverageSampler final : public ob::ValidStateSampler {
+ public:
+  CoverageSampler(const ob::SpaceInformation* si, PlanningWorld& w) : ValidStateSampler(si), w_(w) {
+    name_ = "coverage visibility sampler";
+  }
+
+  bool sample(ob::State* state) override {
+    ++w_.samplesDrawn;
+    std::optional<geometry::Pose> pose;
+    if (w_.random.uniform() < w_.uniformProbability) {
+      const geometry::Vec2 p{w_.random.uniform(w_.box.min.x, w_.box.max.x),
+                             w_.random.uniform(w_.box.min.y, w_.box.max.y)};
+      if (w_.validity.isValid(p)) {
+        pose = geometry::Pose{p.x, p.y, w_.random.uniform(-std::numbers::pi, std::numbers::pi)};
+      }
+    } else if (const auto q1 = samplePointOnRings(w_.objects, w_.random)) {
+      if (w_.sampler.focus(w_.reward, *q1))
+        pose = w_.sampler.sample(w_.random, w_.validity, w_.halfFov);
+    }
+    if (!pose) return false;
+    fromPose(*pose, state);
+    return true;
+  }
+
+  bool sampleNear(ob::State* state, const ob::State*, double) override { return sample(state); }
+
+ private:
+  PlanningWorld& w_;
+};
+
+// Motions checked exactly against the objects (StateValidity::isValidMotion) instead of
+// OMPL's sampling at a resolution: faster, and no thin object slips between two samples.
+class ExactMotionValidator final : public ob::MotionValidator {
+ public:
+  ExactMotionValidator(ob::SpaceInformation* si, const StateValidity& validity)
+      : MotionValidator(si), validity_(validity) {}
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    const bool ok = validity_.isValidMotion(toPose(s1).position(), toPose(s2).position());
+    ok ? ++valid_ : ++invalid_;
+    return ok;
+  }
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2,
+                   std::pair<ob::State*, double>& lastValid) const override {
+    const bool ok = checkMotion(s1, s2);
+    if (!ok) {
+      if (lastValid.first != nullptr) si_->copyState(lastValid.first, s1);
+      lastValid.second = 0.0;
+    }
+    return ok;
+  }
+
+ private:
+  const StateValidity& validity_;
+};
+
+// eq. (10): cost(p1, p2) = ½(1/reward({p1}) + 1/reward({p2})) · (‖Δxy‖ + ½|Δγ|), after OMPL's
+// StateCostIntegralObjective. A state's cost is computed once per distinct pose: the cache
+// is keyed by the pose itself, not the State pointer, since OMPL also passes short-lived copies.
+class CoverageCostObjective final : public ob::OptimizationObjective {
+ public:
+  CoverageCostObjective(const ob::SpaceInformationPtr& si, PlanningWorld& w)
+      : OptimizationObjective(si), w_(w) {
+    description_ = "camcov eq. (10): mean inverse single-camera reward times SE(2) distance";
+  }
+
+  ob::Cost stateCost(const ob::State* s) const override {
+    const geometry::Pose p = toPose(s);
+    const auto [it, fresh] = cache_.try_emplace(PoseKey{p.x, p.y, p.yaw}, 0.0);
+    if (fresh) it->second = 1.0 / std::max(w_.reward.reward(std::span(&p, 1)), kMinReward);
+    return ob::Cost(it->second);
+  }
+
+  ob::Cost motionCost(const ob::State* a, const ob::State* b) const override {
+    return ob::Cost(0.5 * (stateCost(a).value() + stateCost(b).value()) * si_->distance(a, b));
+  }
+
+ private:
+  struct PoseKey {
+    double x, y, yaw;
+    bool operator==(const PoseKey&) const = default;
+  };
+  struct PoseHash {
+    std::size_t operator()(const PoseKey& k) const {
+      const std::hash<double> h;
+      return h(k.x) ^ (h(k.y) * 0x9e3779b97f4a7c15ull) ^ (h(k.yaw) * 0xc2b2ae3d27d4eb4full);
+    }
+  };
+
+  PlanningWorld& w_;
+  mutable std::unordered_map<PoseKey, double, PoseHash> cache_;
+};
+
+// PRM* whose roadmap is grown once and then queried by every camera: start and goal join the
+// roadmap as milestones (PRM's own connection step), and PRM's A* extracts the path. PRM's
+// solve() is not used: it grows the roadmap in a second thread until a solution appears,
+// which would make the roadmap depend on timing.
+class SharedRoadmap final : public og::PRMstar {
+ public:
+  using PRMstar::PRMstar;
+
+  // Exhaustive neighbour search: no random pivots (GNAT's), and 10³ milestones are cheap.
+  void useExhaustiveNeighbours() {
+    setNearestNeighbors<ompl::NearestNeighborsLinear>();
+    nn_->setDistanceFunction(
+        [this](const Vertex a, const Vertex b) { return distanceFunction(a, b); });
+  }
+
+  ob::PathPtr connect(const ob::State* start, const ob::State* goal) {
+    const Vertex s = addMilestone(si_->cloneState(start));
+    const Vertex g = addMilestone(si_->cloneState(goal));
+    if (!sameComponent(s, g)) return nullptr;
+    return constructSolution(s, g);
+  }
+};
+
+}  // namespace
+
+struct Roadmap::Impl {
+  Impl(const kinematics::World& world, const params::Parameters& params, double halfFov,
+       std::uint64_t seed)
+      : w(world, params, halfFov, seed), space(std::make_shared<ob::SE2StateSpace>()) {
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0, w.box.min.x);
+    bounds.setLow(1, w.box.min.y);
+    bounds.setHigh(0, w.box.max.x);
+    bounds.setHigh(1, w.box.max.y);
+    space->setBounds(bounds);
+    si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([this](const ob::State* s) {
+      const auto p = toPose(s);
+      return w.validity.isValid(p.position());
+    });
+    si->setMotionValidator(std::make_shared<ExactMotionValidator>(si.get(), w.validity));
+    si->setValidStateSamplerAllocator(
+        [this](const ob::SpaceInformation* s) { return std::make_shared<CoverageSampler>(s, w); });
+    si->setup();
+    objective = std::make_shared<CoverageCostObjective>(si, w);
+    auto problem = std::make_shared<ob::ProblemDefinition>(si);
+    problem->setOptimizationObjective(objective);
+    planner = std::make_shared<SharedRoadmap>(si);
+    planner->useExhaustiveNeighbours();
+    planner->setProblemDefinition(problem);
+    planner->setup();
+
+    const auto budget =
+        static_cast<std::size_t>(std::ceil(params.planner.T2 * params.planner.milestonesPerSecond));
+    planner->growRoadmap(ob::PlannerTerminationCondition([this, budget] {
+      return planner->milestoneCount() >= budget ||
+             w.samplesDrawn >= budget * kSampleAttemptsPerMilestone;
+    }));
+  }
+
+  PlanningWorld w;
+  std::shared_ptr<ob::SE2StateSpace> space;
+  ob::SpaceInformationPtr si;
+  std::shared_ptr<CoverageCostObjective> objective;
+  std::shared_ptr<SharedRoadmap> planner;
+};
+
+Roadmap::Roadmap(const kinematics::World& world, const params::Parameters& params, double halfFov,
+                 std::uint64_t seed)
+    : impl_(std::make_unique<Impl>(world, params, halfFov, seed)) {}
+
+Roadmap::~Roadmap() = default;
+
+std::optional<std::vector<geometry::Pose>> Roadmap::query(const geometry::Pose& start,
+                                                          const geometry::Pose& goal) {
+  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
+  fromPose(start, s.get());
+  fromPose(goal, g.get());
+  const ob::PathPtr path = impl_->planner->connect(s.get(), g.get());
+  if (!path) return std::nullopt;
+  std::vector<geometry::Pose> poses;
+  for (const ob::State* state : path->as<og::PathGeometric>()->getStates()) {
+    poses.push_back(toPose(state));
+  }
+  return poses;
+}
+
+std::size_t Roadmap::milestones() const {
+  return impl_->planner->milestoneCount();
+}
+
+bool Roadmap::motionValid(const geometry::Pose& a, const geometry::Pose& b) const {
+  return impl_->w.validity.isValidMotion(a.position(), b.position());
+}
+
+double Roadmap::cost(const geometry::Pose& a, const geometry::Pose& b) const {
+  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
+  fromPose(a, s.get());
+  fromPose(b, g.get());
+  return impl_->objective->motionCost(s.get(), g.get()).value();
+}
+
+}  // namespace camcov::planners

@@ -1,0 +1,72 @@
+#include "planners/state_validity.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace camcov::planners {
+
+namespace {
+
+// Distance from p to a box (0 inside): never more than the distance to what the box holds.
+double boxDistance(const geometry::Box& box, geometry::Vec2 p) {
+  const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
+  const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
+  return geometry::norm({dx, dy});
+}
+
+}  // namespace
+
+void StateValidity::setWorld(const kinematics::World& world) {
+  world_ = &world;
+  objects_.clear();
+  boxes_.clear();
+  for (const auto* group : {&world.targets, &world.obstacles}) {
+    for (const auto& object : *group) {
+      objects_.push_back(&object);
+      boxes_.push_back(geometry::boundingBox(object));
+    }
+  }
+}
+
+double StateValidity::clearance(geometry::Vec2 p) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (boxDistance(boxes_[i], p) >= best) continue;
+    best = std::min(best, geometry::distanceToPolygon(*objects_[i], p));
+  }
+  return best;
+}
+
+bool StateValidity::insideBoundary(geometry::Vec2 p) const {
+  return geometry::locate(world_->boundary, p, 0.0) == geometry::Containment::Inside;
+}
+
+bool StateValidity::isValidMotion(geometry::Vec2 a, geometry::Vec2 b) const {
+  if (!insideBoundary(a) || !insideBoundary(b)) return false;
+  const std::size_t n = world_->boundary.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (geometry::segmentsIntersect(a, b, world_->boundary[i], world_->boundary[(i + 1) % n])) {
+      return false;
+    }
+  }
+  // A segment inside an object reaches its boundary or has an end inside; either way the
+  // distances below are 0, and only a segment that stays outside can pass.
+  const geometry::Box span{{std::min(a.x, b.x), std::min(a.y, b.y)},
+                           {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    const geometry::Box& box = boxes_[i];
+    const double gap = std::max({box.min.x - span.max.x, span.min.x - box.max.x,
+                                 box.min.y - span.max.y, span.min.y - box.max.y});
+    if (gap >= d1_) continue;
+    const geometry::Ring& object = *objects_[i];
+    const double da = geometry::distanceToPolygon(object, a);
+    const double db = geometry::distanceToPolygon(object, b);
+    if (da < d1_ && db < d1_) return false;  // no motion between two states too close
+    const double required = std::min({d1_, da, db});
+    if (required <= 0.0 || geometry::distanceSegmentToBoundary(object, a, b) < required)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace camcov::planners

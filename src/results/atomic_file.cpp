@@ -1,0 +1,57 @@
+#include "results/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "util/input_error.h"
+
+namespace camcov::results {
+
+namespace {
+
+std::string systemError(const std::string& what, const std::filesystem::path& file) {
+  return what + " " + file.string() + ": " + std::strerror(errno);
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
+  std::error_code ec;
+  if (file.has_parent_path()) {
+    std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec)
+      throw InputError("cannot create folder " + file.parent_path().string() + ": " + ec.message());
+  }
+  const std::filesystem::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(systemError("cannot create", temporary));
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string message = systemError("cannot write", temporary);
+      ::close(fd);
+      ::unlink(temporary.c_str());
+      throw std::runtime_error(message);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const std::string message = systemError("cannot flush", temporary);
+    ::unlink(temporary.c_str());
+    throw std::runtime_error(message);
+  }
+  if (::rename(temporary.c_str(), file.c_str()) != 0) {
+    const std::string message = systemError("cannot rename into", file);
+    ::unlink(temporary.c_str());
+    throw std::runtime_error(message);
+  }
+}
+
+}  // namespace camcov::results

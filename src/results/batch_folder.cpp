@@ -1,0 +1,167 @@
+#include "results/batch_folder.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "params/parameter_table.h"
+#include "results/atomic_file.h"
+#include "results/run_files.h"
+#include "util/input_error.h"
+
+namespace camcov::results {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<nlohmann::json> readJson(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string() + ": invalid JSON: " + e.what());
+  }
+}
+
+void writeJson(const fs::path& file, const nlohmann::json& j) {
+  writeFileAtomically(file, j.dump(1) + "\n");
+}
+
+}  // namespace
+
+nlohmann::json manifestToJson(const BatchManifest& m) {
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const auto& s : m.scenes) {
+    scenes.push_back(
+        {{"name", s.name}, {"file", s.file}, {"hash", fmt::format("{:016x}", s.hash)}});
+  }
+  return {{"format", "camcov-batch/1"},
+          {"toolVersion", m.toolVersion},
+          {"parameters", params::toJson(m.parameters)},
+          {"methods", m.methods},
+          {"seeds", m.seeds},
+          {"scenes", scenes},
+          {"command", m.command}};
+}
+
+BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& source) {
+  try {
+    if (j.at("format") != "camcov-batch/1")
+      throw InputError(source + ": not a camcov batch manifest");
+    BatchManifest m;
+    m.toolVersion = j.at("toolVersion").get<std::string>();
+    m.parameters = params::fromJson(j.at("parameters"), source);
+    m.methods = j.at("methods").get<std::vector<std::string>>();
+    m.seeds = j.at("seeds").get<std::uint64_t>();
+    for (const auto& s : j.at("scenes")) {
+      m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),
+                          std::stoull(s.at("hash").get<std::string>(), nullptr, 16)});
+    }
+    m.command = j.at("command").get<std::vector<std::string>>();
+    return m;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source + ": malformed batch manifest: " + e.what());
+  }
+}
+
+std::optional<BatchManifest> BatchFolder::readManifest() const {
+  const fs::path file = root_ / "batch.json";
+  const auto j = readJson(file);
+  if (!j) return std::nullopt;
+  return manifestFromJson(*j, file.string());
+}
+
+void BatchFolder::writeManifest(const BatchManifest& manifest) const {
+  writeJson(root_ / "batch.json", manifestToJson(manifest));
+}
+
+void BatchFolder::removeStaleTemporaries() const {
+  for (const fs::path& dir : {root_, runsDir(), root_ / "ompl"}) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      if (entry.path().filename().string().find(".tmp-") != std::string::npos) {
+        fs::remove(entry.path(), ec);
+      }
+    }
+  }
+}
+
+std::optional<JobOutcome> BatchFolder::finishedJob(const std::string& stem,
+                                                   const params::Parameters& parameters,
+                                                   std::uint64_t sceneHash) const {
+  const fs::path file = runFile(stem);
+  if (!fs::exists(file)) return std::nullopt;
+  RunRecord run;
+  try {
+    run = loadRunFile(file);
+  } catch (const InputError&) {
+    return std::nullopt;  // unreadable: run it again, the new file replaces it atomically
+  }
+  if (run.metadata.sceneHash != sceneHash ||
+      params::toJson(run.metadata.parameters) != params::toJson(parameters)) {
+    return std::nullopt;
+  }
+  return JobOutcome{run.metadata.scene, run.metadata.method, run.metadata.seed, false, "",
+                    run.summary};
+}
+
+void BatchFolder::writeFailure(const std::string& stem, const JobOutcome& o) const {
+  writeJson(errorFile(stem), {{"format", "camcov-failure/1"},
+                              {"scene", o.scene},
+                              {"method", o.method},
+                              {"seed", o.seed},
+                              {"error", o.error}});
+}
+
+void BatchFolder::removeFailure(const std::string& stem) const {
+  std::error_code ec;
+  fs::remove(errorFile(stem), ec);
+}
+
+std::vector<JobOutcome> BatchFolder::allJobs() const {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(runsDir(), ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<JobOutcome> jobs;
+  for (const auto& file : files) {
+    if (file.stem().extension() == ".error") {
+      const nlohmann::json j = *readJson(file);
+      jobs.push_back({j.at("scene"), j.at("method"), j.at("seed"), true, j.at("error"), {}});
+      continue;
+    }
+    const RunRecord run = loadRunFile(file);
+    jobs.push_back(
+        {run.metadata.scene, run.metadata.method, run.metadata.seed, false, "", run.summary});
+  }
+  return jobs;
+}
+
+std::map<std::string, JobTiming> BatchFolder::readTimings() const {
+  std::map<std::string, JobTiming> timings;
+  const auto j = readJson(root_ / "timings.json");
+  if (!j) return timings;
+  for (const auto& [stem, t] : j->items()) {
+    timings[stem] = {t.at("wallSeconds").get<double>(), t.at("cpuSeconds").get<double>()};
+  }
+  return timings;
+}
+
+void BatchFolder::writeTimings(const std::map<std::string, JobTiming>& timings) const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [stem, t] : timings) {
+    j[stem] = {{"wallSeconds", t.wallSeconds}, {"cpuSeconds", t.cpuSeconds}};
+  }
+  writeJson(root_ / "timings.json", j);
+}
+
+void BatchFolder::writeSummary(const BatchSummary& summary) const {
+  writeJson(root_ / "summary.json", summaryToJson(summary));
+  writeFileAtomically(root_ / "summary.csv", summaryToCsv(summary));
+}
+
+}  // namespace camcov::results

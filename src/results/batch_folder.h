@@ -1,0 +1,82 @@
+#pragma once
+// The layout of a batch's --out folder (SPEC section 7), read and written only here:
+//   batch.json           what was asked: parameters, methods, seeds, scenes (name, file, hash)
+//   runs/<stem>.json     one finished job, as `camcov run` writes it (+ <stem>.csv)
+//   runs/<stem>.error.json   one failed job: its error
+//   timings.json         wall and CPU seconds per job (machine-dependent, kept apart)
+//   summary.json/.csv    the summary; ompl/<scene>.log; report.html
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "params/parameters.h"
+#include "results/batch_summary.h"
+#include "results/run_record.h"
+
+namespace camcov::results {
+
+struct SceneEntry {
+  std::string name;
+  std::string file;
+  std::uint64_t hash = 0;
+};
+
+struct BatchManifest {
+  std::string toolVersion;
+  params::Parameters parameters;
+  std::vector<std::string> methods;
+  std::uint64_t seeds = 0;  // seeds 1..seeds
+  std::vector<SceneEntry> scenes;
+  std::vector<std::string> command;  // argv, for the report's header
+};
+
+struct JobTiming {
+  double wallSeconds = 0.0;
+  double cpuSeconds = 0.0;
+};
+
+class BatchFolder {
+ public:
+  explicit BatchFolder(std::filesystem::path root) : root_(std::move(root)) {}
+  const std::filesystem::path& root() const { return root_; }
+  std::filesystem::path runsDir() const { return root_ / "runs"; }
+  std::filesystem::path runFile(const std::string& stem) const {
+    return runsDir() / (stem + ".json");
+  }
+  std::filesystem::path errorFile(const std::string& stem) const {
+    return runsDir() / (stem + ".error.json");
+  }
+
+  std::optional<BatchManifest> readManifest() const;
+  void writeManifest(const BatchManifest& manifest) const;
+
+  // Deletes "*.tmp-*" files a killed batch may have left.
+  void removeStaleTemporaries() const;
+  // The finished job's summary if runs/<stem>.json exists and was made with these parameters
+  // from a scene with this hash; nullopt means the job must run (again).
+  std::optional<JobOutcome> finishedJob(const std::string& stem,
+                                        const params::Parameters& parameters,
+                                        std::uint64_t sceneHash) const;
+  void writeFailure(const std::string& stem, const JobOutcome& outcome) const;
+  void removeFailure(const std::string& stem) const;
+  // Every run and failure found in runs/ (for merging).
+  std::vector<JobOutcome> allJobs() const;
+
+  std::map<std::string, JobTiming> readTimings() const;
+  void writeTimings(const std::map<std::string, JobTiming>& timings) const;
+
+  void writeSummary(const BatchSummary& summary) const;
+
+ private:
+  std::filesystem::path root_;
+};
+
+nlohmann::json manifestToJson(const BatchManifest& m);
+BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& source);
+
+}  // namespace camcov::results

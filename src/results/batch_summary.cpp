@@ -1,0 +1,157 @@
+#include "results/batch_summary.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace camcov::results {
+
+namespace {
+
+nlohmann::json describeJson(const Description& d) {
+  return {{"count", d.count}, {"mean", d.mean},     {"sd", d.sd}, {"min", d.min},
+          {"q1", d.q1},       {"median", d.median}, {"q3", d.q3}, {"max", d.max}};
+}
+
+nlohmann::json finiteOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+}  // namespace
+
+BatchSummary summarize(std::vector<JobOutcome> outcomes) {
+  std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
+    return std::tie(a.scene, a.method, a.seed) < std::tie(b.scene, b.method, b.seed);
+  });
+  BatchSummary summary;
+  std::map<std::pair<std::string, std::string>, std::vector<const JobOutcome*>> groups;
+  for (const auto& o : outcomes) {
+    if (o.failed) summary.failures.push_back(o);
+    groups[{o.scene, o.method}].push_back(&o);
+  }
+  std::map<std::string, std::map<std::string, std::vector<double>>> coverageByScene;
+  for (const auto& [key, jobs] : groups) {
+    MethodSummary m;
+    m.scene = key.first;
+    m.method = key.second;
+    m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
+    std::vector<double> coverage, utilization;
+    std::vector<std::pair<double, std::uint64_t>> bySeed;
+    for (const JobOutcome* job : jobs) {
+      if (job->failed) {
+        ++m.failed;
+        continue;
+      }
+      const sim::RunSummary& s = job->summary;
+      ++m.runs;
+      coverage.push_back(s.averageCoverage);
+      utilization.push_back(s.averageUtilization);
+      bySeed.push_back({s.averageCoverage, job->seed});
+      m.meanObjectCollisionTime += s.objectCollisionTime;
+      m.meanCameraCollisionTime += s.cameraCollisionTime;
+      if (s.objectCollisionTime > 0.0 || s.cameraCollisionTime > 0.0) ++m.runsWithCollision;
+      m.minObjectDistance = std::min(m.minObjectDistance, s.minObjectDistance);
+      m.minCameraDistance = std::min(m.minCameraDistance, s.minCameraDistance);
+    }
+    if (m.runs > 0) {
+      m.meanObjectCollisionTime /= m.runs;
+      m.meanCameraCollisionTime /= m.runs;
+      std::sort(bySeed.begin(), bySeed.end());
+      m.medianSeed = bySeed[(bySeed.size() - 1) / 2].second;
+    }
+    m.coverage = describe(coverage);
+    m.utilization = describe(utilization);
+    coverageByScene[m.scene][m.method] = coverage;
+    summary.methods.push_back(std::move(m));
+  }
+  for (const auto& [scene, byMethod] : coverageByScene) {
+    SceneComparison c;
+    c.scene = scene;
+    const auto paper = byMethod.find("paper"), local = byMethod.find("local");
+    if (paper != byMethod.end() && local != byMethod.end() && !paper->second.empty() &&
+        !local->second.empty()) {
+      const MannWhitney test = mannWhitneyU(paper->second, local->second);
+      c.pValue = test.pValue;
+      c.exact = test.exact;
+      c.meanDifference = describe(paper->second).mean - describe(local->second).mean;
+      if (c.pValue >= kSignificance || c.meanDifference == 0.0) {
+        c.winner = "tie";
+        ++summary.ties;
+      } else if (c.meanDifference > 0.0) {
+        c.winner = "paper";
+        ++summary.paperWins;
+      } else {
+        c.winner = "local";
+        ++summary.localWins;
+      }
+    }
+    summary.scenes.push_back(std::move(c));
+  }
+  return summary;
+}
+
+nlohmann::json summaryToJson(const BatchSummary& summary) {
+  nlohmann::json j;
+  j["format"] = "camcov-summary/1";
+  j["significance"] = kSignificance;
+  j["methods"] = nlohmann::json::array();
+  for (const auto& m : summary.methods) {
+    j["methods"].push_back({{"scene", m.scene},
+                            {"method", m.method},
+                            {"runs", m.runs},
+                            {"failed", m.failed},
+                            {"averageCoverage", describeJson(m.coverage)},
+                            {"averageUtilization", describeJson(m.utilization)},
+                            {"meanObjectCollisionTime", m.meanObjectCollisionTime},
+                            {"meanCameraCollisionTime", m.meanCameraCollisionTime},
+                            {"runsWithCollision", m.runsWithCollision},
+                            {"minObjectDistance", finiteOrNull(m.minObjectDistance)},
+                            {"minCameraDistance", finiteOrNull(m.minCameraDistance)},
+                            {"medianSeed", m.medianSeed}});
+  }
+  j["scenes"] = nlohmann::json::array();
+  for (const auto& c : summary.scenes) {
+    j["scenes"].push_back({{"scene", c.scene},
+                           {"winner", c.winner},
+                           {"pValue", c.pValue},
+                           {"exactTest", c.exact},
+                           {"meanCoverageDifference", c.meanDifference}});
+  }
+  j["totals"] = {
+      {"paperWins", summary.paperWins}, {"ties", summary.ties}, {"localWins", summary.localWins}};
+  j["failures"] = nlohmann::json::array();
+  for (const auto& f : summary.failures) {
+    j["failures"].push_back(
+        {{"scene", f.scene}, {"method", f.method}, {"seed", f.seed}, {"error", f.error}});
+  }
+  return j;
+}
+
+std::string summaryToCsv(const BatchSummary& summary) {
+  std::map<std::string, const SceneComparison*> comparison;
+  for (const auto& c : summary.scenes)
+    comparison[c.scene] = &c;
+  std::string csv =
+      "scene,method,runs,failed,coverage_mean,coverage_sd,coverage_min,coverage_q1,coverage_median,"
+      "coverage_q3,coverage_max,utilization_mean,utilization_sd,utilization_min,utilization_q1,"
+      "utilization_median,utilization_q3,utilization_max,mean_object_collision_time,"
+      "mean_camera_collision_time,runs_with_collision,min_object_distance,min_camera_distance,"
+      "median_seed,winner,p_value\n";
+  for (const auto& m : summary.methods) {
+    const SceneComparison& c = *comparison.at(m.scene);
+    const auto& cv = m.coverage;
+    const auto& ut = m.utilization;
+    csv += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", m.scene,
+        m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3, cv.max,
+        ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
+        m.meanCameraCollisionTime, m.runsWithCollision, m.minObjectDistance, m.minCameraDistance,
+        m.medianSeed, c.winner, c.pValue);
+  }
+  return csv;
+}
+
+}  // namespace camcov::results

@@ -1,0 +1,131 @@
+#include "results/ompl_benchmark_log.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <map>
+
+#include "params/parameter_table.h"
+#include "results/atomic_file.h"
+#include "results/run_files.h"
+
+namespace camcov::results {
+
+namespace fs = std::filesystem;
+
+std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunRecord>& runs,
+                             const std::map<std::string, JobTiming>& timings,
+                             const params::Parameters& parameters) {
+  std::map<std::string, std::vector<const RunRecord*>> byMethod;
+  for (const auto& run : runs)
+    byMethod[run.metadata.method].push_back(&run);
+  double totalTime = 0.0;
+  std::size_t runsPerMethod = 0;
+  for (const auto& [method, list] : byMethod) {
+    runsPerMethod = std::max(runsPerMethod, list.size());
+    for (const RunRecord* run : list) {
+      if (const auto t = timings.find(runStem(run->metadata)); t != timings.end()) {
+        totalTime += t->second.wallSeconds;
+      }
+    }
+  }
+  char host[256] = "unknown";
+  ::gethostname(host, sizeof(host) - 1);
+
+  std::string log;
+  auto line = [&log](const std::string& text) { log += text + "\n"; };
+  line("camcov version " + (runs.empty() ? std::string("?") : runs.front().metadata.toolVersion));
+  line("Experiment " + scene);
+  line("0 experiment properties");
+  line(std::string("Running on ") + host);
+  line("Starting at 1970-01-01 00:00:00");  // the runs' own clock is simulated; no wall date
+  line("<<<|");
+  line("camcov coverage simulation of scene " + scene + "; parameters:");
+  line(params::toJson(parameters).dump());
+  line("|>>>");
+  line("<<<|");
+  line("|>>>");
+  line("0 is the random seed");  // each run has its own seed; see the runs' properties
+  line(fmt::format("{} seconds per run", parameters.sim.duration));
+  line("0 MB per run");
+  line(fmt::format("{} runs per planner", runsPerMethod));
+  line(fmt::format("{} seconds spent to collect the data", totalTime));
+  line("0 enum types");
+  line(fmt::format("{} planners", byMethod.size()));
+  for (const auto& [method, list] : byMethod) {
+    line(method);
+    line("0 common properties");
+    const std::vector<std::string> properties{"seed INTEGER",
+                                              "time REAL",
+                                              "average_coverage REAL",
+                                              "average_utilization REAL",
+                                              "average_reward REAL",
+                                              "object_collision_time REAL",
+                                              "camera_collision_time REAL",
+                                              "min_object_distance REAL",
+                                              "min_camera_distance REAL"};
+    line(fmt::format("{} properties for each run", properties.size()));
+    for (const auto& p : properties)
+      line(p);
+    line(fmt::format("{} runs", list.size()));
+    for (const RunRecord* run : list) {
+      const auto& s = run->summary;
+      const auto t = timings.find(runStem(run->metadata));
+      const double wall = t == timings.end() ? 0.0 : t->second.wallSeconds;
+      // Every value ends with "; ", the format's separator.
+      line(fmt::format("{}; {}; {}; {}; {}; {}; {}; {}; {}; ", run->metadata.seed, wall,
+                       s.averageCoverage, s.averageUtilization, s.averageReward,
+                       s.objectCollisionTime, s.cameraCollisionTime, s.minObjectDistance,
+                       s.minCameraDistance));
+    }
+    line("3 progress properties for each run");
+    line("time REAL");
+    line("coverage REAL");
+    line("utilization REAL");
+    line(fmt::format("{} runs", list.size()));
+    for (const RunRecord* run : list) {
+      std::string series;
+      for (const auto& step : run->steps) {
+        series += fmt::format("{},{},{},;", step.time, step.terms.coverage, step.terms.utilization);
+      }
+      line(series);
+    }
+    line(".");
+  }
+  return log;
+}
+
+std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
+                                             const params::Parameters& parameters) {
+  // Stems are "<scene>-<method>-seed<N>" (runStem); methods and seeds have no dashes, so
+  // the scene is everything before the last two. One scene in memory at a time.
+  std::map<std::string, std::vector<fs::path>> byScene;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder.runsDir(), ec)) {
+    const fs::path& p = entry.path();
+    if (p.extension() != ".json" || p.stem().extension() == ".error") continue;
+    const std::string stem = p.stem().string();
+    const auto seedDash = stem.rfind('-');
+    const auto methodDash =
+        seedDash == std::string::npos ? seedDash : stem.rfind('-', seedDash - 1);
+    if (methodDash != std::string::npos) byScene[stem.substr(0, methodDash)].push_back(p);
+  }
+  const auto timings = folder.readTimings();
+  std::vector<fs::path> written;
+  for (auto& [scene, files] : byScene) {
+    std::sort(files.begin(), files.end());
+    std::vector<RunRecord> runs;
+    for (const auto& file : files)
+      runs.push_back(loadRunFile(file));
+    std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) {
+      return std::tie(a.metadata.method, a.metadata.seed) <
+             std::tie(b.metadata.method, b.metadata.seed);
+    });
+    const fs::path file = folder.root() / "ompl" / (scene + ".log");
+    writeFileAtomically(file, omplBenchmarkLog(scene, runs, timings, parameters));
+    written.push_back(file);
+  }
+  return written;
+}
+
+}  // namespace camcov::results

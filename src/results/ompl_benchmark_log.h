@@ -1,0 +1,24 @@
+#pragma once
+// The batch's results in OMPL's benchmark log format (ompl::tools::Benchmark), so OMPL's own
+// tools read them: `ompl_benchmark_statistics ompl/*.log -d benchmark.db` builds the database
+// that Planner Arena shows. One experiment per scene; the methods are its "planners"; per run
+// the average coverage and utilization, collision times, minimum distances and run time; the
+// coverage over simulated time as progress properties.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "results/batch_folder.h"
+
+namespace camcov::results {
+
+// The log text of one scene's runs (all methods, all seeds).
+std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunRecord>& runs,
+                             const std::map<std::string, JobTiming>& timings,
+                             const params::Parameters& parameters);
+
+// Writes <out>/ompl/<scene>.log for every scene with runs in the folder; returns the files.
+std::vector<std::filesystem::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
+                                                          const params::Parameters& parameters);
+
+}  // namespace camcov::results

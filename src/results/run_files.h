@@ -1,0 +1,29 @@
+#pragma once
+// A run's results files: JSON (metadata with every parameter, summary, time series, events)
+// and CSV (the time series, one row per step). Same run, same bytes: no clocks, no
+// machine-dependent fields; numbers in shortest round-trip form.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "results/run_record.h"
+
+namespace camcov::results {
+
+inline constexpr const char* kRunFormat = "camcov-run/1";
+
+nlohmann::json runToJson(const RunRecord& run);
+// The inverse of runToJson (null distances read back as infinity). Throws InputError naming
+// `source` if the document is not a camcov run.
+RunRecord runFromJson(const nlohmann::json& j, const std::string& source);
+RunRecord loadRunFile(const std::filesystem::path& file);
+std::string runToCsv(const RunRecord& run);
+
+// "<scene>-<method>-seed<N>": the stem of a run's files.
+std::string runStem(const RunMetadata& metadata);
+
+// Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically; returns the JSON path.
+std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder);
+
+}  // namespace camcov::results

@@ -1,0 +1,26 @@
+#include "results/run_record.h"
+
+namespace camcov::results {
+
+void RunRecorder::step(const sim::StepRecord& step) {
+  StepRow row;
+  row.time = step.time;
+  row.terms = step.terms;
+  row.minObjectDistance = step.minObjectDistance;
+  row.minCameraDistance = step.minCameraDistance;
+  row.cameras.assign(step.cameras.begin(), step.cameras.end());
+  row.goals.assign(step.goals.begin(), step.goals.end());
+  record_.steps.push_back(std::move(row));
+  record_.events.insert(record_.events.end(), step.events.begin(), step.events.end());
+}
+
+std::uint64_t fnv1a(std::string_view bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (const unsigned char c : bytes) {
+    hash ^= c;
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
+}  // namespace camcov::results

@@ -1,0 +1,53 @@
+#pragma once
+// One run in memory: what it was (metadata) and what happened (every step, every event).
+// The recorder side fills it from the simulator; writers and readers turn it into files.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/controller.h"
+#include "params/parameters.h"
+#include "sim/simulator.h"
+
+namespace camcov::results {
+
+struct RunMetadata {
+  std::string scene;            // scene name (file stem)
+  std::string sceneFile;        // as given on the command line
+  std::uint64_t sceneHash = 0;  // FNV-1a of the scene file's bytes: a changed file is a new job
+  std::string method;           // "paper" or "local"
+  std::uint64_t seed = 0;
+  params::Parameters parameters;
+  std::string toolVersion;
+};
+
+struct StepRow {
+  double time = 0.0;
+  reward::RewardTerms terms;
+  double minObjectDistance = 0.0;
+  double minCameraDistance = 0.0;
+  std::vector<geometry::Pose> cameras;
+  std::vector<std::optional<geometry::Pose>> goals;
+};
+
+struct RunRecord {
+  RunMetadata metadata;
+  sim::RunSummary summary;
+  std::vector<StepRow> steps;
+  std::vector<control::ControlEvent> events;
+};
+
+// Collects the simulator's steps into a RunRecord.
+class RunRecorder final : public sim::Recorder {
+ public:
+  explicit RunRecorder(RunRecord& record) : record_(record) {}
+  void step(const sim::StepRecord& step) override;
+
+ private:
+  RunRecord& record_;
+};
+
+std::uint64_t fnv1a(std::string_view bytes);
+
+}  // namespace camcov::results

@@ -1,0 +1,53 @@
+#include "scene/camera_poses_file.h"
+
+#include <fmt/format.h>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "scene/read_text.h"
+#include "scene/scene_error.h"
+#include "scene/scene_validation.h"
+
+namespace camcov::scene {
+
+std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const std::string& source) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(jsonText);
+  } catch (const nlohmann::json::exception& e) {
+    throw SceneError(source, "", std::string("invalid JSON: ") + e.what());
+  }
+  if (!j.is_array()) throw SceneError(source, "", "expected a list of {x, y, yaw_deg} objects");
+  if (j.empty() || j.size() > kMaxCameras) {
+    throw SceneError(source, "",
+                     fmt::format("expected 1 to {} poses, found {}", kMaxCameras, j.size()));
+  }
+  std::vector<geometry::Pose> poses;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string path = fmt::format("[{}]", i);
+    const auto& item = j[i];
+    if (!item.is_object()) throw SceneError(source, path, "expected an object");
+    for (const auto& [key, unused] : item.items()) {
+      if (key != "x" && key != "y" && key != "yaw_deg") {
+        throw SceneError(source, path + "." + key, "unknown key (allowed: x, y, yaw_deg)");
+      }
+    }
+    double values[3];
+    const char* keys[3] = {"x", "y", "yaw_deg"};
+    for (int k = 0; k < 3; ++k) {
+      const std::string keyPath = path + "." + keys[k];
+      if (!item.contains(keys[k])) throw SceneError(source, keyPath, "missing required key");
+      if (!item[keys[k]].is_number()) throw SceneError(source, keyPath, "expected a number");
+      values[k] = item[keys[k]].get<double>();
+      if (!std::isfinite(values[k])) throw SceneError(source, keyPath, "number is not finite");
+    }
+    poses.push_back({values[0], values[1], geometry::wrapAngle(geometry::degToRad(values[2]))});
+  }
+  return poses;
+}
+
+std::vector<geometry::Pose> loadCameraPoses(const std::filesystem::path& file) {
+  return parseCameraPoses(readText(file), file.string());
+}
+
+}  // namespace camcov::scene

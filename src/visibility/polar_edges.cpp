@@ -1,0 +1,281 @@
+#include "visibility/polar_edges.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "geometry/predicates.h"
+
+namespace camcov::visibility {
+
+using geometry::Vec2;
+
+namespace {
+
+constexpr std::uint8_t kTouching = 8;  // replaced by a blocked wedge
+
+// The pseudo-angle in [0, 4] as a 32-bit fixed-point number: 16-byte events, and the radix
+// sort's digits for free. A quantum, 2^-30, dwarfs the pseudo-angle's rounding error (~1e-15),
+// so keys two quanta apart order their directions correctly; closer ones go to compareAngle().
+std::uint32_t quantizedAngle(Vec2 d) {
+  return static_cast<std::uint32_t>(std::min(geometry::pseudoAngle(d) * 0x1p30, 4294967295.0));
+}
+
+double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double u = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
+  return norm2(p - lerp(a, b, u));
+}
+
+}  // namespace
+
+void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
+  occluders_ = &occluders;
+  p_ = viewpoint;
+  eps2_ = occluders.tolerance() * occluders.tolerance();
+  blind_ = false;
+  state_.assign(occluders.pieceCount(), 0);
+
+  wedges_.clear();
+  events_.clear();
+  initial_.clear();
+
+  for (const Chain& chain : occluders.chains()) {
+    if (!classifyChain(chain)) {
+      blind_ = true;
+      return;
+    }
+  }
+
+  addVertexEvents();
+  for (std::uint32_t w = 0; w < wedges_.size(); ++w) {
+    addEvent(vertex(wedges_[w].start), w, EventKind::WedgeStart);
+    addEvent(vertex(wedges_[w].end), w, EventKind::WedgeEnd);
+  }
+
+  initiallyInFov_ = true;
+  if (fov != nullptr) {
+    // Far points on the two rays, so that rounding p + r·u tilts them by about 2^-52 rad.
+    const double r = occluders.extent() + std::abs(p_.x) + std::abs(p_.y);
+    fovPoints_[0] = p_ + r * geometry::unitVector(fov->yaw - fov->halfAngle);
+    fovPoints_[1] = p_ + r * geometry::unitVector(fov->yaw + fov->halfAngle);
+    wideFov_ = fov->halfAngle > 0.5 * std::numbers::pi;
+    // In view on the start ray iff the wedge from the right ray to the left one wraps past +x.
+    const int order = geometry::compareAngle(p_, fovPoints_[0], fovPoints_[1]);
+    initiallyInFov_ = order > 0 || (order == 0 && wideFov_);
+    addEvent(fovPoints_[0], 0, EventKind::FovEnter);
+    addEvent(fovPoints_[1], 1, EventKind::FovLeave);
+  }
+
+  sortEvents();
+}
+
+void PolarEdges::addVertexEvents() {
+  // One pass along each chain, in memory order: vertex v ends the piece before it and starts
+  // the piece after it.
+  for (const Chain& chain : occluders_->chains()) {
+    const std::uint32_t first = chain.first, last = first + chain.count - 1;
+    int beforeHalf = geometry::angleHalf(vertex(last) - p_);
+    for (std::uint32_t v = first; v <= last; ++v) {
+      const std::uint32_t before = v == first ? last : v - 1;
+      const std::uint8_t b = state_[before], a = state_[v];
+      const Vec2 d = vertex(v) - p_;
+      const int half = geometry::angleHalf(d);
+      // An active piece running with its chain is inserted at its chain start and removed at
+      // its chain end; a reversed one the other way round.
+      std::uint8_t actions = 0;
+      if (b & kActive) actions |= (b & kReversed) ? kInsertBefore : kRemoveBefore;
+      if (a & kActive) actions |= (a & kReversed) ? kRemoveAfter : kInsertAfter;
+      if (actions != 0) {
+        if (v == last) actions |= kAfterWraps;
+        events_.push_back({quantizedAngle(d), v, before, EventKind::Vertex, actions});
+      }
+      // The piece before is active on the start ray iff it spans the +x axis: it starts below
+      // and ends above.
+      const bool reversed = (b & kReversed) != 0;
+      if ((b & kActive) && (reversed ? half : beforeHalf) == 1 &&
+          (reversed ? beforeHalf : half) == 0) {
+        initial_.push_back(before);
+      }
+      beforeHalf = half;
+    }
+  }
+}
+
+bool PolarEdges::less(const Event& a, const Event& b) const {
+  if (std::uint64_t{a.key} + 1 < b.key) return true;  // two quanta apart
+  if (std::uint64_t{b.key} + 1 < a.key) return false;
+  return geometry::compareAngle(p_, pointOf(a), pointOf(b)) < 0;
+}
+
+void PolarEdges::sortEvents() {
+  // LSD radix sort on the 32-bit key (four passes of 8 bits) ...
+  const std::size_t n = events_.size();
+  std::array<std::array<std::uint32_t, 256>, 4> count{};
+  for (const Event& e : events_) {
+    for (int d = 0; d < 4; ++d)
+      ++count[d][(e.key >> (8 * d)) & 0xff];
+  }
+  scratch_.resize(n);
+  for (int d = 0; d < 4; ++d) {
+    auto& c = count[d];
+    if (n == 0 || c[(events_[0].key >> (8 * d)) & 0xff] == n) continue;  // all in one bucket
+    std::uint32_t sum = 0;
+    for (std::uint32_t& slot : c)
+      sum += std::exchange(slot, sum);
+    for (const Event& e : events_)
+      scratch_[c[(e.key >> (8 * d)) & 0xff]++] = e;
+    events_.swap(scratch_);
+  }
+  // ... then insertion sort in the exact order. Only events whose keys share a quantum or lie
+  // within the pseudo-angle's error of each other can be out of place, so this pass is linear
+  // unless many vertices lie on one ray.
+  for (std::size_t i = 1; i < n; ++i) {
+    if (!less(events_[i], events_[i - 1])) continue;
+    const Event e = events_[i];
+    std::size_t j = i;
+    for (; j > 0 && less(e, events_[j - 1]); --j)
+      events_[j] = events_[j - 1];
+    events_[j] = e;
+  }
+}
+
+bool PolarEdges::classifyChain(const Chain& chain) {
+  const double eps = occluders_->tolerance();
+  const geometry::Box& box = chain.box;
+  const std::uint32_t first = chain.first, count = chain.count;
+  if (p_.x < box.min.x - eps || p_.x > box.max.x + eps || p_.y < box.min.y - eps ||
+      p_.y > box.max.y + eps) {
+    if (chain.kind == RingKind::Boundary) return false;
+    for (std::uint32_t i = first; i < first + count; ++i)
+      classifyPiece(i);
+    return true;
+  }
+
+  near_.resize(count);
+  bool touching = false;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    near_[k] = norm2(vertex(first + k) - p_) <= eps2_;
+    touching = touching || near_[k];
+  }
+  bool inside = false;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint32_t kn = k + 1 == count ? 0 : k + 1;
+    const Vec2 a = vertex(first + k), b = vertex(first + kn);
+    if (!near_[k] && !near_[kn] && squaredDistanceToSegment(p_, a, b) <= eps2_) {
+      // On the piece's interior: its solid side is a half-plane at distance zero.
+      touching = true;
+      state_[first + k] = kTouching;
+      if (chain.solidOnLeft) {
+        addWedge(first + kn, first + k);
+      } else {
+        addWedge(first + k, first + kn);
+      }
+    }
+    // Crossing number with the half-open rule; p is farther than ε from every piece here, so
+    // rounding cannot flip a crossing.
+    if ((a.y > p_.y) != (b.y > p_.y) && p_.x < a.x + (p_.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+      inside = !inside;
+    }
+  }
+
+  if (!touching) {
+    // Strictly outside the boundary, or strictly inside an object: nothing is visible.
+    if ((chain.kind == RingKind::Boundary) != inside) return false;
+  } else {
+    // On a vertex, or on a run of vertices closer together than ε: the solid side between the
+    // nearest vertices before (u) and after (w) the run is blocked.
+    std::uint32_t k0 = 0;
+    while (k0 < count && near_[k0])
+      ++k0;
+    if (k0 == count) return true;  // the whole ring is within ε of p: a point, no wedge
+    for (std::uint32_t step = 1; step <= count; ++step) {
+      const std::uint32_t k = (k0 + step) % count, u = (k + count - 1) % count;
+      if (!near_[k] || near_[u]) continue;
+      std::uint32_t w = k;
+      state_[first + u] = kTouching;
+      for (; near_[w]; w = (w + 1) % count)
+        state_[first + w] = kTouching;
+      if (chain.solidOnLeft) {
+        addWedge(first + w, first + u);
+      } else {
+        addWedge(first + u, first + w);
+      }
+    }
+  }
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    if (state_[i] != kTouching) classifyPiece(i);
+  }
+  return true;
+}
+
+void PolarEdges::classifyPiece(std::uint32_t piece) {
+  if (!occluders_->isRepresentative(piece)) return;
+  const Vec2 a = vertex(piece), b = vertex(occluders_->next(piece));
+  const geometry::Orientation o = geometry::orientation(a, b, p_);
+  if (o.sign == 0) return;  // p on the supporting line: the piece subtends no angle
+  // det is the distance from p to the line times |b − a|.
+  const bool edgeOn = o.det * o.det <= eps2_ * norm2(b - a);
+  state_[piece] = kActive | (o.sign < 0 ? kReversed : 0) | (edgeOn ? kEdgeOn : 0);
+}
+
+void PolarEdges::addWedge(std::uint32_t start, std::uint32_t end) {
+  const int order = geometry::compareAngle(p_, vertex(start), vertex(end));
+  if (order == 0) return;  // both sides on one ray: a needle, no angle
+  const auto id = wedgeBase() + static_cast<std::uint32_t>(wedges_.size());
+  wedges_.push_back({start, end});
+  if (order > 0) initial_.push_back(id);  // it wraps past the +x axis
+}
+
+void PolarEdges::addEvent(Vec2 point, std::uint32_t ref, EventKind kind) {
+  events_.push_back({quantizedAngle(point - p_), ref, 0, kind});
+}
+
+Vec2 PolarEdges::pointOf(const Event& event) const {
+  switch (event.kind) {
+    case EventKind::Vertex:
+      return vertex(event.ref);
+    case EventKind::WedgeStart:
+      return vertex(wedges_[event.ref].start);
+    case EventKind::WedgeEnd:
+      return vertex(wedges_[event.ref].end);
+    case EventKind::FovEnter:
+    case EventKind::FovLeave:
+      break;
+  }
+  return fovPoints_[event.ref];
+}
+
+bool PolarEdges::sameRay(const Event& a, const Event& b) const {
+  return std::uint64_t{a.key} + 1 >= b.key && std::uint64_t{b.key} + 1 >= a.key &&
+         geometry::compareAngle(p_, pointOf(a), pointOf(b)) == 0;
+}
+
+PolarEdges::Edge PolarEdges::edgeOf(std::uint32_t piece) const {
+  const Vec2 a = vertex(piece), b = vertex(occluders_->next(piece));
+  return (state_[piece] & kReversed) ? Edge{b, a} : Edge{a, b};
+}
+
+double PolarEdges::param(std::uint32_t piece, Vec2 q) const {
+  const Vec2 a = vertex(piece), b = vertex(occluders_->next(piece));
+  if (q == a) return 0.0;
+  if (q == b) return 1.0;
+  // The hit divides a–b in the ratio of their signed distances to the ray's line; a and b lie
+  // on opposite sides, so this stays in [0, 1] up to rounding, however flat the angle.
+  const Vec2 d = q - p_;
+  const double oa = cross(d, a - p_), ob = cross(d, b - p_);
+  const double den = oa - ob;
+  return den != 0.0 ? std::clamp(oa / den, 0.0, 1.0) : 0.0;
+}
+
+Vec2 PolarEdges::hit(std::uint32_t id, Vec2 q) const {
+  if (id >= wedgeBase()) return p_;
+  const Vec2 a = vertex(id), b = vertex(occluders_->next(id));
+  if (q == a) return a;
+  if (q == b) return b;
+  return lerp(a, b, param(id, q));
+}
+
+}  // namespace camcov::visibility

@@ -1,0 +1,124 @@
+#pragma once
+// createPolarEdges(segments, p_j) and the sorted event list — Algorithm 1, lines 3–5
+// (paper section IV-B). Internal to the visibility stage; sweep.h is the public interface.
+//
+// For one viewpoint p every piece of the Occluders becomes either
+//  - a polar edge: its endpoints ordered counter-clockwise around p, inserted into the active
+//    edges at the first and removed at the second (the paper's firstVertex test), or
+//  - nothing, when p lies exactly on its supporting line (it subtends no angle).
+// Where p is within ε of a ring (on an edge or a vertex), the pieces touching p are replaced
+// by a blocked wedge: the ring's solid side around p, at distance zero, so the camera sees
+// only the free side. p strictly inside an object or strictly outside the boundary is blind.
+//
+// Events are the chain vertices (one event per vertex: the edge ending there and the edge
+// starting there are handled together), the wedges' sides, and the two field-of-view rays.
+// They are sorted by polar angle from the +x axis: a radix sort on the pseudo-angle, then an
+// insertion pass that orders near-ties with the exact compareAngle(), so the order is exact
+// and the sort linear in practice.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "visibility/occluders.h"
+
+namespace camcov::visibility {
+
+// A camera's field of view: the closed wedge [yaw − halfAngle, yaw + halfAngle].
+struct FieldOfView {
+  double yaw = 0.0;        // γ, radians
+  double halfAngle = 0.0;  // θ, radians, in (0, π)
+};
+
+class PolarEdges {
+ public:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+  enum class EventKind : std::uint8_t { Vertex, WedgeStart, WedgeEnd, FovEnter, FovLeave };
+  // What a vertex event does to the piece ending there ("before", in chain order) and to the
+  // piece starting there ("after"), worked out when the events are built so that the sweep
+  // itself reads nothing but the events.
+  static constexpr std::uint8_t kRemoveBefore = 1, kInsertBefore = 2, kRemoveAfter = 4,
+                                kInsertAfter = 8;
+  // The piece after ends at the chain's first vertex, not at the next one in memory.
+  static constexpr std::uint8_t kAfterWraps = 16;
+  struct Event {
+    std::uint32_t key;     // pseudo-angle of the event's direction, in units of 2^-30
+    std::uint32_t ref;     // chain vertex (= the piece after), wedge, or field-of-view ray
+    std::uint32_t before;  // for a vertex: the piece ending there
+    EventKind kind;
+    std::uint8_t actions = 0;  // for a vertex: the k…Before / k…After flags
+  };
+  // A polar edge: s comes first counter-clockwise around the viewpoint, so the viewpoint is
+  // strictly left of s → e.
+  struct Edge {
+    geometry::Vec2 s, e;
+  };
+  // A blocked wedge from the direction of vertex `start` counter-clockwise to `end`.
+  struct Wedge {
+    std::uint32_t start, end;
+  };
+
+  // Prepares the sweep from `viewpoint`; `fov` is null for an omnidirectional viewpoint.
+  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov);
+
+  bool blind() const { return blind_; }
+  geometry::Vec2 viewpoint() const { return p_; }
+  const Occluders& occluders() const { return *occluders_; }
+
+  std::span<const Event> events() const { return events_; }
+  // Ids active on the ray just below the +x axis, where the sweep starts and ends.
+  std::span<const std::uint32_t> initiallyActive() const { return initial_; }
+  bool initiallyInFov() const { return initiallyInFov_; }
+  // Wider than a half-plane: decides which side wins when both rays fall on one ray.
+  bool wideFov() const { return wideFov_; }
+
+  // Active ids: pieces are 0 .. pieceCount − 1, wedges follow from wedgeBase().
+  std::uint32_t wedgeBase() const { return occluders_->pieceCount(); }
+  std::uint32_t idCount() const { return wedgeBase() + static_cast<std::uint32_t>(wedges_.size()); }
+  // An active piece as a polar edge.
+  Edge edgeOf(std::uint32_t piece) const;
+
+  // Seen edge-on (its line passes within ε of the viewpoint): it occludes, but has no length
+  // to be seen.
+  bool edgeOn(std::uint32_t piece) const { return (state_[piece] & kEdgeOn) != 0; }
+
+  geometry::Vec2 pointOf(const Event& event) const;
+  bool sameRay(const Event& a, const Event& b) const;
+
+  // Where the ray from the viewpoint through q meets the piece: its parameter from the
+  // piece's chain start (0) to its chain end (1), exact when q is one of the two.
+  double param(std::uint32_t piece, geometry::Vec2 q) const;
+  // The nearest point of active id `id` on the ray through q (the viewpoint for a wedge).
+  geometry::Vec2 hit(std::uint32_t id, geometry::Vec2 q) const;
+
+ private:
+  static constexpr std::uint8_t kActive = 1, kReversed = 2, kEdgeOn = 4;
+
+  bool classifyChain(const Chain& chain);
+  void classifyPiece(std::uint32_t piece);
+  void addWedge(std::uint32_t start, std::uint32_t end);
+  void addEvent(geometry::Vec2 point, std::uint32_t ref, EventKind kind);
+  void addVertexEvents();
+  bool less(const Event& a, const Event& b) const;
+  void sortEvents();
+  bool isActive(std::uint32_t piece) const { return (state_[piece] & kActive) != 0; }
+  geometry::Vec2 vertex(std::uint32_t i) const { return occluders_->vertices()[i]; }
+
+  const Occluders* occluders_ = nullptr;
+  geometry::Vec2 p_;
+  double eps2_ = 0.0;
+  bool blind_ = false;
+  bool initiallyInFov_ = true;
+  bool wideFov_ = true;
+  geometry::Vec2 fovPoints_[2];
+
+  std::vector<std::uint8_t> state_;  // per piece
+
+  std::vector<Wedge> wedges_;
+  std::vector<std::uint8_t> near_;  // per vertex of the chain being classified
+  std::vector<Event> events_, scratch_;
+  std::vector<std::uint32_t> initial_;
+};
+
+}  // namespace camcov::visibility

@@ -1,0 +1,137 @@
+#include "visibility/sweep.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "visibility/polar_edges.h"
+#include "visibility/polar_sweep.h"
+#include "visibility/tessellation.h"
+
+namespace camcov::visibility {
+
+using geometry::Vec2;
+
+namespace {
+
+// Spans of the current edge → visible intervals of target edges (Algorithm 1, lines 12–13).
+class TargetSink final : public SpanSink {
+ public:
+  TargetSink(const PolarEdges& edges, Tessellation& tessellation, unsigned camera)
+      : edges_(edges), tessellation_(tessellation), camera_(camera) {}
+
+  void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
+    // Wedges (and kNone) are not pieces; an edge-on piece has no length to see.
+    if (!inFov || front >= edges_.wedgeBase() || edges_.edgeOn(front)) return;
+    const Occluders& occluders = edges_.occluders();
+    const auto members = occluders.targetMembers(front);
+    if (members.empty()) return;
+    const double s0 = edges_.param(front, from), s1 = edges_.param(front, to);
+    for (const Occluders::Member m : members) {
+      const double t0 = occluders.t0(m.piece), dt = occluders.t1(m.piece) - t0;
+      const double u0 = m.reversed ? 1.0 - s0 : s0, u1 = m.reversed ? 1.0 - s1 : s1;
+      tessellation_.add(occluders.globalEdge(m.piece), t0 + u0 * dt, t0 + u1 * dt, camera_);
+    }
+  }
+
+ private:
+  const PolarEdges& edges_;
+  Tessellation& tessellation_;
+  unsigned camera_;
+};
+
+// Spans of the current edge → vertices of the visibility polygon; outside the field of view
+// the polygon returns to the viewpoint.
+class PolygonSink final : public SpanSink {
+ public:
+  PolygonSink(const PolarEdges& edges, geometry::Ring& out) : edges_(edges), out_(out) {
+    out_.clear();
+  }
+
+  void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
+    if (!inFov) {
+      add(edges_.viewpoint());
+    } else if (front != PolarEdges::kNone) {
+      add(edges_.hit(front, from));
+      add(edges_.hit(front, to));
+    }
+  }
+
+  void finish() {
+    if (out_.size() > 1 && out_.front() == out_.back()) out_.pop_back();
+  }
+
+ private:
+  void add(Vec2 v) {
+    if (out_.empty() || out_.back() != v) out_.push_back(v);
+  }
+
+  const PolarEdges& edges_;
+  geometry::Ring& out_;
+};
+
+bool finite(Vec2 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+void checkCamera(const geometry::Pose& camera, double halfFov) {
+  if (!(halfFov > 0.0 && halfFov < std::numbers::pi)) {
+    throw std::invalid_argument("visibility: field-of-view half-angle must lie in (0, pi), got " +
+                                std::to_string(halfFov));
+  }
+  if (!finite(camera.position()) || !std::isfinite(camera.yaw)) {
+    throw std::invalid_argument("visibility: camera pose must be finite");
+  }
+}
+
+}  // namespace
+
+struct Sweep::Impl {
+  PolarEdges edges;
+  PolarSweep sweep;
+  Tessellation tessellation;
+};
+
+Sweep::Sweep() : impl_(std::make_unique<Impl>()) {}
+Sweep::~Sweep() = default;
+Sweep::Sweep(Sweep&&) noexcept = default;
+Sweep& Sweep::operator=(Sweep&&) noexcept = default;
+
+void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
+                     double halfFov, std::vector<Segment>& out) {
+  if (cameras.size() > kMaxCameras) {
+    throw std::invalid_argument("visibility: at most 64 cameras, got " +
+                                std::to_string(cameras.size()));
+  }
+  for (const geometry::Pose& camera : cameras)
+    checkCamera(camera, halfFov);
+  impl_->tessellation.clear();
+  for (std::size_t j = 0; j < cameras.size(); ++j) {  // Algorithm 1, line 2
+    const FieldOfView fov{cameras[j].yaw, halfFov};
+    impl_->edges.build(occluders, cameras[j].position(), &fov);
+    TargetSink sink(impl_->edges, impl_->tessellation, static_cast<unsigned>(j));
+    impl_->sweep.run(impl_->edges, sink);
+  }
+  impl_->tessellation.build(occluders, out);
+}
+
+void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::Ring& out) {
+  if (!finite(point)) throw std::invalid_argument("visibility: viewpoint must be finite");
+  impl_->edges.build(occluders, point, nullptr);
+  PolygonSink sink(impl_->edges, out);
+  impl_->sweep.run(impl_->edges, sink);
+  sink.finish();
+}
+
+void Sweep::fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
+                               double halfFov, geometry::Ring& out) {
+  checkCamera(camera, halfFov);
+  const FieldOfView fov{camera.yaw, halfFov};
+  impl_->edges.build(occluders, camera.position(), &fov);
+  PolygonSink sink(impl_->edges, out);
+  impl_->sweep.run(impl_->edges, sink);
+  sink.finish();
+}
+
+}  // namespace camcov::visibility

@@ -1,0 +1,69 @@
+#pragma once
+// Visibility of the targets' boundaries from cameras, and visibility polygons — the polar
+// sweep of paper section IV-B (Algorithm 1), one code path for both.
+//
+// Usage, per instant t:
+//   Occluders occluders(world);            // Algorithm 1 line 1, shared by all queries
+//   sweep.segments(occluders, poses, theta, s);      // S and visibleBy (lines 2–18)
+//   sweep.visibilityPolygon(occluders, q1, polygon); // Algorithm 2 line 6
+// A Sweep is a workspace: it keeps every buffer between calls, so after the first few calls
+// it allocates nothing (as long as the caller reuses its output vectors too). One Sweep per
+// thread; an Occluders may be shared by threads once built.
+//
+// Visibility: a camera at p with yaw γ and half-angle θ sees a point q if q lies in the closed
+// wedge [γ − θ, γ + θ] around p and the open segment from p to q crosses no edge of the
+// boundary, the obstacles or the targets. Conventions for degenerate cases (docs/visibility.md):
+//  - p strictly inside an object, or strictly outside the boundary: sees nothing.
+//  - p within ε (Occluders::tolerance()) of an edge or a vertex: p is on it and sees only the
+//    free side; the edge itself is seen edge-on.
+//  - a target edge whose supporting line passes within ε of p is seen edge-on: zero length.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "geometry/ring.h"
+#include "geometry/vec2.h"
+#include "visibility/occluders.h"
+#include "visibility/segment.h"
+
+namespace camcov::visibility {
+
+class Sweep {
+ public:
+  static constexpr std::size_t kMaxCameras = 64;  // bits of Segment::visibleBy
+
+  Sweep();
+  ~Sweep();
+  Sweep(Sweep&&) noexcept;
+  Sweep& operator=(Sweep&&) noexcept;
+
+  // S(T, O, C) and visibleBy(s_l) (paper equation (1), Algorithm 1) for `cameras` (camera j
+  // is bit j of visibleBy), all with half-angle `halfFov` θ in radians. Writes into `out`
+  // (cleared first) every target's boundary as segments, ordered by target, edge and along
+  // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
+  // Throws std::invalid_argument for more than kMaxCameras cameras, θ outside (0, π), or a
+  // non-finite pose.
+  void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
+                std::vector<Segment>& out);
+
+  // The omnidirectional visibility polygon of `point` (Algorithm 2, line 6; the motion
+  // planner's sampler): the region seen from it, inside the boundary, among the objects.
+  // Written into `out` counter-clockwise and star-shaped from `point`, so the triangles
+  // (point, out[i], out[i + 1]) tile it (a fan; those touching `point` may be flat). When
+  // `point` lies on an object's or the boundary's edge (a sampled q1), it is a vertex of the
+  // polygon, which then covers the free side only. Empty if `point` sees nothing.
+  // O(n log n). Throws std::invalid_argument for a non-finite point.
+  void visibilityPolygon(const Occluders& occluders, geometry::Vec2 point, geometry::Ring& out);
+
+  // What one camera sees: the visibility polygon cut to its field of view, "defined by p_j
+  // itself and the event points inside the field of view" (section IV-B). For drawing.
+  void fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+                          geometry::Ring& out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace camcov::visibility

@@ -1,0 +1,41 @@
+#pragma once
+// update(S) and update(visibleBy(·)) — Algorithm 1, lines 12–13 and 16 (paper section IV-B).
+// Internal to the visibility stage.
+//
+// Each camera's sweep reports the parameter intervals of target edges it sees. Instead of
+// re-splitting S after every camera (the paper's line 16), the intervals of all cameras are
+// collected and every target edge is cut once at all their endpoints: the same S, in
+// O(k log k) for k intervals. Neighbouring pieces seen by the same cameras are merged, and
+// the unseen rest of every edge is kept with an empty mask, so each target's segments add
+// up to its perimeter.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "visibility/occluders.h"
+#include "visibility/segment.h"
+
+namespace camcov::visibility {
+
+class Tessellation {
+ public:
+  void clear();
+  // Camera `camera` (< 64) sees the target edge `globalEdge` for t in [lo, hi].
+  void add(std::uint32_t globalEdge, double lo, double hi, unsigned camera);
+  // Writes S, ordered by target, edge, and along the edge.
+  void build(const Occluders& occluders, std::vector<Segment>& out);
+
+ private:
+  struct Mark {
+    double t;
+    std::uint32_t camera;
+    int delta;  // +1 where a camera's interval opens, −1 where it closes
+  };
+  std::vector<std::uint32_t> edgeOf_;  // per interval, for the bucket sort
+  std::vector<Mark> pending_;          // in arrival order
+  std::vector<std::uint32_t> bucket_;  // first mark of each target edge
+  std::vector<Mark> marks_;            // bucketed by edge
+  std::array<int, 64> open_{};
+};
+
+}  // namespace camcov::visibility

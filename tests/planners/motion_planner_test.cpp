@@ -1,0 +1,87 @@
+#include "planners/motion_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "planners/state_validity.h"
+#include "reward/reward_model.h"
+#include "support/small_worlds.h"
+
+namespace camcov::planners {
+namespace {
+
+constexpr double kTheta = std::numbers::pi / 6;
+
+params::Parameters smallBudget() {
+  params::Parameters p;
+  p.planner.milestonesPerSecond = 600;  // 300 milestones for T2 = 0.5 s
+  return p;
+}
+
+TEST(Roadmap, PathRunsFromStartToGoalThroughValidMotionsAroundTheObstacle) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  Roadmap roadmap(w, smallBudget(), kTheta, 3);
+  EXPECT_EQ(roadmap.milestones(), 300u);
+  const geometry::Pose start{10, 0, 0}, goal{-10, 0, std::numbers::pi / 2};
+  const auto path = roadmap.query(start, goal);
+  ASSERT_TRUE(path);
+  ASSERT_GE(path->size(), 3u) << "the target and obstacle block the straight line";
+  EXPECT_EQ(path->front().position(), start.position());
+  EXPECT_EQ(path->back().position(), goal.position());
+  StateValidity validity(1.0);
+  validity.setWorld(w);
+  for (std::size_t i = 1; i < path->size(); ++i) {
+    EXPECT_TRUE(validity.isValidMotion((*path)[i - 1].position(), (*path)[i].position())) << i;
+  }
+}
+
+TEST(Roadmap, SameSeedSameRoadmapAndPath) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  Roadmap a(w, smallBudget(), kTheta, 5), b(w, smallBudget(), kTheta, 5);
+  const geometry::Pose start{10, 5, 0}, goal{-10, -5, 1};
+  EXPECT_EQ(a.query(start, goal), b.query(start, goal));
+}
+
+TEST(Roadmap, CostIsEquationTen) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  const params::Parameters p = smallBudget();
+  Roadmap roadmap(w, p, kTheta, 1);
+  reward::RewardModel reward(p.reward, kTheta);
+  reward.setWorld(w);
+  const geometry::Pose a{0, -4, std::numbers::pi / 2}, b{1, -5, 1.2};
+  const double ra = reward.reward(std::span(&a, 1)), rb = reward.reward(std::span(&b, 1));
+  ASSERT_GT(ra, 0.0);
+  ASSERT_GT(rb, 0.0);
+  // ½(1/r(a) + 1/r(b)) · (‖Δxy‖ + ½|Δγ|)
+  const double expected = 0.5 * (1 / ra + 1 / rb) * (std::sqrt(2.0) + 0.5 * std::abs(1.2 - a.yaw));
+  EXPECT_NEAR(roadmap.cost(a, b), expected, 1e-12);
+}
+
+TEST(Roadmap, UnreachableGoalHasNoPath) {
+  kinematics::World w = testing::roomWithTargetAndObstacle();
+  // A wall of obstacles splits the room in two.
+  w.obstacles.push_back({{-0.2, -20}, {0.2, -20}, {0.2, 20}, {-0.2, 20}});
+  w.targets.clear();
+  Roadmap roadmap(w, smallBudget(), kTheta, 2);
+  EXPECT_FALSE(roadmap.query({-10, 0, 0}, {10, 0, 0}));
+}
+
+TEST(StateValidity, MotionsMustKeepClearanceD1Exactly) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  StateValidity v(1.0);
+  v.setWorld(w);
+  // Passing 1.5 m below the obstacle (its bottom edge at y = -0.5): fine; 0.9 m: not.
+  EXPECT_TRUE(v.isValidMotion({3, -2}, {9, -2}));
+  EXPECT_FALSE(v.isValidMotion({3, -1.4}, {9, -1.4}));
+  // Ends valid but the segment runs through the target.
+  EXPECT_FALSE(v.isValidMotion({-3, 0}, {3, 0}));
+  // Leaving the boundary.
+  EXPECT_FALSE(v.isValidMotion({15, 15}, {25, 15}));
+  // A camera already too close may move away, never closer.
+  EXPECT_TRUE(v.isValidMotion({0, -0.9}, {0, -3}));
+  EXPECT_FALSE(v.isValidMotion({0, -0.9}, {0, -0.7}));
+}
+
+}  // namespace
+}  // namespace camcov::planners

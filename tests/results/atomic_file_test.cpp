@@ -1,0 +1,56 @@
+#include "results/atomic_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "util/input_error.h"
+
+namespace camcov::results {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(WriteFileAtomically, CreatesFoldersReplacesContentAndLeavesNoTemporaries) {
+  const fs::path dir = fs::path(CAMCOV_TEST_TMP) / "atomic";
+  fs::remove_all(dir);
+  const fs::path file = dir / "sub" / "x.json";
+  writeFileAtomically(file, "first");
+  writeFileAtomically(file, "second");
+  EXPECT_EQ(read(file), "second");
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(file.parent_path()))
+    ++entries;
+  EXPECT_EQ(entries, 1);
+}
+
+TEST(WriteFileAtomically, UnwritableFolderIsAnInputError) {
+  EXPECT_THROW(writeFileAtomically("/proc/camcov/x.json", "x"), InputError);
+}
+
+TEST(WriteFileAtomically, FullDiskIsAnErrorAndKeepsTheOldFile) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  // Writing through a symlink to /dev/full fails with ENOSPC at write time; the rename never
+  // happens, so whatever was there stays.
+  const fs::path dir = fs::path(CAMCOV_TEST_TMP) / "full";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "x.json";
+  writeFileAtomically(file, "old");
+  const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
+  fs::create_symlink("/dev/full", temporary);
+  EXPECT_THROW(writeFileAtomically(file, std::string(1 << 16, 'x')), std::runtime_error);
+  EXPECT_EQ(read(file), "old");
+  EXPECT_FALSE(fs::exists(fs::symlink_status(temporary)));
+}
+
+}  // namespace
+}  // namespace camcov::results

@@ -1,0 +1,67 @@
+#include "results/run_files.h"
+
+#include <gtest/gtest.h>
+
+#include "util/input_error.h"
+
+namespace camcov::results {
+namespace {
+
+RunRecord sampleRun() {
+  RunRecord run;
+  run.metadata = {"scene_a", "scenes/scene_a.json", 0x0123456789abcdefull, "paper", 7, {}, "9.9.9"};
+  run.metadata.parameters.global.K = 123;
+  run.summary.steps = 2;
+  run.summary.duration = 0.1;
+  run.summary.averageCoverage = 0.25;
+  run.summary.minCameraDistance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 2; ++k) {
+    StepRow row;
+    row.time = 0.1 * k;
+    row.terms = {0.2 + k * 0.1, 0.5, 0.0, 0.3};
+    row.minObjectDistance = 2.5;
+    row.minCameraDistance = std::numeric_limits<double>::infinity();
+    row.cameras = {{1.0, 2.0 + k, 0.5}};
+    row.goals = {k ? std::optional(geometry::Pose{4, 5, 6}) : std::nullopt};
+    run.steps.push_back(row);
+  }
+  run.events.push_back({0.0, "plan", 0, "3 waypoints", {{1, 2, 0.5}, {3, 4, 0}, {4, 5, 6}}});
+  return run;
+}
+
+TEST(RunFiles, JsonRoundTripsEveryField) {
+  const RunRecord run = sampleRun();
+  const nlohmann::json j = runToJson(run);
+  EXPECT_EQ(j["scene"]["hash"], "0123456789abcdef");
+  EXPECT_TRUE(j["summary"]["minCameraDistance"].is_null()) << "JSON has no infinity";
+  const RunRecord back = runFromJson(j, "memory");
+  EXPECT_EQ(runToJson(back), j);
+  EXPECT_EQ(back.metadata.parameters.global.K, 123);
+  ASSERT_EQ(back.steps.size(), 2u);
+  EXPECT_FALSE(back.steps[0].goals[0].has_value());
+  EXPECT_EQ(*back.steps[1].goals[0], (geometry::Pose{4, 5, 6}));
+  EXPECT_EQ(back.events.at(0).path.size(), 3u);
+}
+
+TEST(RunFiles, CsvHasOneRowPerStepAndAColumnPerPoseComponent) {
+  const std::string csv = runToCsv(sampleRun());
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance,"
+            "cam0_x,cam0_y,cam0_yaw");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_NE(csv.find("0.1,0.30000000000000004,0.5,0,0.3,2.5,inf,1,3,0.5"), std::string::npos)
+      << csv;
+}
+
+TEST(RunFiles, RejectsDocumentsThatAreNotRuns) {
+  EXPECT_THROW(runFromJson(nlohmann::json::parse(R"({"format": "other"})"), "x"), InputError);
+  EXPECT_THROW(runFromJson(nlohmann::json::parse(R"({"a": 1})"), "x"), InputError);
+  EXPECT_THROW(loadRunFile("/nonexistent/run.json"), InputError);
+}
+
+TEST(RunStem, NamesSceneMethodAndSeed) {
+  EXPECT_EQ(runStem(sampleRun().metadata), "scene_a-paper-seed7");
+}
+
+}  // namespace
+}  // namespace camcov::results

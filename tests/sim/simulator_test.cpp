@@ -1,0 +1,132 @@
+#include "sim/simulator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/small_worlds.h"
+
+namespace camcov::sim {
+namespace {
+
+// Asks every camera for the same command, and remembers what it was shown.
+class ConstantController final : public control::Controller {
+ public:
+  explicit ConstantController(control::CameraCommand u) : u_(u) {}
+  void control(const control::Observation& o, std::span<control::CameraCommand> out) override {
+    seenTimes.push_back(o.time);
+    seenWorldTimes.push_back(o.world.time);
+    for (auto& c : out)
+      c = u_;
+    events_.push_back({o.time, "tick", -1, "", {}});
+  }
+  std::optional<geometry::Pose> goal(std::size_t) const override { return geometry::Pose{1, 2, 3}; }
+  void takeEvents(std::vector<control::ControlEvent>& out) override {
+    out.insert(out.end(), events_.begin(), events_.end());
+    events_.clear();
+  }
+  std::vector<double> seenTimes, seenWorldTimes;
+
+ private:
+  control::CameraCommand u_;
+  std::vector<control::ControlEvent> events_;
+};
+
+class KeepingRecorder final : public Recorder {
+ public:
+  void step(const StepRecord& r) override {
+    times.push_back(r.time);
+    poses.emplace_back(r.cameras.begin(), r.cameras.end());
+    coverage.push_back(r.terms.coverage);
+    events += static_cast<int>(r.events.size());
+    ASSERT_TRUE(r.goals[0].has_value());
+  }
+  std::vector<double> times, coverage;
+  std::vector<std::vector<geometry::Pose>> poses;
+  int events = 0;
+};
+
+const scene::Scene& oneTargetScene() {
+  static const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  return s;
+}
+
+TEST(Simulate, StepsAtFixedDtAndShowsTheControllerOnlyThePresent) {
+  params::Parameters p;
+  p.sim.duration = 2.0;
+  ConstantController controller({{0, 0}, 0});
+  KeepingRecorder recorder;
+  const RunSummary s = simulate(oneTargetScene(), p, controller, recorder);
+  EXPECT_EQ(s.steps, 21);
+  ASSERT_EQ(recorder.times.size(), 21u);
+  EXPECT_DOUBLE_EQ(recorder.times.back(), 2.0);
+  ASSERT_EQ(controller.seenTimes.size(), 20u) << "no command is needed after the last step";
+  for (std::size_t k = 0; k < controller.seenTimes.size(); ++k) {
+    EXPECT_DOUBLE_EQ(controller.seenTimes[k], recorder.times[k]);
+    EXPECT_DOUBLE_EQ(controller.seenWorldTimes[k], recorder.times[k]);
+  }
+  EXPECT_EQ(recorder.events, 20);
+}
+
+TEST(Simulate, SaturatesCommandsToTheCameraLimits) {
+  params::Parameters p;
+  p.sim.duration = 1.0;
+  ConstantController controller({{30, 40}, -9});  // 50 m/s, -9 rad/s
+  KeepingRecorder recorder;
+  simulate(oneTargetScene(), p, controller, recorder);
+  // Camera 0 starts at (-6, -6) with v_max 2 m/s and 1 rad/s: 1 s later it is 2 m along
+  // (0.6, 0.8) and has turned -1 rad.
+  const geometry::Pose end = recorder.poses.back()[0];
+  EXPECT_NEAR(end.x, -6 + 1.2, 1e-9);
+  EXPECT_NEAR(end.y, -6 + 1.6, 1e-9);
+  EXPECT_NEAR(geometry::wrapAngle(end.yaw - geometry::degToRad(225)), -1.0, 1e-9);
+}
+
+TEST(Simulate, KeepsCamerasInsideTheBoundary) {
+  params::Parameters p;
+  p.sim.duration = 10.0;
+  ConstantController controller({{2, 0}, 0});  // camera 1 at x = 6 reaches x = 10 after 2 s
+  KeepingRecorder recorder;
+  const RunSummary s = simulate(oneTargetScene(), p, controller, recorder);
+  for (const auto& step : recorder.poses) {
+    for (const auto& c : step)
+      EXPECT_LE(c.x, 10.0);
+  }
+  EXPECT_GT(recorder.poses.back()[1].x, 9.99);
+  EXPECT_GT(s.boundaryClamps, 0);
+}
+
+TEST(Simulate, AveragesAreTheTrapezoidRuleOfTheRecordedSeries) {
+  params::Parameters p;
+  p.sim.duration = 3.0;
+  ConstantController controller({{1, 1}, 0.3});
+  KeepingRecorder recorder;
+  const RunSummary s = simulate(oneTargetScene(), p, controller, recorder);
+  double integral = 0;
+  for (std::size_t k = 1; k < recorder.coverage.size(); ++k) {
+    integral += 0.5 * (recorder.coverage[k - 1] + recorder.coverage[k]) * p.sim.dt;
+  }
+  EXPECT_NEAR(s.averageCoverage, integral / 3.0, 1e-12);
+}
+
+TEST(Simulate, MeasuresCollisionTimeBelowDelta) {
+  // A camera parked 0.3 m from the obstacle (δ = 0.5 m) for the whole run.
+  const scene::Scene s = testing::sceneFromJson(R"js({
+    "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+    "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((0 0))"}],
+    "obstacles": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((5 0))"}],
+    "cameraFoV": 30,
+    "cameras": [{"pos": "POINT(5 -0.8)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1}]})js");
+  params::Parameters p;
+  p.sim.duration = 1.5;
+  ConstantController controller({{0, 0}, 0});
+  KeepingRecorder recorder;
+  const RunSummary summary = simulate(s, p, controller, recorder);
+  EXPECT_NEAR(summary.minObjectDistance, 0.3, 1e-12);
+  EXPECT_NEAR(summary.objectCollisionTime, 1.5, 1e-9);
+  EXPECT_TRUE(std::isinf(summary.minCameraDistance));
+  EXPECT_EQ(summary.cameraCollisionTime, 0.0);
+}
+
+}  // namespace
+}  // namespace camcov::sim

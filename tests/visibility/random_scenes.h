@@ -1,0 +1,45 @@
+#pragma once
+// Seeded random Worlds and cameras for the randomized tests, biased towards the degenerate
+// configurations the sweep must survive: integer grids (collinear vertices, cameras on
+// supporting lines, vertices on one ray), cameras on edges and vertices or 1e-9 beside them,
+// field-of-view rays aimed through vertices, touching and overlapping objects, objects poking
+// through the boundary, non-convex boundaries with pockets.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "kinematics/world.h"
+
+namespace camcov::visibility::testing {
+
+// A small portable generator (splitmix64), so a seed means the same case everywhere.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next();
+  double uniform(double lo, double hi);  // [lo, hi)
+  int integer(int lo, int hi);           // [lo, hi]
+  bool chance(double p) { return uniform(0.0, 1.0) < p; }
+
+ private:
+  std::uint64_t state_;
+};
+
+struct Case {
+  kinematics::World world;
+  std::vector<geometry::Pose> cameras;
+  double halfFov = 0.0;
+};
+
+// The randomized configuration number `index` of the suite seeded with `seed`.
+Case randomCase(std::uint64_t seed, std::uint64_t index);
+
+// A point where Algorithm 2 would compute a visibility polygon: anywhere, on a target's
+// boundary, at a vertex, or on the boundary.
+geometry::Vec2 randomViewpoint(Random& random, const kinematics::World& world);
+
+// The case as text, to reproduce a failure.
+std::string describe(const Case& c);
+
+}  // namespace camcov::visibility::testing

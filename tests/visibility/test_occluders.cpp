@@ -1,0 +1,123 @@
+// createSegments (Algorithm 1, line 1): the shared arrangement of one World's edges.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "visibility/occluders.h"
+
+namespace camcov::visibility {
+namespace {
+
+using geometry::Ring;
+using geometry::Vec2;
+
+Ring box(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+kinematics::World world(Ring boundary, std::vector<Ring> targets,
+                        std::vector<Ring> obstacles = {}) {
+  kinematics::World w;
+  w.boundary = std::move(boundary);
+  w.targets = std::move(targets);
+  w.obstacles = std::move(obstacles);
+  return w;
+}
+
+std::vector<Vec2> chainVertices(const Occluders& o, std::size_t chain) {
+  const Chain& c = o.chains()[chain];
+  return {o.vertices().begin() + c.first, o.vertices().begin() + c.first + c.count};
+}
+
+TEST(Occluders, DisjointObjectsAreNotSplit) {
+  const Occluders o(world(box(0, 0, 10, 10), {box(1, 1, 2, 2)}, {box(5, 5, 6, 7)}));
+  EXPECT_EQ(o.pieceCount(), 12u);
+  ASSERT_EQ(o.chains().size(), 3u);
+  EXPECT_EQ(o.chains()[0].kind, RingKind::Boundary);
+  EXPECT_FALSE(o.chains()[0].solidOnLeft);  // the boundary's outside is on its right
+  EXPECT_EQ(o.chains()[1].kind, RingKind::Obstacle);
+  EXPECT_TRUE(o.chains()[1].solidOnLeft);
+  EXPECT_EQ(o.chains()[2].kind, RingKind::Target);
+}
+
+TEST(Occluders, CrossingObjectsAreSplitAtASharedVertex) {
+  // The obstacle [3, 5] × [−1, 1] crosses the target [0, 4] × [0, 2] at (3, 0) and (4, 1).
+  const Occluders o(world(box(-10, -10, 10, 10), {box(0, 0, 4, 2)}, {box(3, -1, 5, 1)}));
+  const auto obstacle = chainVertices(o, 1), target = chainVertices(o, 2);
+  EXPECT_EQ(obstacle.size(), 6u);
+  EXPECT_EQ(target.size(), 6u);
+  for (const Vec2 x : {Vec2{3, 0}, Vec2{4, 1}}) {
+    EXPECT_NE(std::find(obstacle.begin(), obstacle.end(), x), obstacle.end());
+    EXPECT_NE(std::find(target.begin(), target.end(), x), target.end());
+  }
+}
+
+TEST(Occluders, VertexTouchingAnEdgeSplitsThatEdge) {
+  // The triangle's apex (2, 2) lies on the square's top side.
+  const Occluders o(world(box(-10, -10, 10, 10), {box(0, 0, 4, 2)}, {{{1, 3}, {2, 2}, {3, 3}}}));
+  const auto target = chainVertices(o, 2);
+  EXPECT_NE(std::find(target.begin(), target.end(), Vec2{2, 2}), target.end());
+  EXPECT_EQ(chainVertices(o, 1).size(), 3u);
+}
+
+TEST(Occluders, TargetPiecesCoverEveryEdgeOnceFromZeroToOne) {
+  const Occluders o(
+      world(box(-10, -10, 10, 10), {box(0, 0, 4, 2), box(1, 1, 6, 5)}, {box(3, -1, 5, 1)}));
+  std::vector<double> covered(o.targetEdgeCount(), 0.0);
+  for (std::uint32_t p = 0; p < o.pieceCount(); ++p) {
+    if (o.globalEdge(p) == Occluders::kNoEdge) continue;
+    EXPECT_LT(o.t0(p), o.t1(p));
+    covered[o.globalEdge(p)] += o.t1(p) - o.t0(p);
+  }
+  for (const double c : covered)
+    EXPECT_NEAR(c, 1.0, 1e-15);
+}
+
+TEST(Occluders, EdgesLyingOnEachOtherBecomeTwins) {
+  // The target's bottom side lies on the obstacle's (same direction); its top side on the
+  // boundary-like wall of a second obstacle's bottom side (opposite direction).
+  const Occluders o(
+      world(box(-10, -10, 10, 10), {box(1, 0, 2, 1)}, {box(0, 0, 4, 0.5), box(0, 1, 4, 3)}));
+  int twins = 0;
+  for (std::uint32_t p = 0; p < o.pieceCount(); ++p) {
+    if (o.isRepresentative(p)) continue;
+    ++twins;
+  }
+  EXPECT_EQ(twins, 2);
+  // Each representative of a twin pair carries the target piece, with its direction.
+  int carried = 0;
+  for (std::uint32_t p = 0; p < o.pieceCount(); ++p) {
+    if (!o.isRepresentative(p)) continue;
+    for (const Occluders::Member m : o.targetMembers(p)) {
+      if (m.piece == p) continue;
+      ++carried;
+      const Vec2 a = o.vertices()[m.piece], b = o.vertices()[o.next(m.piece)];
+      const Vec2 ra = o.vertices()[p], rb = o.vertices()[o.next(p)];
+      EXPECT_EQ(m.reversed ? (a == rb && b == ra) : (a == ra && b == rb), true);
+    }
+  }
+  EXPECT_EQ(carried, 2);
+}
+
+TEST(Occluders, RepeatedVerticesAreDroppedButEdgeNumbersKept) {
+  // Vertex 1 repeats vertex 0: edge 0 has no length, the bottom side is edge 1.
+  const Ring target{{0, 0}, {0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Occluders o(world(box(-10, -10, 10, 10), {target}));
+  EXPECT_EQ(chainVertices(o, 1).size(), 4u);
+  EXPECT_EQ(o.targetEdgeCount(), 5u);
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t p = o.chains()[1].first; p < o.pieceCount(); ++p)
+    edges.push_back(o.globalEdge(p));
+  EXPECT_EQ(edges, (std::vector<std::uint32_t>{1, 2, 3, 4}));
+}
+
+TEST(Occluders, ToleranceScalesWithTheWorld) {
+  const Occluders small(world(box(0, 0, 1, 1), {box(0.2, 0.2, 0.4, 0.4)}));
+  const Occluders large(world(box(0, 0, 1000, 500), {box(2, 2, 4, 4)}));
+  EXPECT_DOUBLE_EQ(small.tolerance(), 1e-12);
+  EXPECT_DOUBLE_EQ(large.tolerance(), 1e-9);
+}
+
+}  // namespace
+}  // namespace camcov::visibility

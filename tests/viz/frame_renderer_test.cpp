@@ -1,0 +1,145 @@
+// Frames of the tiny scene at t = 0: one camera at (-3, 0) looking along +x sees the left
+// edge of the square target centred at (2, 0) and not its right edge; the obstacle at (-1, 3)
+// is out of its view. Colours are sampled in the middle of thick strokes and fills, so
+// antialiasing at their edges does not matter.
+#include "viz/frame_renderer.h"
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "scene/scene_loader.h"
+#include "util/input_error.h"
+#include "viz_test_support.h"
+
+namespace camcov::viz {
+namespace {
+
+using geometry::Vec2;
+using testing::ScratchDir;
+
+struct Colour {
+  double r, g, b;
+};
+
+class TinyFrame : public ::testing::Test {
+ protected:
+  TinyFrame() : scene_(scene::loadScene(testing::tinyScene())), renderer_(800, 600) {
+    FrameBuilder builder(scene_);
+    builder.build(0.0, std::vector<geometry::Pose>{scene_.cameras[0].initial}, frame_);
+    frame_.caption.subtitle = "test";
+  }
+
+  // The PNG written to disk, read back through Cairo.
+  void writeAndLoad(const std::filesystem::path& file) {
+    renderer_.write(frame_, file);
+    png_.reset(cairo_image_surface_create_from_png(file.c_str()));
+    ASSERT_EQ(cairo_surface_status(png_.get()), CAIRO_STATUS_SUCCESS);
+    ASSERT_EQ(cairo_image_surface_get_width(png_.get()), 800);
+    ASSERT_EQ(cairo_image_surface_get_height(png_.get()), 600);
+  }
+
+  Colour at(Vec2 world) const {
+    const Vec2 p = renderer_.layoutOf(frame_).toImage(world);
+    cairo_surface_t* s = png_.get();
+    const unsigned char* row = cairo_image_surface_get_data(s) +
+                               static_cast<int>(p.y) * cairo_image_surface_get_stride(s);
+    std::uint32_t word;
+    std::memcpy(&word, row + 4 * static_cast<int>(p.x), 4);
+    return {((word >> 16) & 255) / 255.0, ((word >> 8) & 255) / 255.0, (word & 255) / 255.0};
+  }
+
+  struct SurfaceDeleter {
+    void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+  };
+  scene::Scene scene_;
+  FrameRenderer renderer_;
+  Frame frame_;
+  std::unique_ptr<cairo_surface_t, SurfaceDeleter> png_;
+};
+
+TEST_F(TinyFrame, BuilderFindsTheSeenEdgeAndCoverage) {
+  // The square's left edge (2 m of the 8 m perimeter) is all the camera sees of the targets.
+  EXPECT_NEAR(frame_.caption.coverage, 2.0 / (8.0 + 1.0 + 2.0 * std::hypot(0.5, 0.8)), 1e-9);
+  ASSERT_EQ(frame_.cameras.size(), 1u);
+  EXPECT_GE(frame_.cameras[0].view.size(), 3u);
+  ASSERT_EQ(frame_.paths.size(), 1u);  // only the sliding target moves
+  EXPECT_EQ(frame_.paths[0].velocity, 0.5);
+}
+
+TEST_F(TinyFrame, PngShowsSeenGreenUnseenRedObstacleDarkAndEmptyFloorWhite) {
+  ScratchDir dir;
+  writeAndLoad(dir / "frame.png");
+  const Colour seen = at({1.0, 0.0});
+  EXPECT_GT(seen.g, seen.r + 0.3);
+  EXPECT_GT(seen.g, seen.b + 0.3);
+  const Colour unseen = at({3.0, 0.0});
+  EXPECT_GT(unseen.r, unseen.g + 0.4);
+  EXPECT_GT(unseen.r, unseen.b + 0.4);
+  const Colour obstacle = at({-1.0, 3.0});
+  EXPECT_LT(std::max({obstacle.r, obstacle.g, obstacle.b}), 0.35);
+  const Colour floor = at({3.5, 4.0});
+  EXPECT_GT(std::min({floor.r, floor.g, floor.b}), 0.97);
+  const Colour target = at({2.0, 0.5});  // grey: no hue, mid lightness
+  EXPECT_NEAR(target.r, target.b, 0.06);
+  EXPECT_GT(target.g, 0.5);
+  EXPECT_LT(target.g, 0.9);
+  const Colour view = at({-1.0, 0.3});  // amber tint inside the field of view
+  EXPECT_GT(view.r, view.b + 0.15);
+}
+
+TEST_F(TinyFrame, SvgHoldsTheSameDrawingAsVectors) {
+  ScratchDir dir;
+  const auto file = dir / "frame.svg";
+  renderer_.write(frame_, file);
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"800pt\" height=\"600pt\""), std::string::npos);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  // Vectors, not an embedded raster.
+  EXPECT_EQ(svg.find("<image"), std::string::npos);
+  std::size_t paths = 0;
+  for (auto i = svg.find("<path"); i != std::string::npos; i = svg.find("<path", i + 1)) ++paths;
+  EXPECT_GT(paths, 20u);
+  // Text (caption, legend) as glyphs.
+  EXPECT_NE(svg.find("<use xlink:href=\"#glyph"), std::string::npos);
+}
+
+TEST_F(TinyFrame, RasterIsReusedBetweenFrames) {
+  const RasterImage first = renderer_.rasterize(frame_);
+  const RasterImage second = renderer_.rasterize(frame_);
+  EXPECT_EQ(first.pixels, second.pixels);
+  EXPECT_EQ(second.width, 800);
+  EXPECT_EQ(second.height, 600);
+  EXPECT_GE(second.stride, 4 * 800);
+}
+
+TEST(ImageFormat, ComesFromTheExtensionInAnyCase) {
+  EXPECT_EQ(imageFormatOf("a/b.png"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatOf("b.SVG"), ImageFormat::Svg);
+  EXPECT_THROW(imageFormatOf("b.jpg"), InputError);
+  EXPECT_THROW(imageFormatOf("png"), InputError);
+}
+
+TEST_F(TinyFrame, UnwritableFileIsAnInputError) {
+  EXPECT_THROW(renderer_.write(frame_, "/nonexistent-folder/f.png"), InputError);
+  EXPECT_THROW(renderer_.write(frame_, "/nonexistent-folder/f.svg"), InputError);
+}
+
+TEST(FrameRenderer, RejectsSizesOutsideItsRange) {
+  EXPECT_THROW(FrameRenderer(8, 600), std::invalid_argument);
+  EXPECT_THROW(FrameRenderer(800, 100000), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace camcov::viz

@@ -1,0 +1,47 @@
+#include "viz/frame.h"
+
+#include "reward/metrics.h"
+
+namespace camcov::viz {
+namespace {
+
+void addPaths(const std::vector<scene::MovingObject>& objects, std::vector<ObjectPath>& out) {
+  for (const auto& object : objects) {
+    if (object.path.size() > 1 || object.angularVelocity != 0.0) {
+      out.push_back({object.path, object.path.size() > 1 ? object.velocity : 0.0,
+                     object.angularVelocity});
+    }
+  }
+}
+
+}  // namespace
+
+FrameBuilder::FrameBuilder(const scene::Scene& scene)
+    : kinematics_(scene), sceneName_(scene.name), halfFov_(scene.fovHalfAngle) {
+  addPaths(scene.targets, paths_);
+  addPaths(scene.obstacles, paths_);
+}
+
+void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, Frame& out) {
+  kinematics_.worldAt(time, out.world);
+  occluders_.build(out.world);
+  sweep_.segments(occluders_, cameras, halfFov_, out.segments);
+
+  out.cameras.resize(cameras.size());
+  for (std::size_t j = 0; j < cameras.size(); ++j) {
+    CameraView& c = out.cameras[j];
+    c.pose = cameras[j];
+    sweep_.fieldOfViewPolygon(occluders_, c.pose, halfFov_, c.view);
+    c.goal.reset();
+    c.plan.clear();
+  }
+  out.paths = paths_;
+
+  out.caption.title = sceneName_;
+  out.caption.subtitle.clear();
+  out.caption.time = time;
+  out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
+  out.caption.utilization = reward::utilization(out.segments, cameras, halfFov_);
+}
+
+}  // namespace camcov::viz

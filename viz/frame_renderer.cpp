@@ -1,0 +1,530 @@
+#include "viz/frame_renderer.h"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "util/input_error.h"
+#include "viz/file_extension.h"
+#include "viz/frame_layout.h"
+
+namespace camcov::viz {
+namespace {
+
+using geometry::Vec2;
+
+struct Rgb {
+  double r, g, b;
+};
+
+// Green and red differ in lightness as well as hue, so the two stay apart for readers with
+// red-green colour blindness; the views are amber, which clashes with neither nor with blue.
+constexpr Rgb kPage{0.925, 0.929, 0.937};  // outside the boundary, and the panel
+constexpr Rgb kFloor{1.0, 1.0, 1.0};       // free space inside the boundary
+constexpr Rgb kWall{0.42, 0.45, 0.50};
+constexpr Rgb kObstacle{0.22, 0.24, 0.28};
+constexpr Rgb kTarget{0.78, 0.79, 0.81};
+constexpr Rgb kSeen{0.09, 0.60, 0.26};
+constexpr Rgb kUnseen{0.87, 0.18, 0.16};
+constexpr Rgb kView{0.96, 0.65, 0.14};
+constexpr Rgb kCamera{0.13, 0.15, 0.19};
+constexpr Rgb kPlan{0.15, 0.42, 0.82};
+constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
+constexpr Rgb kText{0.13, 0.15, 0.19};
+constexpr Rgb kMutedText{0.38, 0.41, 0.46};
+constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
+
+constexpr double kViewAlpha = 0.28;
+constexpr const char* kFont = "sans-serif";
+
+// Caption rows, a spacer, then one row per legend entry (see drawPanel).
+enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
+constexpr int kCaptionRows = 6;
+constexpr int kLegendRows = 7;
+constexpr int kPanelRows = kCaptionRows + kLegendRows;
+
+struct CairoDeleter {
+  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
+  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, CairoDeleter>;
+using Context = std::unique_ptr<cairo_t, CairoDeleter>;
+
+void setColour(cairo_t* cr, Rgb c, double alpha = 1.0) {
+  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
+}
+
+enum class Align { Left, Centre, Right };
+
+// Text with its baseline at `at`; returns its advance width. The toy text API is enough for
+// one-line labels and needs no layout library.
+double text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour,
+            Align align = Align::Left, bool bold = false) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, s.c_str(), &extents);
+  const double shift = align == Align::Left     ? 0.0
+                       : align == Align::Centre ? extents.x_advance / 2.0
+                                                : extents.x_advance;
+  cairo_move_to(cr, at.x - shift, at.y);
+  setColour(cr, colour);
+  cairo_show_text(cr, s.c_str());
+  return extents.x_advance;
+}
+
+// Draws in image pixels; world points go through the layout's transform.
+class Painter {
+ public:
+  Painter(cairo_t* cr, const FrameLayout& layout) : cr_(cr), layout_(layout) {}
+
+  cairo_t* cr() const { return cr_; }
+  double em() const { return layout_.em; }
+  Vec2 image(Vec2 world) const { return layout_.toImage(world); }
+
+  void polylinePath(std::span<const Vec2> points) const {
+    if (points.empty()) return;
+    moveTo(points.front());
+    for (const Vec2& p : points.subspan(1)) lineTo(p);
+  }
+  void ringPath(std::span<const Vec2> ring) const {
+    polylinePath(ring);
+    cairo_close_path(cr_);
+  }
+  void linePath(Vec2 a, Vec2 b) const {
+    moveTo(a);
+    lineTo(b);
+  }
+  void circle(Vec2 centreImage, double radius) const {
+    cairo_new_sub_path(cr_);
+    cairo_arc(cr_, centreImage.x, centreImage.y, radius, 0.0, 2.0 * std::numbers::pi);
+  }
+  void fill(Rgb colour, double alpha = 1.0) const {
+    setColour(cr_, colour, alpha);
+    cairo_fill(cr_);
+  }
+  void stroke(Rgb colour, double widthEm, double alpha = 1.0) const {
+    setColour(cr_, colour, alpha);
+    cairo_set_line_width(cr_, widthEm * layout_.em);
+    cairo_stroke(cr_);
+  }
+
+ private:
+  void moveTo(Vec2 world) const {
+    const Vec2 p = image(world);
+    cairo_move_to(cr_, p.x, p.y);
+  }
+  void lineTo(Vec2 world) const {
+    const Vec2 p = image(world);
+    cairo_line_to(cr_, p.x, p.y);
+  }
+
+  cairo_t* cr_;
+  const FrameLayout& layout_;
+};
+
+// Image-space direction of a world heading (the image's y runs down).
+Vec2 imageHeading(double yaw) {
+  return {std::cos(yaw), -std::sin(yaw)};
+}
+
+void drawArena(const Painter& p, const kinematics::World& world) {
+  p.ringPath(world.boundary);
+  cairo_t* cr = p.cr();
+  setColour(cr, kFloor);
+  cairo_fill_preserve(cr);
+  p.stroke(kWall, 0.14);
+}
+
+// Thin dashed loops with an arrow in the direction of travel on the longest leg.
+void drawObjectPaths(const Painter& p, std::span<const ObjectPath> paths) {
+  cairo_t* cr = p.cr();
+  const double dash[] = {0.35 * p.em(), 0.25 * p.em()};
+  for (const ObjectPath& path : paths) {
+    if (path.waypoints.size() < 2) continue;
+    cairo_set_dash(cr, dash, 2, 0.0);
+    p.ringPath(path.waypoints);
+    p.stroke(kObjectPath, 0.09);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+  }
+}
+
+// Where an object path's label and arrow go: the middle of its longest leg, the direction of
+// travel there (image space), the point itself for an object turning in place.
+struct PathAnchor {
+  Vec2 point;     // image px
+  Vec2 direction;  // unit, image space; zero for a turning object
+};
+
+PathAnchor anchorOf(const Painter& p, const ObjectPath& path) {
+  const auto& w = path.waypoints;
+  if (w.size() < 2) return {p.image(w.front()), {}};
+  std::size_t best = 0;
+  double bestLength = -1.0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const double length = geometry::distance(w[i], w[(i + 1) % w.size()]);
+    if (length > bestLength) {
+      bestLength = length;
+      best = i;
+    }
+  }
+  const Vec2 a = p.image(w[best]), b = p.image(w[(best + 1) % w.size()]);
+  const double length = geometry::distance(a, b);
+  return {(a + b) * 0.5, length > 0.0 ? (b - a) / length : Vec2{}};
+}
+
+std::string speedLabel(const ObjectPath& path) {
+  std::string label;
+  if (path.velocity > 0.0) label = fmt::format("{:g} m/s", path.velocity);
+  if (path.angularVelocity != 0.0) {
+    if (!label.empty()) label += ", ";
+    label += fmt::format("{:g} rad/s", path.angularVelocity);
+  }
+  return label;
+}
+
+// Drawn last in the world so no shape hides a speed: text on a pale box, beside the path.
+void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
+  cairo_t* cr = p.cr();
+  const double em = p.em(), size = 0.78 * em;
+  for (const ObjectPath& path : paths) {
+    const PathAnchor anchor = anchorOf(p, path);
+    const Vec2 d = anchor.direction;
+    if (d != Vec2{}) {  // arrowhead
+      const Vec2 n{-d.y, d.x};
+      const Vec2 tip = anchor.point + d * (0.35 * em);
+      const Vec2 back = anchor.point - d * (0.35 * em);
+      cairo_move_to(cr, tip.x, tip.y);
+      cairo_line_to(cr, back.x + n.x * 0.3 * em, back.y + n.y * 0.3 * em);
+      cairo_line_to(cr, back.x - n.x * 0.3 * em, back.y - n.y * 0.3 * em);
+      cairo_close_path(cr);
+      p.fill(kObjectPath);
+    }
+    // Beside the path on its left, or above a turning object's centre.
+    const Vec2 side = d != Vec2{} ? Vec2{d.y, -d.x} : Vec2{0.0, -1.0};
+    const Vec2 centre = anchor.point + side * (0.95 * em);
+    const std::string label = speedLabel(path);
+    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, label.c_str(), &e);
+    const double pad = 0.18 * em;
+    cairo_rectangle(cr, centre.x - e.x_advance / 2 - pad, centre.y - 0.5 * size - pad,
+                    e.x_advance + 2 * pad, size + 2 * pad);
+    p.fill(kFloor, 0.8);
+    text(cr, {centre.x, centre.y + 0.36 * size}, label, size, kMutedText, Align::Centre);
+  }
+}
+
+void drawViews(const Painter& p, std::span<const CameraView> cameras) {
+  for (const CameraView& c : cameras) {
+    if (c.view.size() < 3) continue;
+    p.ringPath(c.view);
+    cairo_t* cr = p.cr();
+    setColour(cr, kView, kViewAlpha);
+    cairo_fill_preserve(cr);
+    p.stroke(kView, 0.07, 0.9);
+  }
+}
+
+void drawObjects(const Painter& p, const kinematics::World& world) {
+  for (const auto& o : world.obstacles) p.ringPath(o);
+  p.fill(kObstacle);
+  for (const auto& t : world.targets) p.ringPath(t);
+  p.fill(kTarget);
+}
+
+// Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
+void drawSegments(const Painter& p, std::span<const visibility::Segment> segments) {
+  cairo_t* cr = p.cr();
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const bool seen : {false, true}) {
+    for (const auto& s : segments) {
+      if ((s.visibleBy != 0) == seen) p.linePath(s.a, s.b);
+    }
+    p.stroke(seen ? kSeen : kUnseen, 0.3);
+  }
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+}
+
+// A ring with a tick in the goal's heading.
+void drawGoalMarker(cairo_t* cr, Vec2 at, double yaw, double em) {
+  const Vec2 tip = at + imageHeading(yaw) * (1.0 * em);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, at.x, at.y, 0.42 * em, 0.0, 2.0 * std::numbers::pi);
+  cairo_move_to(cr, at.x, at.y);
+  cairo_line_to(cr, tip.x, tip.y);
+}
+
+void drawPlans(const Painter& p, std::span<const CameraView> cameras) {
+  cairo_t* cr = p.cr();
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const CameraView& c : cameras) {
+    if (c.plan.size() >= 2) {
+      p.polylinePath(c.plan);
+      p.stroke(kPlan, 0.14, 0.9);
+    }
+    if (c.goal) {
+      drawGoalMarker(cr, p.image(c.goal->position()), c.goal->yaw, p.em());
+      p.stroke(kPlan, 0.14);
+    }
+  }
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+}
+
+// A dark disc with the camera's number, and a stub in its heading.
+void drawCameraMarker(cairo_t* cr, Vec2 at, double yaw, const std::string& label, double em) {
+  const Vec2 tip = at + imageHeading(yaw) * (1.25 * em);
+  cairo_move_to(cr, at.x, at.y);
+  cairo_line_to(cr, tip.x, tip.y);
+  setColour(cr, kCamera);
+  cairo_set_line_width(cr, 0.18 * em);
+  cairo_stroke(cr);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, at.x, at.y, 0.6 * em, 0.0, 2.0 * std::numbers::pi);
+  setColour(cr, kCamera);
+  cairo_fill_preserve(cr);
+  setColour(cr, kFloor);
+  cairo_set_line_width(cr, 0.1 * em);
+  cairo_stroke(cr);
+  if (!label.empty()) {
+    text(cr, {at.x, at.y + 0.25 * em}, label, 0.68 * em, kFloor, Align::Centre, true);
+  }
+}
+
+void drawCameras(const Painter& p, std::span<const CameraView> cameras) {
+  for (std::size_t j = 0; j < cameras.size(); ++j) {
+    const geometry::Pose& pose = cameras[j].pose;
+    drawCameraMarker(p.cr(), p.image(pose.position()), pose.yaw, std::to_string(j), p.em());
+  }
+}
+
+// "coverage   65.6 %  [=====     ]": a label, its value and a bar of it.
+void drawMeter(cairo_t* cr, Vec2 baseline, const std::string& label, double value, Rgb colour,
+               double em) {
+  text(cr, baseline, label, 0.95 * em, kText);
+  text(cr, {baseline.x + 10.2 * em, baseline.y}, fmt::format("{:.1f} %", 100.0 * value),
+       0.95 * em, kText, Align::Right, true);
+  const double x = baseline.x + 10.8 * em, y = baseline.y - 0.62 * em;
+  const double width = 4.2 * em, height = 0.55 * em;
+  cairo_rectangle(cr, x, y, width, height);
+  setColour(cr, kBarTrack);
+  cairo_fill(cr);
+  cairo_rectangle(cr, x, y, width * std::clamp(value, 0.0, 1.0), height);
+  setColour(cr, colour);
+  cairo_fill(cr);
+}
+
+// The legend's sample of each thing, in a box 2 em wide centred on the row's middle.
+void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
+  const Vec2 centre = middleLeft + Vec2{1.0 * em, 0.0};
+  const Vec2 left = middleLeft + Vec2{0.15 * em, 0.0}, right = middleLeft + Vec2{1.85 * em, 0.0};
+  const auto box = [&](Rgb fill) {
+    cairo_rectangle(cr, left.x, centre.y - 0.45 * em, right.x - left.x, 0.9 * em);
+    setColour(cr, fill);
+    cairo_fill(cr);
+  };
+  const auto line = [&](Rgb colour, double width) {
+    cairo_move_to(cr, left.x, left.y);
+    cairo_line_to(cr, right.x, right.y);
+    setColour(cr, colour);
+    cairo_set_line_width(cr, width * em);
+    cairo_stroke(cr);
+  };
+  switch (entry) {
+    case Legend::Seen:
+      line(kSeen, 0.3);
+      break;
+    case Legend::Unseen:
+      line(kUnseen, 0.3);
+      break;
+    case Legend::Target:
+      box(kTarget);
+      break;
+    case Legend::Obstacle:
+      box(kObstacle);
+      break;
+    case Legend::Camera: {
+      const Vec2 apex = left + Vec2{0.1 * em, 0.0};
+      cairo_move_to(cr, apex.x, apex.y);
+      cairo_line_to(cr, right.x + 0.15 * em, centre.y - 0.6 * em);
+      cairo_line_to(cr, right.x + 0.15 * em, centre.y + 0.6 * em);
+      cairo_close_path(cr);
+      setColour(cr, kView, kViewAlpha + 0.1);
+      cairo_fill(cr);
+      drawCameraMarker(cr, apex + Vec2{0.35 * em, 0.0}, 0.0, "", 0.6 * em);
+      break;
+    }
+    case Legend::Plan:
+      cairo_move_to(cr, left.x, left.y);
+      cairo_line_to(cr, right.x - 0.4 * em, right.y);
+      drawGoalMarker(cr, right - Vec2{0.4 * em, 0.0}, std::numbers::pi / 2.0, 0.8 * em);
+      setColour(cr, kPlan);
+      cairo_set_line_width(cr, 0.14 * em);
+      cairo_stroke(cr);
+      break;
+    case Legend::ObjectPath: {
+      const double dash[] = {0.35 * em, 0.25 * em};
+      cairo_set_dash(cr, dash, 2, 0.0);
+      line(kObjectPath, 0.09);
+      cairo_set_dash(cr, nullptr, 0, 0.0);
+      break;
+    }
+  }
+}
+
+constexpr const char* legendText(Legend entry) {
+  switch (entry) {
+    case Legend::Seen:
+      return "target boundary seen";
+    case Legend::Unseen:
+      return "target boundary unseen";
+    case Legend::Target:
+      return "target";
+    case Legend::Obstacle:
+      return "obstacle";
+    case Legend::Camera:
+      return "camera and what it sees";
+    case Legend::Plan:
+      return "planned path and goal";
+    case Legend::ObjectPath:
+      return "object path and speed";
+  }
+  return "";
+}
+
+void drawPanel(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+  const double em = layout.em;
+  // Baseline of a row: text sits in the lower part of its 1.6 em.
+  const auto baseline = [&](int row) { return layout.rowOrigin(row) + Vec2{0.0, 1.15 * em}; };
+  text(cr, baseline(0), caption.title, 1.25 * em, kText, Align::Left, true);
+  text(cr, baseline(1), caption.subtitle, 0.9 * em, kMutedText);
+  text(cr, baseline(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
+  drawMeter(cr, baseline(3), "coverage", caption.coverage, kSeen, em);
+  drawMeter(cr, baseline(4), "utilization", caption.utilization, kView, em);
+  for (int i = 0; i < kLegendRows; ++i) {
+    const auto entry = static_cast<Legend>(i);
+    const int row = kCaptionRows + i;
+    drawLegendSample(cr, entry, layout.rowOrigin(row) + Vec2{0.0, 0.8 * em}, em);
+    text(cr, baseline(row) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
+  }
+}
+
+FrameLayout layoutFor(const Frame& frame, int width, int height) {
+  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
+}
+
+// The one drawing routine behind every surface.
+void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
+  const FrameLayout layout = layoutFor(frame, width, height);
+  cairo_save(cr);
+  setColour(cr, kPage);
+  cairo_paint(cr);
+
+  cairo_save(cr);  // the world is clipped to its area: it never runs into the panel
+  const PixelRect& area = layout.worldArea;
+  cairo_rectangle(cr, area.x, area.y, area.width, area.height);
+  cairo_clip(cr);
+  const Painter painter(cr, layout);
+  drawArena(painter, frame.world);
+  drawObjectPaths(painter, frame.paths);
+  drawViews(painter, frame.cameras);
+  drawObjects(painter, frame.world);
+  drawSegments(painter, frame.segments);
+  drawPlans(painter, frame.cameras);
+  drawCameras(painter, frame.cameras);
+  drawPathLabels(painter, frame.paths);
+  cairo_restore(cr);
+
+  cairo_rectangle(cr, layout.panel.x, layout.panel.y, layout.panel.width, layout.panel.height);
+  cairo_clip(cr);
+  drawPanel(cr, layout, frame.caption);
+  cairo_restore(cr);
+  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("drawing a frame failed: ") +
+                             cairo_status_to_string(cairo_status(cr)));
+  }
+}
+
+void writeSvg(const Frame& frame, int width, int height, const std::filesystem::path& file) {
+  // SVG units are points; one point per pixel keeps the SVG the same size as the PNG.
+  Surface surface(cairo_svg_surface_create(file.c_str(), width, height));
+  const auto check = [&] {
+    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+      throw InputError(file.string() + ": cannot write: " +
+                       cairo_status_to_string(cairo_surface_status(surface.get())));
+    }
+  };
+  check();
+  {
+    const Context cr(cairo_create(surface.get()));
+    drawFrame(cr.get(), frame, width, height);
+  }
+  cairo_surface_finish(surface.get());
+  check();
+}
+
+}  // namespace
+
+ImageFormat imageFormatOf(const std::filesystem::path& file) {
+  const std::string ext = lowercaseExtension(file);
+  if (ext == ".png") return ImageFormat::Png;
+  if (ext == ".svg") return ImageFormat::Svg;
+  throw InputError(file.string() + ": unknown image format '" + file.extension().string() +
+                   "' (use .png or .svg)");
+}
+
+struct FrameRenderer::Raster {
+  Surface surface;
+  Context cr;
+};
+
+FrameRenderer::FrameRenderer(int width, int height) : width_(width), height_(height) {
+  constexpr int kMin = 16, kMax = 8192;
+  if (width < kMin || width > kMax || height < kMin || height > kMax) {
+    throw std::invalid_argument(
+        fmt::format("frame size {}x{} outside [{}, {}]", width, height, kMin, kMax));
+  }
+}
+
+FrameRenderer::~FrameRenderer() = default;
+
+FrameLayout FrameRenderer::layoutOf(const Frame& frame) const {
+  return layoutFor(frame, width_, height_);
+}
+
+RasterImage FrameRenderer::rasterize(const Frame& frame) {
+  if (!raster_) {
+    Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width_, height_));
+    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+      throw std::runtime_error(std::string("cannot create a frame: ") +
+                               cairo_status_to_string(cairo_surface_status(surface.get())));
+    }
+    Context cr(cairo_create(surface.get()));
+    raster_ = std::make_unique<Raster>(Raster{std::move(surface), std::move(cr)});
+  }
+  drawFrame(raster_->cr.get(), frame, width_, height_);
+  cairo_surface_flush(raster_->surface.get());
+  cairo_surface_t* s = raster_->surface.get();
+  return {cairo_image_surface_get_data(s), width_, height_, cairo_image_surface_get_stride(s)};
+}
+
+void FrameRenderer::write(const Frame& frame, const std::filesystem::path& file) {
+  if (imageFormatOf(file) == ImageFormat::Svg) {
+    writeSvg(frame, width_, height_, file);
+    return;
+  }
+  rasterize(frame);
+  const cairo_status_t status = cairo_surface_write_to_png(raster_->surface.get(), file.c_str());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw InputError(file.string() + ": cannot write: " + cairo_status_to_string(status));
+  }
+}
+
+}  // namespace camcov::viz

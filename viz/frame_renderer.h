@@ -1,0 +1,47 @@
+#pragma once
+// Draws a Frame with Cairo (SPEC section 6): one drawing routine for the raster (PNG, video)
+// and the vector (SVG) surface, so a PNG and an SVG of the same frame show the same thing.
+// Cairo stays behind this header: nothing outside viz/ includes it.
+#include <filesystem>
+#include <memory>
+
+#include "viz/frame.h"
+#include "viz/frame_layout.h"
+#include "viz/raster_image.h"
+
+namespace camcov::viz {
+
+enum class ImageFormat { Png, Svg };
+
+// From the file's extension, .png or .svg in any case; InputError for anything else.
+ImageFormat imageFormatOf(const std::filesystem::path& file);
+
+class FrameRenderer {
+ public:
+  // Frames of width × height px, each in [16, 8192]; std::invalid_argument otherwise.
+  FrameRenderer(int width, int height);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Where `frame` goes in the image: the world's transform, the caption and legend panel.
+  FrameLayout layoutOf(const Frame& frame) const;
+
+  // Draws into the renderer's own raster, which is reused by the next call (the video path:
+  // no allocation per frame).
+  RasterImage rasterize(const Frame& frame);
+
+  // Writes a PNG or an SVG, chosen by imageFormatOf(file). InputError if the file cannot be
+  // written (e.g. its folder does not exist).
+  void write(const Frame& frame, const std::filesystem::path& file);
+
+ private:
+  struct Raster;
+  int width_;
+  int height_;
+  std::unique_ptr<Raster> raster_;  // created on first use
+};
+
+}  // namespace camcov::viz
