@@ -17,7 +17,8 @@ function(camcov_add_test)
   target_link_libraries(test_${ARG_NAME} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(test_${ARG_NAME} PRIVATE
     CAMCOV_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data"
-    CAMCOV_SCENES_DIR="${PROJECT_SOURCE_DIR}/scenes")
+    CAMCOV_SCENES_DIR="${PROJECT_SOURCE_DIR}/scenes"
+    CAMCOV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_${ARG_NAME} DISCOVERY_TIMEOUT 60
     PROPERTIES ENVIRONMENT "CAMCOV_BINARY=$<TARGET_FILE:camcov>")
 endfunction()

@@ -14,48 +14,73 @@ int ceilDiv(int a, int b) {
   return (a + b - 1) / b;
 }
 
-FrameLayout panelRight(double width, double height, const geometry::Box& world, int rows,
+// Pixels the world takes in `area`, margins included.
+geometry::Vec2 worldSize(const geometry::Box& world, const PixelRect& area, double margin) {
+  const double scale = WorldToImage(world, area, margin).scale();
+  return (world.max - world.min) * scale + geometry::Vec2{2.0 * margin, 2.0 * margin};
+}
+
+// One column, the legend a blank row below the caption; more columns only if it is too tall.
+FrameLayout panelRight(double width, double height, const geometry::Box& world, PanelRows rows,
                        double em) {
   FrameLayout l;
   l.em = em;
   const double pad = em;
+  l.legendStart = rows.caption + 1;
   l.rowsPerColumn = std::max(1, static_cast<int>((height - 2.0 * pad) / l.rowHeight()));
-  l.columns = ceilDiv(rows, l.rowsPerColumn);
+  l.columns = ceilDiv(l.legendStart + rows.legend, l.rowsPerColumn);
   const double panelWidth = std::min(width, l.columns * l.columnWidth() + 2.0 * pad);
-  l.panel = {width - panelWidth, 0.0, panelWidth, height};
-  l.worldArea = {0.0, 0.0, width - panelWidth, height};
+  // The world and the panel side by side, centred together rather than the world alone, so
+  // the panel sits next to the drawing instead of at the frame's far edge.
+  const PixelRect available{0.0, 0.0, width - panelWidth, height};
+  const double used = std::min(available.width, worldSize(world, available, em).x);
+  const double left = 0.5 * (width - used - panelWidth);
+  l.worldArea = {left, 0.0, used, height};
+  l.panel = {left + used, 0.0, panelWidth, height};
   l.toImage = WorldToImage(world, l.worldArea, em);
   return l;
 }
 
-FrameLayout panelBottom(double width, double height, const geometry::Box& world, int rows,
+// The caption in the first column, the legend in the columns beside it.
+FrameLayout panelBottom(double width, double height, const geometry::Box& world, PanelRows rows,
                         double em) {
   FrameLayout l;
   l.em = em;
   const double pad = em;
-  l.columns = std::max(1, static_cast<int>((width - 2.0 * pad) / l.columnWidth()));
-  l.rowsPerColumn = ceilDiv(rows, l.columns);
+  const int fit = std::max(1, static_cast<int>((width - 2.0 * pad) / l.columnWidth()));
+  if (fit == 1) {
+    l.legendStart = rows.caption + 1;
+    l.rowsPerColumn = l.legendStart + rows.legend;
+  } else {
+    l.rowsPerColumn = std::max(rows.caption, ceilDiv(rows.legend, fit - 1));
+    l.legendStart = l.rowsPerColumn;
+  }
+  l.columns = ceilDiv(l.legendStart + rows.legend, l.rowsPerColumn);
   const double panelHeight = std::min(height, l.rowsPerColumn * l.rowHeight() + 2.0 * pad);
-  l.panel = {0.0, height - panelHeight, width, panelHeight};
-  l.worldArea = {0.0, 0.0, width, height - panelHeight};
+  const PixelRect available{0.0, 0.0, width, height - panelHeight};
+  const double used = std::min(available.height, worldSize(world, available, em).y);
+  const double top = 0.5 * (height - used - panelHeight);
+  l.worldArea = {0.0, top, width, used};
+  l.panel = {0.0, top + used, width, panelHeight};
   l.toImage = WorldToImage(world, l.worldArea, em);
   return l;
 }
 
 }  // namespace
 
-geometry::Vec2 FrameLayout::rowOrigin(int row) const {
+geometry::Vec2 FrameLayout::gridRow(int row) const {
   const int column = row / rowsPerColumn;
   return {panel.x + em + column * columnWidth(),
           panel.y + em + (row % rowsPerColumn) * rowHeight()};
 }
 
-FrameLayout layoutFrame(int width, int height, const geometry::Box& world, int panelRows) {
+FrameLayout layoutFrame(int width, int height, const geometry::Box& world, PanelRows rows) {
   const double w = width, h = height;
   const double em = fontSize(w, h);
-  const int rows = std::max(1, panelRows);
-  FrameLayout right = panelRight(w, h, world, rows, em);
-  FrameLayout bottom = panelBottom(w, h, world, rows, em);
+  rows.caption = std::max(1, rows.caption);
+  rows.legend = std::max(0, rows.legend);
+  const FrameLayout right = panelRight(w, h, world, rows, em);
+  const FrameLayout bottom = panelBottom(w, h, world, rows, em);
   return right.toImage.scale() >= bottom.toImage.scale() ? right : bottom;
 }
 

@@ -9,6 +9,11 @@
 
 namespace camcov::viz {
 
+struct PanelRows {
+  int caption = 1;
+  int legend = 0;
+};
+
 struct FrameLayout {
   static constexpr double kRowHeight = 1.6;     // em, one caption or legend row
   static constexpr double kColumnWidth = 16.0;  // em, one column of panel rows
@@ -16,19 +21,24 @@ struct FrameLayout {
   double em = 16.0;  // font size, px: every length in a frame is a multiple of it
   PixelRect worldArea;
   PixelRect panel;
-  // The panel's rows run top to bottom, then on in the next column.
+  // The panel is a grid of rows, filled top to bottom, then on in the next column. The
+  // legend starts after a blank row below the caption, or at the top of the next column.
   int columns = 1;
   int rowsPerColumn = 1;
+  int legendStart = 0;  // grid row of the legend's first row
   WorldToImage toImage;
 
   double rowHeight() const { return kRowHeight * em; }
   double columnWidth() const { return kColumnWidth * em; }
-  // Top-left corner of panel row `row`.
-  geometry::Vec2 rowOrigin(int row) const;
+  // Top-left corners of caption row i and legend row i.
+  geometry::Vec2 captionRow(int i) const { return gridRow(i); }
+  geometry::Vec2 legendRow(int i) const { return gridRow(legendStart + i); }
+
+ private:
+  geometry::Vec2 gridRow(int row) const;
 };
 
-// For a frame of width × height px showing `world` (the boundary's box) and `panelRows` rows
-// of caption and legend.
-FrameLayout layoutFrame(int width, int height, const geometry::Box& world, int panelRows);
+// For a frame of width × height px showing `world` (the boundary's box) and `rows`.
+FrameLayout layoutFrame(int width, int height, const geometry::Box& world, PanelRows rows);
 
 }  // namespace camcov::viz

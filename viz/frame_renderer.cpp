@@ -42,11 +42,9 @@ constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
 constexpr double kViewAlpha = 0.28;
 constexpr const char* kFont = "sans-serif";
 
-// Caption rows, a spacer, then one row per legend entry (see drawPanel).
+// The caption's rows are drawPanel's; the legend has one row per entry.
 enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
-constexpr int kCaptionRows = 6;
-constexpr int kLegendRows = 7;
-constexpr int kPanelRows = kCaptionRows + kLegendRows;
+constexpr PanelRows kPanelRows{5, 7};
 
 struct CairoDeleter {
   void operator()(cairo_t* cr) const { cairo_destroy(cr); }
@@ -278,21 +276,24 @@ void drawPlans(const Painter& p, std::span<const CameraView> cameras) {
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
 }
 
-// A dark disc with the camera's number, and a stub in its heading.
+// A dark disc with the camera's number and a nose in its heading: the heading still shows
+// when the camera sees nothing and has no view to draw.
 void drawCameraMarker(cairo_t* cr, Vec2 at, double yaw, const std::string& label, double em) {
-  const Vec2 tip = at + imageHeading(yaw) * (1.25 * em);
-  cairo_move_to(cr, at.x, at.y);
-  cairo_line_to(cr, tip.x, tip.y);
-  setColour(cr, kCamera);
-  cairo_set_line_width(cr, 0.18 * em);
-  cairo_stroke(cr);
+  const Vec2 d = imageHeading(yaw), n{-d.y, d.x};
+  const Vec2 tip = at + d * (1.3 * em);
+  const Vec2 base = at + d * (0.3 * em);
+  cairo_move_to(cr, tip.x, tip.y);
+  cairo_line_to(cr, base.x + n.x * 0.5 * em, base.y + n.y * 0.5 * em);
+  cairo_line_to(cr, base.x - n.x * 0.5 * em, base.y - n.y * 0.5 * em);
+  cairo_close_path(cr);
   cairo_new_sub_path(cr);
   cairo_arc(cr, at.x, at.y, 0.6 * em, 0.0, 2.0 * std::numbers::pi);
-  setColour(cr, kCamera);
-  cairo_fill_preserve(cr);
+  // A pale halo first, the fill over it: one outline around disc and nose together.
   setColour(cr, kFloor);
-  cairo_set_line_width(cr, 0.1 * em);
-  cairo_stroke(cr);
+  cairo_set_line_width(cr, 0.2 * em);
+  cairo_stroke_preserve(cr);
+  setColour(cr, kCamera);
+  cairo_fill(cr);
   if (!label.empty()) {
     text(cr, {at.x, at.y + 0.25 * em}, label, 0.68 * em, kFloor, Align::Centre, true);
   }
@@ -402,17 +403,18 @@ constexpr const char* legendText(Legend entry) {
 void drawPanel(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
   // Baseline of a row: text sits in the lower part of its 1.6 em.
-  const auto baseline = [&](int row) { return layout.rowOrigin(row) + Vec2{0.0, 1.15 * em}; };
-  text(cr, baseline(0), caption.title, 1.25 * em, kText, Align::Left, true);
-  text(cr, baseline(1), caption.subtitle, 0.9 * em, kMutedText);
-  text(cr, baseline(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
-  drawMeter(cr, baseline(3), "coverage", caption.coverage, kSeen, em);
-  drawMeter(cr, baseline(4), "utilization", caption.utilization, kView, em);
-  for (int i = 0; i < kLegendRows; ++i) {
+  const Vec2 toBaseline{0.0, 1.15 * em};
+  const auto line = [&](int row) { return layout.captionRow(row) + toBaseline; };
+  text(cr, line(0), caption.title, 1.25 * em, kText, Align::Left, true);
+  text(cr, line(1), caption.subtitle, 0.9 * em, kMutedText);
+  text(cr, line(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
+  drawMeter(cr, line(3), "coverage", caption.coverage, kSeen, em);
+  drawMeter(cr, line(4), "utilization", caption.utilization, kView, em);
+  for (int i = 0; i < kPanelRows.legend; ++i) {
     const auto entry = static_cast<Legend>(i);
-    const int row = kCaptionRows + i;
-    drawLegendSample(cr, entry, layout.rowOrigin(row) + Vec2{0.0, 0.8 * em}, em);
-    text(cr, baseline(row) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
+    const Vec2 row = layout.legendRow(i);
+    drawLegendSample(cr, entry, row + Vec2{0.0, 0.8 * em}, em);
+    text(cr, row + toBaseline + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
   }
 }
 

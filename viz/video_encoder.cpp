@@ -112,6 +112,8 @@ struct VideoEncoder::Impl {
     AVDictionary* options = nullptr;
     av_dict_set(&options, "preset", settings.preset.c_str(), 0);
     av_dict_set(&options, "crf", std::to_string(settings.crf).c_str(), 0);
+    if (const char* e = std::getenv("XP")) av_dict_set(&options, "x264-params", e, 0);  // EXPERIMENT
+    if (const char* e = std::getenv("XPRESET")) av_dict_set(&options, "preset", e, 0);  // EXPERIMENT
     const int opened = avcodec_open2(&c, x264, &options);
     av_dict_free(&options);
     check(opened, "opening libx264");

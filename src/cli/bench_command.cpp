@@ -18,6 +18,7 @@
 #include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
+#include "util/natural_order.h"
 
 namespace camcov::cli {
 namespace {
@@ -27,12 +28,13 @@ namespace fs = std::filesystem;
 struct BenchOptions {
   std::vector<std::string> scenes{"scenes"};
   std::string methods = "paper,local";
-  std::uint64_t seeds = 3;
+  std::uint64_t seeds = 5;
   double duration = -1.0;
   unsigned jobs = 0;
   std::string out = "bench-results";
   std::string shard;
   bool force = false;
+  bool noReport = false;
   ParameterOptions parameters;
   std::vector<std::string> argv;
 };
@@ -55,7 +57,9 @@ std::vector<fs::path> sceneFiles(const std::vector<std::string>& inputs) {
       for (const auto& e : fs::directory_iterator(input)) {
         if (e.path().extension() == ".json") found.push_back(e.path());
       }
-      std::sort(found.begin(), found.end());
+      std::sort(found.begin(), found.end(), [](const fs::path& a, const fs::path& b) {
+        return naturalLess(a.filename().string(), b.filename().string());
+      });
       if (found.empty()) throw InputError(input + ": no scene files (*.json) in this folder");
       files.insert(files.end(), found.begin(), found.end());
     } else if (fs::exists(input)) {
@@ -149,7 +153,7 @@ int bench(const BenchOptions& o) {
         shard.index + 1, shard.count, mine.size(), failed);
     return failed ? 1 : 0;
   }
-  return writeBenchOutputs(folder, manifest, run.outcomes);
+  return writeBenchOutputs(folder, manifest, run.outcomes, !o.noReport);
 }
 
 }  // namespace
@@ -167,6 +171,7 @@ Registration addBenchCommand(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "results folder")->capture_default_str();
   cmd->add_option("--shard", o->shard, "run only part K of N of the jobs (K/N, 1-based)");
   cmd->add_flag("--force", o->force, "run again jobs made with other parameters");
+  cmd->add_flag("--no-report", o->noReport, "do not write report.html");
   o->parameters.addTo(*cmd);
   return {cmd, [o] {
             o->argv = invocation();

@@ -5,12 +5,13 @@
 #include <iostream>
 #include <map>
 
+#include "reports/report_builder.h"
 #include "results/ompl_benchmark_log.h"
 
 namespace camcov::cli {
 
 int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
-                      const std::vector<results::JobOutcome>& outcomes) {
+                      const std::vector<results::JobOutcome>& outcomes, bool report) {
   const results::BatchSummary summary = results::summarize(outcomes);
   folder.writeSummary(summary);
   const auto logs = results::writeOmplBenchmarkLogs(folder, manifest.parameters);
@@ -40,6 +41,10 @@ int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchMa
   std::cout << fmt::format(
       "wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl\n",
       folder.root().string(), logs.size(), folder.root().string());
+  if (report) {
+    reports::writeReport(folder.root(), folder.root() / "report.html");
+    std::cout << fmt::format("wrote {}\n", (folder.root() / "report.html").string());
+  }
   return summary.failures.empty() ? 0 : 1;
 }
 

@@ -8,8 +8,8 @@
 
 namespace camcov::cli {
 
-// Returns the exit code: 0, or 1 if some job failed.
+// Returns the exit code: 0, or 1 if some job failed. With `report`, also writes report.html.
 int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
-                      const std::vector<results::JobOutcome>& outcomes);
+                      const std::vector<results::JobOutcome>& outcomes, bool report);
 
 }  // namespace camcov::cli

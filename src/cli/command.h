@@ -29,5 +29,6 @@ Registration addRenderCommand(CLI::App& app);
 Registration addVideoCommand(CLI::App& app);
 Registration addBenchCommand(CLI::App& app);
 Registration addMergeCommand(CLI::App& app);
+Registration addReportCommand(CLI::App& app);
 
 }  // namespace camcov::cli

@@ -18,6 +18,7 @@ namespace fs = std::filesystem;
 struct MergeOptions {
   std::vector<std::string> inputs;
   std::string out;
+  bool noReport = false;
 };
 
 int merge(const MergeOptions& o) {
@@ -54,7 +55,7 @@ int merge(const MergeOptions& o) {
   manifest->command = invocation();
   target.writeManifest(*manifest);
   target.writeTimings(timings);
-  return writeBenchOutputs(target, *manifest, target.allJobs());
+  return writeBenchOutputs(target, *manifest, target.allJobs(), !o.noReport);
 }
 
 }  // namespace
@@ -67,6 +68,7 @@ Registration addMergeCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out,-o", o->out, "the combined folder (may be one of the inputs)")->required();
+  cmd->add_flag("--no-report", o->noReport, "do not write report.html");
   return {cmd, [o] { return merge(*o); }};
 }
 

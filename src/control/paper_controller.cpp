@@ -60,15 +60,20 @@ void PaperController::globalOptimization(const Observation& observation) {
     raise(observation.time, "global", -1, "no valid pose found for some camera");
     return;
   }
-  const bool better = improves(result->reward, current, params_.global.tau);
+  const Assignment assignment = assign(observation, result->poses);
+  double candidate = result->reward;
+  if (params_.global.horizon > 0.0) {
+    candidate *= std::max(0.0, 1.0 - assignment.travelTime / params_.global.horizon);
+  }
+  const bool better = improves(candidate, current, params_.global.tau);
   raise(observation.time, "global", -1,
-        fmt::format("global reward {:.4f} vs current {:.4f}: {}", result->reward, current,
-                    better ? "replan" : "keep"));
-  if (better) assignAndPlan(observation, result->poses);
+        fmt::format("global reward {:.4f} (travel {:.1f} s) vs current {:.4f}: {}", result->reward,
+                    assignment.travelTime, current, better ? "replan" : "keep"));
+  if (better) plan(observation, result->poses, assignment);
 }
 
-void PaperController::assignAndPlan(const Observation& observation,
-                                    const std::vector<geometry::Pose>& goals) {
+PaperController::Assignment PaperController::assign(
+    const Observation& observation, const std::vector<geometry::Pose>& goals) const {
   // Section V-B: estimated travel time, obstacles ignored.
   const std::size_t m = goals.size();
   std::vector<double> cost(m * m);
@@ -83,14 +88,22 @@ void PaperController::assignAndPlan(const Observation& observation,
       cost[j * m + g] = std::max(travel, turn);
     }
   }
-  const std::vector<int> assignment =
-      planners::solveAssignment(cost, static_cast<int>(m), static_cast<int>(m));
+  Assignment result;
+  result.goalOf = planners::solveAssignment(cost, static_cast<int>(m), static_cast<int>(m));
+  for (std::size_t j = 0; j < m; ++j) {
+    result.travelTime = std::max(result.travelTime, cost[j * m + result.goalOf[j]]);
+  }
+  return result;
+}
 
+void PaperController::plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
+                           const Assignment& assignment) {
+  const std::size_t m = goals.size();
   // Section V-C: one roadmap for this planning event, queried by every camera.
   roadmap_ = std::make_unique<planners::Roadmap>(observation.world, params_, scene_.fovHalfAngle,
                                                  random_.fork());
   for (std::size_t j = 0; j < m; ++j) {
-    const geometry::Pose& target = goals[assignment[j]];
+    const geometry::Pose& target = goals[assignment.goalOf[j]];
     auto path = roadmap_->query(observation.cameras[j], target);
     if (!path) {
       executors_[j].stop();

@@ -40,8 +40,15 @@ class PaperController final : public Controller {
   static bool improves(double candidate, double current, double tau);
 
  private:
+  struct Assignment {
+    std::vector<int> goalOf;  // camera j goes to goals[goalOf[j]]
+    double travelTime = 0.0;  // the largest estimated travel time, s
+  };
+
   void globalOptimization(const Observation& observation);
-  void assignAndPlan(const Observation& observation, const std::vector<geometry::Pose>& goals);
+  Assignment assign(const Observation& observation, const std::vector<geometry::Pose>& goals) const;
+  void plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
+            const Assignment& assignment);
   void refineGoals(const Observation& observation);
   void raise(double t, std::string kind, int camera, std::string detail,
              std::vector<geometry::Pose> path = {});

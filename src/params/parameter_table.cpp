@@ -52,6 +52,11 @@ constexpr std::array kTable{
                                         "replan only if the global reward exceeds the current "
                                         "one by this factor",
                                         1, kInf),
+    row<&P::global, &GlobalParams::horizon>(
+        "global.horizon", "H", "s",
+        "our extension, 0 = off (the paper): discount the global reward by the travel time "
+        "to the goals, reward · max(0, 1 − travel / H), before comparing it with τ · current",
+        0, kInf),
     row<&P::local, &LocalParams::epsilon>("local.epsilon", "ε", "m | rad",
                                           "step of the numerical gradient of the reward", 1e-12, 1),
     row<&P::local, &LocalParams::alpha>("local.alpha", "α", "m² per unit reward",

@@ -18,6 +18,11 @@ struct GlobalParams {
   int K = 500;       // K, samples per camera
   double T1 = 5.0;   // T1, s, period of global optimization
   double tau = 1.2;  // τ, factor by which the global reward must beat the current one
+  // Our extension (0 = the paper's rule): H, s. The global reward is discounted by the time
+  // the slowest camera needs to reach its goal, reward · max(0, 1 − travel / H), before the
+  // comparison with τ · current, so slow cameras do not chase goals that will have moved on
+  // by the time they arrive (it costs static scenes with slow cameras; see the docs).
+  double horizon = 0.0;
 };
 
 // Local optimization, gradient ascent (section V-E).

@@ -7,6 +7,8 @@
 #include <limits>
 #include <map>
 
+#include "util/natural_order.h"
+
 namespace camcov::results {
 
 namespace {
@@ -24,15 +26,28 @@ nlohmann::json finiteOrNull(double v) {
 
 BatchSummary summarize(std::vector<JobOutcome> outcomes) {
   std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
-    return std::tie(a.scene, a.method, a.seed) < std::tie(b.scene, b.method, b.seed);
+    if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
+    return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
   });
   BatchSummary summary;
-  std::map<std::pair<std::string, std::string>, std::vector<const JobOutcome*>> groups;
+  // Scenes in natural order ("dynamic2" before "dynamic10"), then methods by name.
+  struct SceneMethodLess {
+    bool operator()(const std::pair<std::string, std::string>& a,
+                    const std::pair<std::string, std::string>& b) const {
+      if (a.first != b.first) return naturalLess(a.first, b.first);
+      return a.second < b.second;
+    }
+  };
+  std::map<std::pair<std::string, std::string>, std::vector<const JobOutcome*>, SceneMethodLess>
+      groups;
   for (const auto& o : outcomes) {
     if (o.failed) summary.failures.push_back(o);
     groups[{o.scene, o.method}].push_back(&o);
   }
-  std::map<std::string, std::map<std::string, std::vector<double>>> coverageByScene;
+  struct NaturalLess {
+    bool operator()(const std::string& a, const std::string& b) const { return naturalLess(a, b); }
+  };
+  std::map<std::string, std::map<std::string, std::vector<double>>, NaturalLess> coverageByScene;
   for (const auto& [key, jobs] : groups) {
     MethodSummary m;
     m.scene = key.first;

@@ -1,7 +1,6 @@
 #include "visibility/occluders.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "geometry/predicates.h"
 
@@ -64,7 +63,7 @@ void Occluders::build(const kinematics::World& world) {
   };
   grow(world.obstacles);
   grow(world.targets);
-  // max() also maps the empty box (−inf extent) and NaN to the floor.
+  // The floor also covers an empty World (a box of extent −inf).
   extent_ = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-300});
   tolerance_ = kRelativeTolerance * extent_;
 
@@ -204,8 +203,9 @@ void Occluders::addSplit(std::uint32_t edge, Vec2 point, bool exact) {
 
 void Occluders::unifyCollinearSplits() {
   // An edge crossing a family of collinear overlapping edges meets each at "the same" point,
-  // but computed from different endpoints, so the points differ by an ulp or so; unify them
-  // (and chains of them, hence the repetition) so the overlapping pieces come out identical.
+  // but computed from different endpoints, so the points differ by an ulp or so; unify them so
+  // the overlapping pieces come out identical. Unifying one pair can make another pair
+  // differ, hence the repetition; two or three passes settle any real configuration.
   const double eps2 = tolerance_ * tolerance_;
   auto range = [this](std::uint32_t edge) {
     return std::equal_range(splits_.begin(), splits_.end(), Split{edge, 0.0, {}, false},
@@ -269,14 +269,12 @@ void Occluders::buildChains() {
 
   const std::size_t pieces = vertices_.size();
   next_.resize(pieces);
-  prev_.resize(pieces);
   t1_.resize(pieces);
   globalEdge_.resize(pieces);
   for (const Chain& chain : chains_) {
     for (std::uint32_t k = 0; k < chain.count; ++k) {
       const std::uint32_t i = chain.first + k, n = chain.first + (k + 1) % chain.count;
       next_[i] = n;
-      prev_[n] = i;
       t1_[i] = inputEdgeOfPiece_[n] == inputEdgeOfPiece_[i] ? t0_[n] : 1.0;
       globalEdge_[i] = inEdge_[inputEdgeOfPiece_[i]];
     }

@@ -49,7 +49,6 @@ class Occluders {
   std::span<const geometry::Vec2> vertices() const { return vertices_; }
   std::uint32_t pieceCount() const { return static_cast<std::uint32_t>(vertices_.size()); }
   std::uint32_t next(std::uint32_t piece) const { return next_[piece]; }
-  std::uint32_t prev(std::uint32_t piece) const { return prev_[piece]; }
   // Twins: a piece with the same endpoints as a piece with a smaller index (in either
   // direction) is not swept; the representative carries the target pieces of all its twins.
   bool isRepresentative(std::uint32_t piece) const { return isRepresentative_[piece] != 0; }
@@ -128,7 +127,7 @@ class Occluders {
   // Output arrangement.
   std::vector<Chain> chains_;
   std::vector<geometry::Vec2> vertices_;
-  std::vector<std::uint32_t> next_, prev_;
+  std::vector<std::uint32_t> next_;
   std::vector<std::uint32_t> inputEdgeOfPiece_;
   std::vector<std::uint32_t> globalEdge_;
   std::vector<double> t0_, t1_;

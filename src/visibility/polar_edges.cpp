@@ -42,14 +42,18 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
   events_.clear();
   initial_.clear();
 
+  const double eps = occluders.tolerance();
   for (const Chain& chain : occluders.chains()) {
-    if (!classifyChain(chain)) {
+    const geometry::Box& box = chain.box;
+    const bool far = p_.x < box.min.x - eps || p_.x > box.max.x + eps || p_.y < box.min.y - eps ||
+                     p_.y > box.max.y + eps;
+    // Outside the boundary's box is outside the boundary; near a ring, look closer.
+    if (far ? chain.kind == RingKind::Boundary : !classifyNearChain(chain)) {
       blind_ = true;
       return;
     }
+    addChainEvents(chain, far);
   }
-
-  addVertexEvents();
   for (std::uint32_t w = 0; w < wedges_.size(); ++w) {
     addEvent(vertex(wedges_[w].start), w, EventKind::WedgeStart);
     addEvent(vertex(wedges_[w].end), w, EventKind::WedgeEnd);
@@ -72,35 +76,41 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
   sortEvents();
 }
 
-void PolarEdges::addVertexEvents() {
-  // One pass along each chain, in memory order: vertex v ends the piece before it and starts
-  // the piece after it.
-  for (const Chain& chain : occluders_->chains()) {
-    const std::uint32_t first = chain.first, last = first + chain.count - 1;
-    int beforeHalf = geometry::angleHalf(vertex(last) - p_);
-    for (std::uint32_t v = first; v <= last; ++v) {
-      const std::uint32_t before = v == first ? last : v - 1;
-      const std::uint8_t b = state_[before], a = state_[v];
-      const Vec2 d = vertex(v) - p_;
-      const int half = geometry::angleHalf(d);
-      // An active piece running with its chain is inserted at its chain start and removed at
-      // its chain end; a reversed one the other way round.
-      std::uint8_t actions = 0;
-      if (b & kActive) actions |= (b & kReversed) ? kInsertBefore : kRemoveBefore;
-      if (a & kActive) actions |= (a & kReversed) ? kRemoveAfter : kInsertAfter;
-      if (actions != 0) {
-        if (v == last) actions |= kAfterWraps;
-        events_.push_back({quantizedAngle(d), v, before, EventKind::Vertex, actions});
-      }
-      // The piece before is active on the start ray iff it spans the +x axis: it starts below
-      // and ends above.
-      const bool reversed = (b & kReversed) != 0;
-      if ((b & kActive) && (reversed ? half : beforeHalf) == 1 &&
-          (reversed ? beforeHalf : half) == 0) {
-        initial_.push_back(before);
-      }
-      beforeHalf = half;
+void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
+  // One pass along the chain in memory order: vertex v ends the piece before it and starts the
+  // piece after it. A chain far from the viewpoint has its pieces classified on the way.
+  const std::uint32_t first = chain.first, last = first + chain.count - 1;
+  Vec2 a = vertex(first);
+  const Vec2 lastVertex = vertex(last);
+  if (classify) state_[last] = pieceState(last, lastVertex, a);
+  std::uint8_t before = state_[last];
+  int beforeHalf = geometry::angleHalf(lastVertex - p_);
+  for (std::uint32_t v = first; v <= last; ++v) {
+    const Vec2 b = vertex(v == last ? first : v + 1);
+    if (classify && v != last) state_[v] = pieceState(v, a, b);
+    const std::uint8_t after = state_[v];
+    const Vec2 d = a - p_;
+    const int half = geometry::angleHalf(d);
+    // An active piece running with its chain is inserted at its chain start and removed at its
+    // chain end; a reversed one the other way round.
+    std::uint8_t actions = 0;
+    if (before & kActive) actions |= (before & kReversed) ? kInsertBefore : kRemoveBefore;
+    if (after & kActive) actions |= (after & kReversed) ? kRemoveAfter : kInsertAfter;
+    if (actions != 0) {
+      if (v == last) actions |= kAfterWraps;
+      events_.push_back(
+          {quantizedAngle(d), v, v == first ? last : v - 1, EventKind::Vertex, actions});
     }
+    // The piece before is active on the start ray iff it spans the +x axis: it starts below
+    // and ends above.
+    const bool reversed = (before & kReversed) != 0;
+    if ((before & kActive) && (reversed ? half : beforeHalf) == 1 &&
+        (reversed ? beforeHalf : half) == 0) {
+      initial_.push_back(v == first ? last : v - 1);
+    }
+    a = b;
+    before = after;
+    beforeHalf = half;
   }
 }
 
@@ -142,17 +152,8 @@ void PolarEdges::sortEvents() {
   }
 }
 
-bool PolarEdges::classifyChain(const Chain& chain) {
-  const double eps = occluders_->tolerance();
-  const geometry::Box& box = chain.box;
+bool PolarEdges::classifyNearChain(const Chain& chain) {
   const std::uint32_t first = chain.first, count = chain.count;
-  if (p_.x < box.min.x - eps || p_.x > box.max.x + eps || p_.y < box.min.y - eps ||
-      p_.y > box.max.y + eps) {
-    if (chain.kind == RingKind::Boundary) return false;
-    for (std::uint32_t i = first; i < first + count; ++i)
-      classifyPiece(i);
-    return true;
-  }
 
   near_.resize(count);
   bool touching = false;
@@ -206,19 +207,18 @@ bool PolarEdges::classifyChain(const Chain& chain) {
     }
   }
   for (std::uint32_t i = first; i < first + count; ++i) {
-    if (state_[i] != kTouching) classifyPiece(i);
+    if (state_[i] != kTouching) state_[i] = pieceState(i, vertex(i), vertex(occluders_->next(i)));
   }
   return true;
 }
 
-void PolarEdges::classifyPiece(std::uint32_t piece) {
-  if (!occluders_->isRepresentative(piece)) return;
-  const Vec2 a = vertex(piece), b = vertex(occluders_->next(piece));
+std::uint8_t PolarEdges::pieceState(std::uint32_t piece, Vec2 a, Vec2 b) const {
+  if (!occluders_->isRepresentative(piece)) return 0;
   const geometry::Orientation o = geometry::orientation(a, b, p_);
-  if (o.sign == 0) return;  // p on the supporting line: the piece subtends no angle
+  if (o.sign == 0) return 0;  // p on the supporting line: the piece subtends no angle
   // det is the distance from p to the line times |b − a|.
   const bool edgeOn = o.det * o.det <= eps2_ * norm2(b - a);
-  state_[piece] = kActive | (o.sign < 0 ? kReversed : 0) | (edgeOn ? kEdgeOn : 0);
+  return kActive | (o.sign < 0 ? kReversed : 0) | (edgeOn ? kEdgeOn : 0);
 }
 
 void PolarEdges::addWedge(std::uint32_t start, std::uint32_t end) {

@@ -95,14 +95,14 @@ class PolarEdges {
  private:
   static constexpr std::uint8_t kActive = 1, kReversed = 2, kEdgeOn = 4;
 
-  bool classifyChain(const Chain& chain);
-  void classifyPiece(std::uint32_t piece);
+  bool classifyNearChain(const Chain& chain);
+  std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
+  void addChainEvents(const Chain& chain, bool classify);
   void addWedge(std::uint32_t start, std::uint32_t end);
   void addEvent(geometry::Vec2 point, std::uint32_t ref, EventKind kind);
-  void addVertexEvents();
+
   bool less(const Event& a, const Event& b) const;
   void sortEvents();
-  bool isActive(std::uint32_t piece) const { return (state_[piece] & kActive) != 0; }
   geometry::Vec2 vertex(std::uint32_t i) const { return occluders_->vertices()[i]; }
 
   const Occluders* occluders_ = nullptr;
@@ -113,8 +113,7 @@ class PolarEdges {
   bool wideFov_ = true;
   geometry::Vec2 fovPoints_[2];
 
-  std::vector<std::uint8_t> state_;  // per piece
-
+  std::vector<std::uint8_t> state_;  // per piece: kActive, kReversed, kEdgeOn
   std::vector<Wedge> wedges_;
   std::vector<std::uint8_t> near_;  // per vertex of the chain being classified
   std::vector<Event> events_, scratch_;

@@ -19,14 +19,17 @@ struct CommandResult {
   std::string err;  // standard error
 };
 
-inline CommandResult runCamcov(const std::string& arguments) {
+inline std::string camcovBinary() {
   const char* binary = std::getenv("CAMCOV_BINARY");
   EXPECT_NE(binary, nullptr) << "CAMCOV_BINARY is not set (run through ctest)";
-  if (binary == nullptr) return {};
+  return binary == nullptr ? std::string("false") : std::string(binary);
+}
+
+// Runs a shell command line; its stdout and stderr are captured apart.
+inline CommandResult runShell(const std::string& commandLine) {
   const auto errFile = std::filesystem::temp_directory_path() /
                        ("camcov_test_err_" + std::to_string(::getpid()) + ".txt");
-  const std::string command =
-      std::string(binary) + " " + arguments + " 2>" + errFile.string() + " </dev/null";
+  const std::string command = "( " + commandLine + " ) 2>" + errFile.string() + " </dev/null";
   CommandResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -42,6 +45,10 @@ inline CommandResult runCamcov(const std::string& arguments) {
   result.err = text.str();
   std::filesystem::remove(errFile);
   return result;
+}
+
+inline CommandResult runCamcov(const std::string& arguments) {
+  return runShell(camcovBinary() + " " + arguments);
 }
 
 }  // namespace camcov::testing

@@ -6,6 +6,7 @@ namespace camcov::viz {
 namespace {
 
 const geometry::Box kSquareWorld{{-15.0, -15.0}, {15.0, 15.0}};
+constexpr PanelRows kRows{5, 7};
 
 void expectInside(const PixelRect& inner, const PixelRect& outer) {
   EXPECT_GE(inner.x, outer.x - 1e-9);
@@ -15,7 +16,7 @@ void expectInside(const PixelRect& inner, const PixelRect& outer) {
 }
 
 TEST(FrameLayout, WideFramePutsThePanelRightOfTheWorldWithoutOverlap) {
-  const FrameLayout l = layoutFrame(1280, 720, kSquareWorld, 13);
+  const FrameLayout l = layoutFrame(1280, 720, kSquareWorld, kRows);
   EXPECT_FALSE(l.worldArea.overlaps(l.panel));
   EXPECT_GE(l.panel.x, l.worldArea.x + l.worldArea.width);
   EXPECT_EQ(l.columns, 1);
@@ -30,25 +31,29 @@ TEST(FrameLayout, WideFramePutsThePanelRightOfTheWorldWithoutOverlap) {
     EXPECT_GT(p.y, l.worldArea.y);
     EXPECT_LT(p.y, l.worldArea.y + l.worldArea.height);
   }
-  // Every row fits in the panel.
-  const geometry::Vec2 last = l.rowOrigin(12);
+  // The legend follows the caption in the same column, and every row fits in the panel.
+  EXPECT_EQ(l.legendRow(0).x, l.captionRow(0).x);
+  EXPECT_GT(l.legendRow(0).y, l.captionRow(4).y + l.rowHeight());
+  const geometry::Vec2 last = l.legendRow(6);
   EXPECT_LE(last.y + l.rowHeight(), l.panel.y + l.panel.height);
 }
 
-TEST(FrameLayout, SquareFramePutsThePanelBelowInColumns) {
-  const FrameLayout l = layoutFrame(720, 720, kSquareWorld, 13);
+TEST(FrameLayout, SquareFramePutsTheCaptionBelowWithTheLegendBesideIt) {
+  const FrameLayout l = layoutFrame(720, 720, kSquareWorld, kRows);
   EXPECT_FALSE(l.worldArea.overlaps(l.panel));
   EXPECT_GE(l.panel.y, l.worldArea.y + l.worldArea.height);
-  EXPECT_GT(l.columns, 1);
-  const geometry::Vec2 last = l.rowOrigin(12);
+  EXPECT_EQ(l.columns, 2);
+  EXPECT_EQ(l.legendRow(0).y, l.captionRow(0).y);
+  EXPECT_GE(l.legendRow(0).x, l.captionRow(0).x + l.columnWidth());
+  const geometry::Vec2 last = l.legendRow(6);
   EXPECT_LE(last.x + l.columnWidth(), l.panel.x + l.panel.width);
   EXPECT_LE(last.y + l.rowHeight(), l.panel.y + l.panel.height);
 }
 
 TEST(FrameLayout, TextScalesWithTheFrame) {
-  EXPECT_DOUBLE_EQ(layoutFrame(1280, 720, kSquareWorld, 13).em, 16.0);
-  EXPECT_DOUBLE_EQ(layoutFrame(2560, 1440, kSquareWorld, 13).em, 32.0);
-  EXPECT_DOUBLE_EQ(layoutFrame(160, 90, kSquareWorld, 13).em, 9.0);  // legible minimum
+  EXPECT_DOUBLE_EQ(layoutFrame(1280, 720, kSquareWorld, kRows).em, 16.0);
+  EXPECT_DOUBLE_EQ(layoutFrame(2560, 1440, kSquareWorld, kRows).em, 32.0);
+  EXPECT_DOUBLE_EQ(layoutFrame(160, 90, kSquareWorld, kRows).em, 9.0);  // legible minimum
 }
 
 }  // namespace

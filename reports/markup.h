@@ -1,0 +1,33 @@
+#pragma once
+// Text helpers shared by the SVG and the HTML writers: escaping, fixed-precision numbers,
+// relative URLs, and a width estimate for laying out labels without a font engine.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace camcov::reports {
+
+// Escapes &, <, >, " and ' for text and attribute values of HTML and SVG.
+std::string escapeXml(std::string_view text);
+
+// A pixel coordinate with one decimal: enough for screens and print, and byte-stable.
+std::string px(double value);
+// A number with `decimals` digits after the point, "—" when not finite (no pair of cameras).
+std::string fixed(double value, int decimals);
+
+// The items with `separator` between them.
+std::string join(const std::vector<std::string>& items, std::string_view separator);
+
+// Approximate width in px of `text` at `fontSize` px in a common sans-serif face. Layout only:
+// it decides margins and whether labels must slant, so erring wide is safe.
+double textWidth(std::string_view text, double fontSize);
+
+// An id attribute value from a prefix and a name: "ts-dynamic9"; other bytes become '_'.
+std::string anchorId(std::string_view prefix, std::string_view name);
+
+// `file` relative to `fromDir`, with '/' separators and every byte outside the URL-safe set
+// percent-encoded: a relative URL for src and href attributes.
+std::string relativeUrl(const std::filesystem::path& file, const std::filesystem::path& fromDir);
+
+}  // namespace camcov::reports

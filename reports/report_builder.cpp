@@ -1,0 +1,70 @@
+#include "reports/report_builder.h"
+
+#include <fmt/format.h>
+
+#include "reports/markup.h"
+#include "reports/report_assets.h"
+#include "reports/sections.h"
+#include "results/atomic_file.h"
+
+namespace camcov::reports {
+namespace {
+
+// Everything the page may load is inline, or a local video next to it ('self' when served,
+// file: when opened from disk); anything else is blocked and reported by the browser.
+constexpr const char* kContentSecurityPolicy =
+    "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; "
+    "img-src data:; media-src 'self' file:";
+
+std::string navigation(const ReportData& data) {
+  std::string links =
+      "<li><a href=\"#summary\">Summary</a></li><li><a href=\"#box-plots\">Per scene (Fig. 4)"
+      "</a></li><li><a href=\"#time-series\">Over time (Fig. 5)</a></li><li><a "
+      "href=\"#scenes\">Scenes (Fig. 3)</a></li><li><a href=\"#parameters\">Parameters "
+      "(Table I)</a></li>";
+  if (!data.videos.empty()) links += "<li><a href=\"#videos\">Videos</a></li>";
+  if (!data.summary.failures.empty()) {
+    links += fmt::format("<li><a href=\"#failures\">Failed jobs ({})</a></li>",
+                         data.summary.failures.size());
+  }
+  return "<nav class=\"toc\" aria-label=\"Sections\"><ul>" + links + "</ul></nav>\n";
+}
+
+}  // namespace
+
+std::string buildReportHtml(const ReportData& data, const BuildContext& context) {
+  std::string html = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
+      "<meta name=\"generator\" content=\"camcov {}\">\n"
+      "<title>camcov report: {} scenes × {} seeds</title>\n<style>{}</style>\n</head>\n<body>\n",
+      kContentSecurityPolicy, escapeXml(data.manifest.toolVersion), data.manifest.scenes.size(),
+      data.manifest.seeds, reportStyle());
+  html += navigation(data);
+  html += "<div class=\"page\">\n";
+  html += headerSection(data, context);
+  html += "<main>\n";
+  html += summarySection(data);
+  html += boxPlotSection(data);
+  html += timeSeriesSection(data);
+  html += sceneGallerySection(data);
+  html += parametersSection(data);
+  html += videosSection(data);
+  html += failuresSection(data);
+  html += "</main>\n";
+  html += fmt::format(
+      "<footer>Written by camcov {} from the results folder alone, except the build date and "
+      "machine in the header; <code>camcov report RESULTS_DIR</code> writes it again.</footer>\n",
+      escapeXml(data.manifest.toolVersion));
+  html += fmt::format("</div>\n<script>{}</script>\n</body>\n</html>\n", reportScript());
+  return html;
+}
+
+void writeReport(const std::filesystem::path& resultsDir, const std::filesystem::path& reportFile) {
+  const std::filesystem::path target = std::filesystem::absolute(reportFile);
+  const ReportData data = loadReportData(resultsDir, target);
+  results::writeFileAtomically(target, buildReportHtml(data, currentBuildContext()));
+}
+
+}  // namespace camcov::reports

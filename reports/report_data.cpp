@@ -1,0 +1,172 @@
+#include "reports/report_data.h"
+
+#include <algorithm>
+
+#include "reports/markup.h"
+#include "reports/summary_reader.h"
+#include "results/run_files.h"
+#include "scene/read_text.h"
+#include "scene/scene_loader.h"
+#include "util/input_error.h"
+#include "util/natural_order.h"
+
+namespace camcov::reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool startsWith(const std::string& s, std::string_view prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+// Widens [min, max] at every step by one more seed's values; the band is as long as the
+// shortest run.
+void foldRange(SeriesBand& band, const std::vector<double>& values, bool first) {
+  if (first) {
+    band.min = band.max = values;
+    return;
+  }
+  const std::size_t n = std::min(band.min.size(), values.size());
+  band.min.resize(n);
+  band.max.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    band.min[k] = std::min(band.min[k], values[k]);
+    band.max[k] = std::max(band.max[k], values[k]);
+  }
+}
+
+MethodRuns loadMethodRuns(const results::BatchFolder& folder, const std::string& scene,
+                          const std::string& method, std::uint64_t seeds,
+                          std::uint64_t medianSeed) {
+  MethodRuns runs;
+  runs.medianSeed = medianSeed;
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    results::RunMetadata id;
+    id.scene = scene;
+    id.method = method;
+    id.seed = seed;
+    const fs::path file = folder.runFile(results::runStem(id));
+    if (!fs::exists(file)) continue;  // failed, or not run by this shard
+    results::RunRecord run = results::loadRunFile(file);
+    runs.averageCoverage.push_back(run.summary.averageCoverage);
+    runs.averageUtilization.push_back(run.summary.averageUtilization);
+    std::vector<double> coverage, utilization;
+    for (const auto& step : run.steps) {
+      coverage.push_back(step.terms.coverage);
+      utilization.push_back(step.terms.utilization);
+    }
+    const bool first = runs.averageCoverage.size() == 1;
+    foldRange(runs.coverage, coverage, first);
+    foldRange(runs.utilization, utilization, first);
+    if (seed == medianSeed) {
+      for (const auto& step : run.steps) runs.time.push_back(step.time);
+      runs.coverage.median = std::move(coverage);
+      runs.utilization.median = std::move(utilization);
+      runs.events = std::move(run.events);
+      for (auto& e : runs.events) e.path.clear();
+    }
+  }
+  return runs;
+}
+
+void loadScene(const results::SceneEntry& entry, SceneData& data) {
+  std::string text;
+  try {
+    text = scene::readText(entry.file);
+  } catch (const InputError&) {
+    data.sceneNote = "scene file " + entry.file +
+                     " not found (batch.json names it as given to camcov bench)";
+    return;
+  }
+  try {
+    data.scene = scene::parseScene(text, entry.file);
+  } catch (const InputError& e) {
+    data.sceneNote = e.what();
+    return;
+  }
+  if (results::fnv1a(text) != entry.hash) {
+    data.sceneNote = entry.file + " changed since the batch ran; drawn as it is now";
+  }
+}
+
+std::vector<std::string> findVideos(const fs::path& resultsDir, const fs::path& reportDir) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(resultsDir / "videos", ec)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".mp4") {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return naturalLess(a.filename().string(), b.filename().string());
+  });
+  std::vector<std::string> urls;
+  for (const auto& f : files) urls.push_back(relativeUrl(f, reportDir));
+  return urls;
+}
+
+}  // namespace
+
+SceneGroup sceneGroup(const std::string& name, const scene::Scene* scene) {
+  if (startsWith(name, "static")) return SceneGroup::Static;
+  if (startsWith(name, "dynamic")) return SceneGroup::Dynamic;
+  if (scene == nullptr) return SceneGroup::Other;
+  const auto isStatic = [](const scene::MovingObject& o) { return o.isStatic(); };
+  return std::all_of(scene->targets.begin(), scene->targets.end(), isStatic) &&
+                 std::all_of(scene->obstacles.begin(), scene->obstacles.end(), isStatic)
+             ? SceneGroup::Static
+             : SceneGroup::Dynamic;
+}
+
+const char* groupName(SceneGroup group) {
+  switch (group) {
+    case SceneGroup::Static: return "static";
+    case SceneGroup::Dynamic: return "dynamic";
+    case SceneGroup::Other: break;
+  }
+  return "other";
+}
+
+const char* groupTitle(SceneGroup group) {
+  switch (group) {
+    case SceneGroup::Static: return "Static scenes";
+    case SceneGroup::Dynamic: return "Dynamic scenes";
+    case SceneGroup::Other: break;
+  }
+  return "Other scenes";
+}
+
+ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile) {
+  const results::BatchFolder folder(resultsDir);
+  auto manifest = folder.readManifest();
+  if (!manifest) {
+    throw InputError(resultsDir.string() + ": not a camcov results folder (no batch.json)");
+  }
+  ReportData data;
+  data.manifest = std::move(*manifest);
+  data.summary = loadSummaryFile(resultsDir / "summary.json");
+  data.timings = folder.readTimings();
+  for (const auto& comparison : data.summary.scenes) {
+    SceneData scene;
+    scene.name = comparison.scene;
+    const auto entry =
+        std::find_if(data.manifest.scenes.begin(), data.manifest.scenes.end(),
+                     [&](const results::SceneEntry& e) { return e.name == comparison.scene; });
+    if (entry != data.manifest.scenes.end()) {
+      loadScene(*entry, scene);
+    } else {
+      scene.sceneNote = "not listed in batch.json";
+    }
+    scene.group = sceneGroup(scene.name, scene.scene ? &*scene.scene : nullptr);
+    for (const auto& m : data.summary.methods) {
+      if (m.scene != scene.name || m.runs == 0) continue;
+      scene.methods[m.method] =
+          loadMethodRuns(folder, scene.name, m.method, data.manifest.seeds, m.medianSeed);
+    }
+    data.scenes.push_back(std::move(scene));
+  }
+  data.videos = findVideos(resultsDir, reportFile.parent_path());
+  return data;
+}
+
+}  // namespace camcov::reports

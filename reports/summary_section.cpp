@@ -1,0 +1,144 @@
+// Section 2: the summary table, one table per scene group, one <tbody> per scene so the
+// inline script can sort scenes without tearing their method rows apart.
+#include <fmt/format.h>
+
+#include <map>
+
+#include "reports/markup.h"
+#include "reports/method_style.h"
+#include "reports/sections.h"
+
+namespace camcov::reports {
+namespace {
+
+std::string pValueText(double p) {
+  return p < 0.001 ? "&lt;&nbsp;0.001" : fixed(p, 3);
+}
+
+std::string winnerBadge(const std::string& winner) {
+  if (winner.empty()) return "<span class=\"badge\">—</span>";
+  const std::string_view color = winner == "tie" ? "#8a8f98" : methodStyle(winner).color;
+  return fmt::format("<span class=\"badge\" style=\"--c:{}\">{}</span>", color,
+                     escapeXml(winner));
+}
+
+std::string meanSd(const results::Description& d, bool best) {
+  const std::string text = fixed(d.mean, 3) + " ± " + fixed(d.sd, 3);
+  return best ? "<b>" + text + "</b>" : text;
+}
+
+std::string methodRow(const results::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
+  const MethodStyle style = methodStyle(m.method);
+  return fmt::format(
+      "<td><span class=\"method-dot\" style=\"--c:{}\"></span>{}</td><td class=\"num\">{}</td>"
+      "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
+      "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
+      "<td class=\"num\" title=\"{} of {} runs had some time below δ\">{} / {}</td>"
+      "<td class=\"num\">{} / {}</td>",
+      style.color, escapeXml(m.method),
+      m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
+      meanSd(m.coverage, bestCoverage), fixed(m.coverage.median, 3),
+      meanSd(m.utilization, bestUtilization), fixed(m.utilization.median, 3), m.runsWithCollision,
+      m.runs, fixed(m.meanObjectCollisionTime, 2), fixed(m.meanCameraCollisionTime, 2),
+      fixed(m.minObjectDistance, 2), fixed(m.minCameraDistance, 2));
+}
+
+std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
+                      const std::vector<const results::MethodSummary*>& rows, std::size_t order) {
+  double bestCoverage = -1.0, bestUtilization = -1.0;
+  for (const auto* m : rows) {
+    if (m->runs == 0) continue;
+    bestCoverage = std::max(bestCoverage, m->coverage.mean);
+    bestUtilization = std::max(bestUtilization, m->utilization.mean);
+  }
+  // Sort keys live on the <tbody>: the script reorders whole scenes.
+  std::string out = fmt::format(
+      "<tbody data-scene=\"{}\" data-delta=\"{}\" data-p=\"{}\" data-winner=\"{}\">\n", order,
+      c.meanDifference, c.pValue, escapeXml(c.winner));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& m = *rows[i];
+    out += "<tr>";
+    if (i == 0) {
+      out += fmt::format(
+          "<th scope=\"rowgroup\" rowspan=\"{}\"><a href=\"#{}\">{}</a></th>", rows.size(),
+          anchorId("ts", scene.name), escapeXml(scene.name));
+    }
+    out += methodRow(m, rows.size() > 1 && m.coverage.mean == bestCoverage,
+                     rows.size() > 1 && m.utilization.mean == bestUtilization);
+    if (i == 0) {
+      const bool compared = !c.winner.empty();
+      out += fmt::format(
+          "<td class=\"num\" rowspan=\"{0}\">{1}</td><td class=\"num\" rowspan=\"{0}\" "
+          "title=\"{2}\">{3}</td><td rowspan=\"{0}\">{4}</td>",
+          rows.size(), compared ? fmt::format("{:+.3f}", c.meanDifference) : "—",
+          c.exact ? "exact permutation test" : "normal approximation",
+          compared ? pValueText(c.pValue) : "—", winnerBadge(c.winner));
+    }
+    out += "</tr>\n";
+  }
+  return out + "</tbody>\n";
+}
+
+std::string groupTable(SceneGroup group, const ReportData& data) {
+  std::map<std::string, std::vector<const results::MethodSummary*>> byScene;
+  for (const auto& m : data.summary.methods) byScene[m.scene].push_back(&m);
+  std::string bodies;
+  int scenes = 0, paperWins = 0, ties = 0, localWins = 0;
+  for (std::size_t i = 0; i < data.scenes.size(); ++i) {
+    const SceneData& scene = data.scenes[i];
+    if (scene.group != group) continue;
+    const results::SceneComparison& c = data.summary.scenes[i];
+    std::vector<const results::MethodSummary*> rows;
+    for (const auto& method : orderedMethods(data.manifest.methods)) {
+      for (const auto* m : byScene[scene.name]) {
+        if (m->method == method) rows.push_back(m);
+      }
+    }
+    if (rows.empty()) continue;
+    ++scenes;
+    paperWins += c.winner == "paper";
+    ties += c.winner == "tie";
+    localWins += c.winner == "local";
+    bodies += sceneBody(scene, c, rows, i);
+  }
+  if (scenes == 0) return {};
+  const auto sortable = [](std::string_view key, std::string_view label) {
+    return fmt::format(
+        "<th scope=\"col\" data-key=\"{}\" rowspan=\"2\"><button type=\"button\">{}</button></th>",
+        key, label);
+  };
+  std::string out = fmt::format(
+      "<h3>{} <span class=\"muted\">({}: paper wins {}, ties {}, local wins {})</span>"
+      "</h3>\n<div class=\"table-wrap\"><table class=\"summary sortable\" data-group=\"{}\">\n"
+      "<thead><tr>{}<th scope=\"col\" rowspan=\"2\">Method</th><th scope=\"col\" "
+      "rowspan=\"2\">Runs</th><th scope=\"colgroup\" colspan=\"2\">Average coverage</th>"
+      "<th scope=\"colgroup\" colspan=\"2\">Average utilization</th><th scope=\"colgroup\" "
+      "colspan=\"2\">Safety (object / camera)</th>{}{}{}</tr>\n"
+      "<tr><th scope=\"col\">mean ± sd</th><th scope=\"col\">median</th><th scope=\"col\">mean ± "
+      "sd</th><th scope=\"col\">median</th><th scope=\"col\" title=\"mean seconds per run closer "
+      "than δ\">time &lt; δ, s</th><th scope=\"col\" title=\"minimum over all runs\">min "
+      "distance, m</th></tr></thead>\n",
+      groupTitle(group), scenes, paperWins, ties, localWins, groupName(group),
+      sortable("scene", "Scene"), sortable("delta", "Δ coverage"), sortable("p", "p"),
+      sortable("winner", "Winner"));
+  return out + bodies + "</table></div>\n";
+}
+
+}  // namespace
+
+std::string summarySection(const ReportData& data) {
+  std::string out = fmt::format(
+      "<section id=\"summary\">\n<h2>Summary</h2>\n<p>Per scene and method over {} seeds: "
+      "average coverage (eq. 4) and average utilization, mean ± sample standard deviation and "
+      "median; safety as the mean time per run a camera spent closer than δ = {} m to an object "
+      "or to another camera, and the smallest such distance in any run. Δ is the paper's mean "
+      "coverage minus local's; p is the two-sided Mann-Whitney U test of the two samples; the "
+      "winner is the better mean when p &lt; {}, else a tie. Click a column title to sort.</p>\n",
+      data.manifest.seeds, data.manifest.parameters.sim.delta, results::kSignificance);
+  for (const SceneGroup group : {SceneGroup::Static, SceneGroup::Dynamic, SceneGroup::Other}) {
+    out += groupTable(group, data);
+  }
+  return out + "</section>\n";
+}
+
+}  // namespace camcov::reports

@@ -1,0 +1,130 @@
+// Section 4, the paper's Fig. 5: coverage and utilization over time for every scene, the
+// median-seed run of each method as a line over the range of all its seeds, with the
+// method's replans and aborted plans marked on the time axis.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+#include "reports/markup.h"
+#include "reports/method_style.h"
+#include "reports/sections.h"
+#include "reports/svg_plot.h"
+
+namespace camcov::reports {
+namespace {
+
+constexpr double kChartWidth = 540.0;
+constexpr double kChartHeight = 250.0;
+
+bool endsWith(const std::string& s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Events worth a mark, merged per instant so simultaneous plans of several cameras make one
+// mark whose tooltip lists them all.
+struct Mark {
+  Swatch shape;
+  std::string color;
+  std::string tooltip;
+};
+
+std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const MethodRuns& runs) {
+  std::map<std::pair<double, bool>, Mark> marks;  // (time, aborted)
+  for (const auto& e : runs.events) {
+    const bool replan = (e.kind == "global" && endsWith(e.detail, "replan")) || e.kind == "plan";
+    const bool aborted = e.kind == "plan-aborted" || e.kind == "plan-failed";
+    if (!replan && !aborted) continue;
+    Mark& m = marks[{e.time, aborted}];
+    if (m.tooltip.empty()) {
+      m = {aborted ? Swatch::Cross : Swatch::Triangle, std::string(methodStyle(method).color),
+           fmt::format("t = {} s, {}", fixed(e.time, 1), method)};
+    }
+    m.tooltip += fmt::format("\n{}{}: {}", e.kind, e.camera >= 0 ? fmt::format(" camera {}", e.camera + 1) : "",
+                             e.detail);
+  }
+  std::vector<std::pair<double, Mark>> out;
+  for (auto& [key, mark] : marks) out.emplace_back(key.first, std::move(mark));
+  return out;
+}
+
+std::string chart(const SceneData& scene, const std::vector<std::string>& methods,
+                  SeriesBand MethodRuns::*series, const char* label, double duration) {
+  ChartSpec spec;
+  spec.width = kChartWidth;
+  spec.height = kChartHeight;
+  spec.ariaLabel = fmt::format("{} over time, {}", label, scene.name);
+  spec.x = {"time, s", 0.0, duration, 7};
+  spec.y = {label, 0.0, 1.0, 6};
+  std::vector<std::pair<const MethodRuns*, std::string_view>> shown;  // runs, colour
+  std::vector<std::pair<double, Mark>> marks;
+  for (const auto& method : methods) {
+    const auto it = scene.methods.find(method);
+    if (it == scene.methods.end()) continue;
+    shown.emplace_back(&it->second, methodStyle(method).color);
+    spec.legend.push_back({fmt::format("{}, seed {}", method, it->second.medianSeed),
+                           std::string(methodStyle(method).color), Swatch::Line});
+    for (auto& mark : eventMarks(method, it->second)) marks.push_back(std::move(mark));
+  }
+  // One legend entry per mark shape, in the colour of the first method that has it.
+  for (const auto& [shape, text] : {std::pair{Swatch::Triangle, "replan"},
+                                    std::pair{Swatch::Cross, "plan aborted"}}) {
+    const auto it = std::find_if(marks.begin(), marks.end(),
+                                 [shape = shape](const auto& m) { return m.second.shape == shape; });
+    if (it != marks.end()) spec.legend.push_back({text, it->second.color, shape});
+  }
+  Chart c(spec);
+  // Guides under the bands, bands under the lines, the first method's line on top.
+  for (const auto& [t, mark] : marks) c.addAxisMark(t, mark.shape, mark.color, mark.tooltip);
+  for (const auto& [runs, color] : shown) {
+    c.addBand(runs->time, (runs->*series).min, (runs->*series).max, color, 0.18);
+  }
+  for (auto it = shown.rbegin(); it != shown.rend(); ++it) {
+    c.addLine(it->first->time, (it->first->*series).median, it->second, 1.6);
+  }
+  return c.svg();
+}
+
+std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& methods,
+                        double duration) {
+  std::string caption;
+  for (const auto& method : methods) {
+    const auto it = scene.methods.find(method);
+    if (it == scene.methods.end()) continue;
+    caption += fmt::format("{}{}: {} seeds, median seed {}", caption.empty() ? "" : "; ", method,
+                           it->second.averageCoverage.size(), it->second.medianSeed);
+  }
+  return fmt::format(
+      "<figure class=\"series\" id=\"{}\" data-figure=\"series\" data-scene=\"{}\">\n"
+      "<figcaption><b>{}</b> <span class=\"muted\">{} · <a href=\"#{}\">scene</a></span>"
+      "</figcaption>\n<div class=\"pair\">{}{}</div>\n</figure>\n",
+      anchorId("ts", scene.name), escapeXml(scene.name), escapeXml(scene.name), escapeXml(caption),
+      anchorId("scene", scene.name),
+      chart(scene, methods, &MethodRuns::coverage, "coverage", duration),
+      chart(scene, methods, &MethodRuns::utilization, "utilization", duration));
+}
+
+}  // namespace
+
+std::string timeSeriesSection(const ReportData& data) {
+  const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
+  double duration = data.manifest.parameters.sim.duration;
+  for (const auto& s : data.scenes) {
+    for (const auto& [method, runs] : s.methods) {
+      if (!runs.time.empty()) duration = std::max(duration, runs.time.back());
+    }
+  }
+  std::string out =
+      "<section id=\"time-series\">\n<h2>Coverage and utilization over time (Fig. 5)</h2>\n"
+      "<p>For each scene and method the line is the run of the median seed (the seed whose "
+      "average coverage is the median), and the shaded band is the range, at each step, of all "
+      "seeds. Triangles on the time axis mark the median run's replans (global optimization "
+      "found a pose set better by the factor τ, and paths were planned), crosses mark aborted "
+      "plans. Hover a mark for its details.</p>\n";
+  for (const auto& scene : data.scenes) {
+    if (!scene.methods.empty()) out += sceneFigure(scene, methods, duration);
+  }
+  return out + "</section>\n";
+}
+
+}  // namespace camcov::reports

@@ -1,0 +1,177 @@
+// `camcov bench` and `camcov merge` end to end: outputs, resume after SIGKILL, shards plus
+// merge equal to one process, parameter guard, and OMPL's own tools reading our logs.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "support/run_camcov.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("camcov_bench_test_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+// 2 scenes x 2 methods x 3 seeds = 12 short jobs.
+std::string benchArgs(const fs::path& out, int seeds = 3) {
+  return "bench --scenes " + (testDataDir() / "scenes").string() + " --seeds " +
+         std::to_string(seeds) + " --duration 2 --set global.K=30 --set planner.T2=0.05 --out " +
+         out.string();
+}
+
+std::set<std::string> runFiles(const fs::path& out) {
+  std::set<std::string> names;
+  if (!fs::exists(out / "runs")) return names;
+  for (const auto& e : fs::directory_iterator(out / "runs"))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
+TEST(CliBench, WritesRunsSummaryAndLogs) {
+  const fs::path out = freshDir("plain");
+  const auto r = runCamcov(benchArgs(out) + " --jobs 2");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_EQ(runFiles(out).size(), 24u) << "12 runs, JSON and CSV each";
+  const auto summary = nlohmann::json::parse(read(out / "summary.json"));
+  EXPECT_EQ(summary["methods"].size(), 4u);
+  EXPECT_EQ(summary["scenes"].size(), 2u);
+  EXPECT_EQ(summary["methods"][0]["runs"], 3);
+  EXPECT_TRUE(fs::exists(out / "summary.csv"));
+  EXPECT_TRUE(fs::exists(out / "ompl" / "tiny_static.log"));
+  EXPECT_TRUE(fs::exists(out / "batch.json"));
+  EXPECT_NE(r.out.find("tiny_dynamic"), std::string::npos) << "the table names each scene";
+}
+
+TEST(CliBench, KilledBatchResumesWithoutRedoingFinishedJobs) {
+  const fs::path reference = freshDir("uninterrupted"), out = freshDir("killed");
+  ASSERT_EQ(runCamcov(benchArgs(reference) + " --jobs 1").exitCode, 0);
+
+  // Start the batch, wait until two jobs have finished, then SIGKILL it.
+  const std::string start =
+      camcovBinary() + " " + benchArgs(out) + " --jobs 1 >/dev/null 2>&1 & pid=$!; " +
+      "while [ $(ls " + (out / "runs").string() +
+      "/*.json 2>/dev/null | wc -l) -lt 2 ]; do sleep 0.02; done; kill -9 $pid; wait $pid";
+  runShell(start);
+  const auto before = runFiles(out);
+  std::map<std::string, fs::file_time_type> stamps;
+  for (const auto& name : before)
+    stamps[name] = fs::last_write_time(out / "runs" / name);
+  ASSERT_GE(before.size(), 2u);
+
+  const auto r = runCamcov(benchArgs(out) + " --jobs 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("already done"), std::string::npos) << r.err;
+  // A job is finished once its JSON exists (its CSV is written first); those are kept.
+  int kept = 0;
+  for (const auto& [name, stamp] : stamps) {
+    const fs::path json = out / "runs" / (fs::path(name).stem().string() + ".json");
+    if (name.find(".tmp-") != std::string::npos || !before.contains(json.filename().string()))
+      continue;
+    EXPECT_EQ(fs::last_write_time(out / "runs" / name), stamp) << name << " was redone";
+    ++kept;
+  }
+  EXPECT_GE(kept, 4) << "at least two finished jobs, JSON and CSV each";
+  for (const auto& name : runFiles(out))
+    EXPECT_EQ(name.find(".tmp-"), std::string::npos) << name;
+  EXPECT_EQ(read(out / "summary.json"), read(reference / "summary.json"));
+  EXPECT_EQ(read(out / "summary.csv"), read(reference / "summary.csv"));
+}
+
+TEST(CliBench, ShardsPlusMergeEqualOneProcess) {
+  const fs::path one = freshDir("one"), base = freshDir("shards");
+  ASSERT_EQ(runCamcov(benchArgs(one) + " --jobs 2").exitCode, 0);
+  // Three shard processes side by side, as GNU parallel or a job array would start them.
+  const auto r = runShell("printf '1\\n2\\n3\\n' | xargs -P 3 -I @ " + camcovBinary() + " " +
+                          benchArgs(base / "shard@") + " --jobs 1 --shard @/3 >/dev/null");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_FALSE(fs::exists(base / "shard1" / "summary.json")) << "a shard alone is not the batch";
+  const auto merged =
+      runCamcov("merge " + (base / "shard1").string() + " " + (base / "shard2").string() + " " +
+                (base / "shard3").string() + " --out " + (base / "merged").string());
+  ASSERT_EQ(merged.exitCode, 0) << merged.err;
+  EXPECT_EQ(read(base / "merged" / "summary.json"), read(one / "summary.json"));
+  EXPECT_EQ(read(base / "merged" / "summary.csv"), read(one / "summary.csv"));
+  // And every run file, byte for byte, whatever process made it.
+  for (const auto& name : runFiles(one)) {
+    EXPECT_EQ(read(base / "merged" / "runs" / name), read(one / "runs" / name)) << name;
+  }
+}
+
+TEST(CliBench, SlurmArrayRecipeShardsAndMerges) {
+  // scripts/slurm_bench.sh as Slurm would start it: one task per shard, environment set.
+  const fs::path one = freshDir("slurm_one"), base = freshDir("slurm");
+  ASSERT_EQ(runCamcov(benchArgs(one, 2)).exitCode, 0);
+  const std::string script = std::string(CAMCOV_SOURCE_DIR) + "/scripts/slurm_bench.sh";
+  const std::string options = benchArgs(base, 2).substr(std::string("bench").size());
+  const std::string optionsWithoutOut = options.substr(0, options.find(" --out "));
+  for (int task = 4; task <= 6; ++task) {  // an array 4-6: shards 1..3
+    const auto r =
+        runShell("CAMCOV=" + camcovBinary() + " SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
+                 " SLURM_ARRAY_TASK_MIN=4 SLURM_ARRAY_TASK_MAX=6 SLURM_CPUS_PER_TASK=1 " + script +
+                 " " + base.string() + optionsWithoutOut);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  }
+  const auto merged =
+      runCamcov("merge " + (base / "shard-1").string() + " " + (base / "shard-2").string() + " " +
+                (base / "shard-3").string() + " --out " + (base / "merged").string());
+  ASSERT_EQ(merged.exitCode, 0) << merged.err;
+  EXPECT_EQ(read(base / "merged" / "summary.json"), read(one / "summary.json"));
+}
+
+TEST(CliBench, RefusesOtherParametersInTheSameFolderUnlessForced) {
+  const fs::path out = freshDir("guard");
+  ASSERT_EQ(runCamcov(benchArgs(out, 1)).exitCode, 0);
+  const auto refused = runCamcov(benchArgs(out, 1) + " --set local.alpha=0.25");
+  EXPECT_EQ(refused.exitCode, 2);
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_EQ(runCamcov(benchArgs(out, 1) + " --set local.alpha=0.25 --force").exitCode, 0);
+}
+
+TEST(CliBench, BadArgumentsExitTwoBeforeRunningAnything) {
+  const fs::path out = freshDir("bad");
+  EXPECT_EQ(runCamcov("bench --scenes /nonexistent --out " + out.string()).exitCode, 2);
+  EXPECT_EQ(runCamcov(benchArgs(out) + " --methods paper,magic").exitCode, 2);
+  EXPECT_EQ(runCamcov(benchArgs(out) + " --shard 4/3").exitCode, 2);
+  EXPECT_EQ(runCamcov(benchArgs(out, 0)).exitCode, 2);
+  const auto badScene =
+      runCamcov("bench --scenes " + (testDataDir() / "bad" / "no_cameras.json").string() +
+                " --out " + out.string());
+  EXPECT_EQ(badScene.exitCode, 2);
+  EXPECT_FALSE(fs::exists(out / "runs"));
+}
+
+TEST(CliBench, OmplBenchmarkStatisticsReadsOurLogs) {
+  const fs::path out = freshDir("ompl");
+  ASSERT_EQ(runCamcov(benchArgs(out, 2)).exitCode, 0);
+  const fs::path db = out / "benchmark.db";
+  const auto r =
+      runShell("ompl_benchmark_statistics " + (out / "ompl" / "tiny_static.log").string() + " " +
+               (out / "ompl" / "tiny_dynamic.log").string() + " -d " + db.string());
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  // 2 scenes x 2 methods x 2 seeds runs, 21 progress samples each.
+  const auto count = runShell("python3 -c \"import sqlite3; c = sqlite3.connect('" + db.string() +
+                              "'); print(c.execute('select count(*) from runs').fetchone()[0], "
+                              "c.execute('select count(*) from progress').fetchone()[0], "
+                              "c.execute('select count(*) from plannerConfigs').fetchone()[0])\"");
+  EXPECT_EQ(count.out, "8 168 2\n") << count.err;
+}
+
+}  // namespace
+}  // namespace camcov::testing

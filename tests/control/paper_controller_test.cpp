@@ -1,0 +1,74 @@
+#include "control/paper_controller.h"
+
+#include <gtest/gtest.h>
+
+#include "control/local_controller.h"
+#include "sim/simulator.h"
+#include "support/small_worlds.h"
+
+namespace camcov::control {
+namespace {
+
+class EventLog final : public sim::Recorder {
+ public:
+  void step(const sim::StepRecord& r) override {
+    for (const auto& e : r.events)
+      events.push_back(e);
+  }
+  std::vector<ControlEvent> events;
+};
+
+params::Parameters quick() {
+  params::Parameters p;
+  p.global.K = 40;
+  p.planner.T2 = 0.1;
+  p.sim.duration = 11.0;
+  return p;
+}
+
+TEST(PaperController, ImprovesNeedsTheFactorTauForPositiveRewards) {
+  EXPECT_TRUE(PaperController::improves(1.3, 1.0, 1.2));
+  EXPECT_FALSE(PaperController::improves(1.1, 1.0, 1.2));
+  EXPECT_TRUE(PaperController::improves(0.1, 0.0, 1.2)) << "nothing seen: anything is better";
+  EXPECT_TRUE(PaperController::improves(-0.5, -1.0, 1.2)) << "τ·current would lower the bar";
+  EXPECT_FALSE(PaperController::improves(-1.0, -1.0, 1.2));
+}
+
+TEST(PaperController, RunsGlobalOptimizationAtZeroAndEveryT1AndPlans) {
+  const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  const params::Parameters p = quick();
+  PaperController controller(s, p, 1);
+  EventLog log;
+  const sim::RunSummary summary = sim::simulate(s, p, controller, log);
+  std::vector<double> globals;
+  int plans = 0;
+  for (const auto& e : log.events) {
+    if (e.kind == "global") globals.push_back(e.time);
+    if (e.kind == "plan") {
+      ++plans;
+      EXPECT_GE(e.path.size(), 2u);
+    }
+  }
+  EXPECT_EQ(globals, (std::vector<double>{0.0, 5.0, 10.0}));
+  EXPECT_GE(plans, 1) << "both cameras start looking away: the first global result wins";
+  // Local optimization alone, from poses that see nothing, never finds the target.
+  LocalController local(s, p);
+  EventLog none;
+  EXPECT_GT(summary.averageCoverage, sim::simulate(s, p, local, none).averageCoverage);
+}
+
+TEST(PaperController, HorizonKeepsSlowCamerasFromChasingFarGoals) {
+  const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  params::Parameters p = quick();
+  p.sim.duration = 1.0;
+  p.global.horizon = 1e-3;  // any travel at all discounts the global reward to nothing
+  PaperController controller(s, p, 1);
+  EventLog log;
+  sim::simulate(s, p, controller, log);
+  ASSERT_FALSE(log.events.empty());
+  EXPECT_EQ(log.events[0].kind, "global");
+  EXPECT_NE(log.events[0].detail.find("keep"), std::string::npos) << log.events[0].detail;
+}
+
+}  // namespace
+}  // namespace camcov::control

@@ -1,0 +1,56 @@
+#include "results/batch_summary.h"
+
+#include <gtest/gtest.h>
+
+namespace camcov::results {
+namespace {
+
+JobOutcome job(std::string scene, std::string method, std::uint64_t seed, double coverage) {
+  JobOutcome o{std::move(scene), std::move(method), seed, false, "", {}};
+  o.summary.averageCoverage = coverage;
+  o.summary.averageUtilization = coverage / 2;
+  o.summary.minObjectDistance = 1.0 + coverage;
+  o.summary.minCameraDistance = std::numeric_limits<double>::infinity();
+  return o;
+}
+
+TEST(Summarize, GroupsBySceneAndMethodInNaturalOrderAndPicksWinners) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    jobs.push_back(job("scene10", "paper", s, 0.8 + 0.01 * s));
+    jobs.push_back(job("scene10", "local", s, 0.3 + 0.01 * s));
+    jobs.push_back(job("scene2", "paper", s, 0.5));
+    jobs.push_back(job("scene2", "local", s, 0.5));
+  }
+  jobs.push_back({"scene2", "paper", 6, true, "boom", {}});
+  const BatchSummary summary = summarize(jobs);
+  ASSERT_EQ(summary.methods.size(), 4u);
+  EXPECT_EQ(summary.methods[0].scene, "scene2");
+  EXPECT_EQ(summary.methods[0].method, "local");
+  EXPECT_EQ(summary.methods[1].failed, 1);
+  EXPECT_EQ(summary.methods[1].runs, 5);
+  ASSERT_EQ(summary.scenes.size(), 2u);
+  EXPECT_EQ(summary.scenes[0].winner, "tie");
+  EXPECT_EQ(summary.scenes[1].winner, "paper");
+  EXPECT_NEAR(summary.scenes[1].pValue, 2.0 / 252.0, 1e-12);  // exact, fully separated 5 v 5
+  EXPECT_EQ(summary.paperWins, 1);
+  EXPECT_EQ(summary.ties, 1);
+  ASSERT_EQ(summary.failures.size(), 1u);
+  EXPECT_EQ(summary.failures[0].error, "boom");
+  // Median seed: coverages rise with the seed, so seed 3 is the median of five.
+  EXPECT_EQ(summary.methods[3].medianSeed, 3u);
+}
+
+TEST(Summarize, OutputDoesNotDependOnInputOrder) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 4; ++s) {
+    jobs.push_back(job("b", "paper", s, 0.1 * s));
+    jobs.push_back(job("a", "local", s, 0.2 * s));
+  }
+  std::vector<JobOutcome> reversed(jobs.rbegin(), jobs.rend());
+  EXPECT_EQ(summaryToJson(summarize(jobs)).dump(), summaryToJson(summarize(reversed)).dump());
+  EXPECT_EQ(summaryToCsv(summarize(jobs)), summaryToCsv(summarize(reversed)));
+}
+
+}  // namespace
+}  // namespace camcov::results
