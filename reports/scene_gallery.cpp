@@ -252,8 +252,8 @@ std::string cameras(const WorldToSvg& map, const scene::Scene& s, LabelPlacer& l
         {behindAt, behind}, {behindAt, Anchor::End}, {behindAt, Anchor::Start}};
     const auto around = spotsAround(boxOf(wedge));
     spots.insert(spots.end(), around.begin(), around.end());
-    labels.place(fmt::format("{:g} m/s · {:g} rad/s · {:.0f}°", c.maxVelocity,
-                             c.maxAngularVelocity, c.initial.yaw * 180.0 / std::numbers::pi),
+    labels.place(fmt::format("{:g} m/s · {:g} rad/s · {}°", c.maxVelocity, c.maxAngularVelocity,
+                             fixed(c.initial.yaw * 180.0 / std::numbers::pi, 0)),
                  "#21262f", spots);
   }
   return wedges + bodies;

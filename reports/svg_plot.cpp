@@ -351,7 +351,8 @@ void Chart::drawLegend(std::string& out) const {
         break;
     }
     out += fmt::format(
-        "<text x=\"{}\" y=\"{}\" font-size=\"{}\" dominant-baseline=\"central\">{}</text>\n",
+        "<text class=\"legend\" x=\"{}\" y=\"{}\" font-size=\"{}\" "
+        "dominant-baseline=\"central\">{}</text>\n",
         px(lx + kLegendSwatch + 6), px(ly), kLabelFont, escapeXml(e.label));
     lx += w;
   }

@@ -1,0 +1,60 @@
+#pragma once
+// A results folder for the report tests, made by the real `camcov bench` on the tiny scenes of
+// tests/data/scenes (2 scenes x 2 methods x 3 seeds of 2 s: well under a second), in a scratch
+// folder named after the running test and removed when it ends.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "support/run_camcov.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = std::filesystem::temp_directory_path() /
+            ("camcov_report_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+             std::to_string(::getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDir() { std::filesystem::remove_all(path_); }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline const char* const kFixtureScenes[] = {"tiny_dynamic", "tiny_static"};
+
+// `camcov bench` into `out`; extra arguments (e.g. --no-report) are appended.
+inline CommandResult benchFixture(const std::filesystem::path& out, const std::string& extra = "") {
+  return runCamcov("bench --scenes " + (testDataDir() / "scenes").string() +
+                   " --seeds 3 --duration 2 --set global.K=30 --set planner.T2=0.05 --jobs 2 --out " +
+                   out.string() + " " + extra);
+}
+
+inline std::string readFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline int countOf(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace camcov::testing

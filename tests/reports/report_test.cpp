@@ -1,0 +1,231 @@
+// The report end to end: `camcov bench` writes it, `camcov report` and `camcov merge` rewrite
+// it, and its structure holds: every scene in every section, every plot with axes, two boxes
+// per scene, a time-series figure per scene, nothing fetched from the network, well-nested
+// HTML, and the same bytes from the same folder except the build date and machine.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+#include <vector>
+
+#include "report_fixture.h"
+#include "reports/build_context.h"
+#include "reports/report_builder.h"
+#include "reports/report_data.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The text between the opening tag of element `id` and the next "</section>".
+std::string section(const std::string& html, const std::string& id) {
+  const auto start = html.find("<section id=\"" + id + "\"");
+  if (start == std::string::npos) return {};
+  return html.substr(start, html.find("</section>", start) - start);
+}
+
+// Every <svg ...>...</svg> in `html`.
+std::vector<std::string> svgs(const std::string& html, const std::string& cls) {
+  std::vector<std::string> out;
+  const std::string open = "<svg class=\"" + cls + "\"";
+  for (auto at = html.find(open); at != std::string::npos; at = html.find(open, at + 1)) {
+    out.push_back(html.substr(at, html.find("</svg>", at) - at));
+  }
+  return out;
+}
+
+// Empty if every element is closed in order (void elements, self-closing SVG elements and the
+// contents of <script> and <style> aside); else where nesting first breaks.
+std::string nestingError(const std::string& html) {
+  static const std::set<std::string> kVoid{"meta", "br", "img", "input", "link", "hr", "source"};
+  std::vector<std::string> open;
+  for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
+    if (html.compare(at, 2, "<!") == 0) continue;  // the doctype
+    const std::size_t end = html.find('>', at);
+    if (end == std::string::npos) return "unterminated tag at offset " + std::to_string(at);
+    const bool closing = html[at + 1] == '/';
+    const std::size_t nameStart = at + (closing ? 2 : 1);
+    std::size_t nameEnd = nameStart;
+    while (nameEnd < end && std::isalnum(static_cast<unsigned char>(html[nameEnd]))) ++nameEnd;
+    const std::string name = html.substr(nameStart, nameEnd - nameStart);
+    if (name.empty()) return "stray '<' at offset " + std::to_string(at);
+    if (closing) {
+      if (open.empty() || open.back() != name) {
+        return "</" + name + "> at offset " + std::to_string(at) + " closes <" +
+               (open.empty() ? std::string("nothing") : open.back()) + ">";
+      }
+      open.pop_back();
+    } else if (name == "script" || name == "style") {
+      // Their text is not markup: jump to the closing tag.
+      at = html.find("</" + name + ">", end);
+      if (at == std::string::npos) return "unclosed <" + name + ">";
+    } else if (html[end - 1] != '/' && kVoid.count(name) == 0) {
+      open.push_back(name);
+    }
+    at = std::max(at, end);
+  }
+  return open.empty() ? std::string() : "unclosed <" + open.back() + ">";
+}
+
+TEST(Report, BenchWritesItWithEverySceneInEverySection) {
+  const ScratchDir dir;
+  const auto r = benchFixture(dir / "results");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const std::string html = readFile(dir / "results" / "report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  for (const std::string scene : kFixtureScenes) {
+    EXPECT_NE(section(html, "summary").find(">" + scene + "</a>"), std::string::npos) << scene;
+    EXPECT_EQ(countOf(section(html, "time-series"),
+                      "data-figure=\"series\" data-scene=\"" + scene + "\""),
+              1)
+        << scene;
+    EXPECT_EQ(countOf(section(html, "scenes"), "data-figure=\"scene\" data-scene=\"" + scene + "\""),
+              1)
+        << scene;
+    for (const char* method : {"paper", "local"}) {
+      EXPECT_EQ(countOf(section(html, "box-plots"),
+                        "data-metric=\"coverage\" data-scene=\"" + scene + "\" data-method=\"" +
+                            method + "\""),
+                1)
+          << scene << " " << method;
+    }
+  }
+  EXPECT_NE(section(html, "parameters").find("Table I"), std::string::npos);
+}
+
+TEST(Report, EveryPlotHasAxesAndTheRightNumberOfBoxes) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
+  const std::string html = readFile(dir / "results" / "report.html");
+  const auto charts = svgs(html, "chart");
+  // Box plots: coverage and utilization for the static and the dynamic group; time series:
+  // coverage and utilization per scene.
+  EXPECT_EQ(charts.size(), 4u + 2u * std::size(kFixtureScenes));
+  for (const auto& svg : charts) {
+    EXPECT_GE(countOf(svg, "<text class=\"tick\""), 4) << svg.substr(0, 200);
+    EXPECT_EQ(countOf(svg, "<text class=\"axis-label\""), 2) << svg.substr(0, 200);
+    EXPECT_GE(countOf(svg, "<text class=\"legend\""), 2) << svg.substr(0, 200);
+  }
+  const std::string boxes = section(html, "box-plots");
+  EXPECT_EQ(countOf(boxes, "class=\"box\" data-metric=\"coverage\""),
+            2 * static_cast<int>(std::size(kFixtureScenes)));
+  EXPECT_EQ(countOf(boxes, "class=\"box\" data-metric=\"utilization\""),
+            2 * static_cast<int>(std::size(kFixtureScenes)));
+  for (const std::string scene : kFixtureScenes) {
+    const auto at = html.find("data-figure=\"series\" data-scene=\"" + scene + "\"");
+    ASSERT_NE(at, std::string::npos);
+    const std::string figure = html.substr(at, html.find("</figure>", at) - at);
+    EXPECT_EQ(countOf(figure, "<svg class=\"chart\""), 2) << "coverage and utilization";
+    EXPECT_EQ(countOf(figure, "<polyline"), 4) << "the median run of each method, twice";
+    EXPECT_GE(countOf(figure, "class=\"axis-mark\""), 2) << "the paper's replan at t = 0";
+  }
+  EXPECT_EQ(svgs(html, "scene").size(), std::size(kFixtureScenes));
+}
+
+TEST(Report, FetchesNothingAndNestsWell) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
+  const std::string html = readFile(dir / "results" / "report.html");
+  EXPECT_EQ(html.find("http://"), std::string::npos);
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("@import"), std::string::npos);
+  EXPECT_EQ(html.find("url("), std::string::npos);
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_NE(html.find("Content-Security-Policy\" content=\"default-src 'none'"), std::string::npos);
+  EXPECT_EQ(nestingError(html), "");
+  for (const char* tag : {"html", "head", "body", "main", "section", "figure", "svg", "table"}) {
+    EXPECT_EQ(countOf(html, std::string("<") + tag + ">") +
+                  countOf(html, std::string("<") + tag + " "),
+              countOf(html, std::string("</") + tag + ">"))
+        << tag;
+  }
+}
+
+TEST(Report, NestingCheckCatchesBrokenMarkup) {
+  EXPECT_EQ(nestingError("<div><p>a</p><svg><path d=\"M0 0\"/></svg></div>"), "");
+  EXPECT_NE(nestingError("<div><p>a</div></p>"), "");
+  EXPECT_NE(nestingError("<section><div></section>"), "");
+  EXPECT_EQ(nestingError("<style>a > b {}</style><script>if (a < b) {}</script>"), "");
+}
+
+TEST(Report, HeaderNamesCommandJobsAndParameterOverrides) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
+  const std::string html = readFile(dir / "results" / "report.html");
+  EXPECT_NE(html.find("12 = 2 scenes × 2 methods × 3 seeds; 0 failed"), std::string::npos);
+  EXPECT_NE(html.find("bench --scenes"), std::string::npos);
+  EXPECT_NE(html.find("<dt>Machine</dt>"), std::string::npos);
+  EXPECT_NE(html.find("summed over 12 jobs"), std::string::npos);
+  const std::string parameters = section(html, "parameters");
+  EXPECT_EQ(countOf(parameters, "<tr class=\"override\">"), 3) << "K, T2 and the duration";
+  EXPECT_NE(parameters.find("<code>global.K</code> = 30 (default 500)"), std::string::npos);
+}
+
+TEST(Report, NoReportFlagSkipsIt) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results", "--no-report").exitCode, 0);
+  EXPECT_TRUE(fs::exists(dir / "results" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "results" / "report.html"));
+}
+
+TEST(Report, ReportCommandWritesWhereAskedAndEmbedsVideosByRelativeUrl) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results", "--no-report").exitCode, 0);
+  fs::create_directories(dir / "results" / "videos");
+  for (const char* name : {"tiny_static-paper-seed1.mp4", "tiny_static.mp4", "notes.txt"}) {
+    std::ofstream(dir / "results" / "videos" / name) << "x";
+  }
+  auto r = runCamcov("report " + (dir / "results").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string here = readFile(dir / "results" / "report.html");
+  const std::string videos = section(here, "videos");
+  EXPECT_EQ(countOf(videos, "<video controls"), 2);
+  EXPECT_NE(videos.find("src=\"videos/tiny_static-paper-seed1.mp4\""), std::string::npos);
+  EXPECT_NE(videos.find("src=\"videos/tiny_static.mp4\""), std::string::npos);
+
+  r = runCamcov("report " + (dir / "results").string() + " -o " + (dir / "out" / "r.html").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(readFile(dir / "out" / "r.html").find("src=\"../results/videos/tiny_static.mp4\""),
+            std::string::npos);
+
+  r = runCamcov("report " + testDataDir().string());
+  EXPECT_EQ(r.exitCode, 2) << "not a results folder";
+  EXPECT_NE(r.err.find("batch.json"), std::string::npos) << r.err;
+}
+
+TEST(Report, MergeWritesItWithAFailedJobsSection) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results", "--no-report").exitCode, 0);
+  std::ofstream(dir / "results" / "runs" / "tiny_static-paper-seed4.error.json")
+      << R"({"format": "camcov-failure/1", "scene": "tiny_static", "method": "paper", "seed": 4,
+            "error": "planner <exploded>"})";
+  const auto r = runCamcov("merge " + (dir / "results").string() + " --out " +
+                           (dir / "merged").string());
+  EXPECT_EQ(r.exitCode, 1) << "a failed job: " << r.err;
+  const std::string html = readFile(dir / "merged" / "report.html");
+  const std::string failures = section(html, "failures");
+  EXPECT_NE(failures.find("Failed jobs (1)"), std::string::npos);
+  EXPECT_NE(failures.find("planner &lt;exploded&gt;"), std::string::npos);
+  EXPECT_NE(html.find("href=\"#failures\""), std::string::npos);
+}
+
+TEST(Report, SameFolderSameBytesButTheBuildContext) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
+  const fs::path file = dir / "results" / "report.html";
+  const reports::ReportData data = reports::loadReportData(dir / "results", file);
+  const reports::BuildContext context{"2000-01-01 00:00 UTC", "host", "cpu", 4};
+  const std::string html = reports::buildReportHtml(data, context);
+  EXPECT_EQ(html, reports::buildReportHtml(reports::loadReportData(dir / "results", file), context));
+
+  // The file camcov wrote differs only in the date and machine lines.
+  const std::regex volatileLines("<dt>(Report built|Machine)</dt><dd>[^\n]*");
+  EXPECT_EQ(std::regex_replace(readFile(file), volatileLines, ""),
+            std::regex_replace(html, volatileLines, ""));
+}
+
+}  // namespace
+}  // namespace camcov::testing
