@@ -13,7 +13,7 @@ namespace camcov::reports {
 namespace {
 
 constexpr std::size_t kScenesPerPanel = 16;  // the paper's 16 static and 16 dynamic scenes
-constexpr double kMinPanelWidth = 600.0;  // room for the legend
+constexpr double kMinPanelWidth = 600.0;     // room for the legend
 constexpr double kMaxPanelWidth = 1100.0;
 constexpr double kPanelHeight = 330.0;
 
@@ -29,16 +29,17 @@ std::string panel(const std::vector<const SceneData*>& scenes,
                   double hi, const std::string& title) {
   ChartSpec spec;
   // About 68 px per scene, so a few scenes do not spread over the page.
-  spec.width = std::clamp(140.0 + 68.0 * static_cast<double>(scenes.size()), kMinPanelWidth,
-                          kMaxPanelWidth);
+  spec.width =
+      std::clamp(140.0 + 68.0 * static_cast<double>(scenes.size()), kMinPanelWidth, kMaxPanelWidth);
   spec.height = kPanelHeight;
   spec.ariaLabel = title;
   spec.y = {metric.label, lo, hi, 7};
   spec.x.label = "scene";
-  for (const auto* s : scenes) spec.categories.push_back(s->name);
+  for (const auto* s : scenes)
+    spec.categories.push_back(s->name);
   for (const auto& method : methods) {
-    spec.legend.push_back(
-        {std::string(methodStyle(method).label), std::string(methodStyle(method).color), Swatch::Box});
+    spec.legend.push_back({std::string(methodStyle(method).label),
+                           std::string(methodStyle(method).color), Swatch::Box});
   }
   spec.legend.push_back({"outlier (beyond 1.5 IQR)", "#555", Swatch::Plus});
   Chart chart(spec);
@@ -55,8 +56,8 @@ std::string panel(const std::vector<const SceneData*>& scenes,
           fixed(b.whiskerLow, 3), fixed(b.whiskerHigh, 3), b.outliers.size(), b.count);
       chart.addBox(i, -0.4 + width * (static_cast<double>(k) + 0.5), width * 0.85, b,
                    methodStyle(methods[k]).color, tooltip,
-                   fmt::format("data-metric=\"{}\" data-scene=\"{}\" data-method=\"{}\"", metric.key,
-                               escapeXml(scenes[i]->name), escapeXml(methods[k])));
+                   fmt::format("data-metric=\"{}\" data-scene=\"{}\" data-method=\"{}\"",
+                               metric.key, escapeXml(scenes[i]->name), escapeXml(methods[k])));
     }
   }
   return chart.svg();
@@ -77,7 +78,7 @@ std::string boxPlotSection(const ReportData& data) {
       "and + marks runs beyond. As in the paper, the paper's method is orange and local "
       "optimization blue. Hover a box for its numbers.</p>\n",
       data.manifest.seeds);
-  for (const SceneGroup group : {SceneGroup::Static, SceneGroup::Dynamic, SceneGroup::Other}) {
+  for (const SceneGroup group : kSceneGroups) {
     std::vector<const SceneData*> scenes;
     for (const auto& s : data.scenes) {
       if (s.group == group && !s.methods.empty()) scenes.push_back(&s);
@@ -97,9 +98,9 @@ std::string boxPlotSection(const ReportData& data) {
       for (std::size_t start = 0; start < scenes.size(); start += kScenesPerPanel) {
         const std::vector<const SceneData*> chunk(
             scenes.begin() + static_cast<std::ptrdiff_t>(start),
-            scenes.begin() + static_cast<std::ptrdiff_t>(std::min(scenes.size(), start + kScenesPerPanel)));
-        const std::string title =
-            fmt::format("{} per run, {}", metric.label, groupTitle(group));
+            scenes.begin() +
+                static_cast<std::ptrdiff_t>(std::min(scenes.size(), start + kScenesPerPanel)));
+        const std::string title = fmt::format("{} per run, {}", metric.label, groupTitle(group));
         out += fmt::format(
             "<figure class=\"panel\" data-figure=\"box\" data-metric=\"{}\">\n{}<figcaption>{} "
             "per run of each method over {} seeds; {}{}.</figcaption>\n</figure>\n",

@@ -7,7 +7,7 @@
 namespace camcov::reports {
 
 struct BuildContext {
-  std::string date;      // UTC, "2025-01-31 14:05 UTC"
+  std::string date;  // UTC, "2025-01-31 14:05 UTC"
   std::string hostname;
   std::string cpuModel;  // "model name" of /proc/cpuinfo, empty if unknown
   unsigned cores = 0;    // hardware threads

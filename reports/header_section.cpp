@@ -13,16 +13,17 @@ std::string shellCommand(const std::vector<std::string>& argv) {
   std::string line;
   for (const auto& arg : argv) {
     if (!line.empty()) line += ' ';
-    const bool plain = !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
-                                                             "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                             "0123456789-_./=:,+@%") ==
-                                           std::string::npos;
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyz"
+                                           "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_./=:,+@%") == std::string::npos;
     if (plain) {
       line += arg;
       continue;
     }
     line += '\'';
-    for (const char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    for (const char c : arg)
+      line += c == '\'' ? std::string("'\\''") : std::string(1, c);
     line += '\'';
   }
   return line;
@@ -89,11 +90,10 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   fact("Command", "<code>" + escapeXml(shellCommand(m.command)) + "</code>");
   fact("Jobs", fmt::format("{} = {} scenes × {} methods × {} seeds; {} failed", jobs,
                            m.scenes.size(), m.methods.size(), m.seeds, s.failures.size()));
-  fact("Simulated", fmt::format("{} s per run, dt = {} s", m.parameters.sim.duration,
-                                m.parameters.sim.dt));
-  fact("Compute time",
-       fmt::format("{} wall, {} CPU, summed over {} jobs", duration(wall), duration(cpu),
-                   data.timings.size()));
+  fact("Simulated",
+       fmt::format("{} s per run, dt = {} s", m.parameters.sim.duration, m.parameters.sim.dt));
+  fact("Compute time", fmt::format("{} wall, {} CPU, summed over {} jobs", duration(wall),
+                                   duration(cpu), data.timings.size()));
   fact("Report built", escapeXml(context.date));
   fact("Machine", escapeXml(fmt::format("{} — {}, {} hardware threads", context.hostname,
                                         context.cpuModel.empty() ? "CPU unknown" : context.cpuModel,

@@ -12,12 +12,23 @@ std::string escapeXml(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -56,7 +67,8 @@ double textWidth(std::string_view text, double fontSize) {
 std::string anchorId(std::string_view prefix, std::string_view name) {
   std::string id(prefix);
   id += '-';
-  for (const char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  for (const char c : name)
+    id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
   return id;
 }
 

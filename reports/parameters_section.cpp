@@ -29,7 +29,8 @@ std::string value(const params::ParamField& f, double v) {
 
 std::string parametersSection(const ReportData& data) {
   const params::Parameters defaults;
-  std::string rows, overrides;
+  std::string rows;
+  std::vector<std::string> overrides;
   std::string_view previousGroup;
   for (const params::ParamField& f : params::parameterTable()) {
     const double used = f.get(data.manifest.parameters), standard = f.get(defaults);
@@ -43,12 +44,12 @@ std::string parametersSection(const ReportData& data) {
     rows += fmt::format(
         "<tr{}><td class=\"symbol\">{}</td><td><code>{}</code></td><td class=\"num\">{}{}</td>"
         "<td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-        changed ? " class=\"override\"" : "", escapeXml(f.symbol), escapeXml(f.key),
-        value(f, used), changed ? " <span class=\"badge\" style=\"--c:#b45309\">set</span>" : "",
+        changed ? " class=\"override\"" : "", escapeXml(f.symbol), escapeXml(f.key), value(f, used),
+        changed ? " <span class=\"badge\" style=\"--c:#b45309\">set</span>" : "",
         value(f, standard), escapeXml(f.unit), escapeXml(f.description));
     if (changed) {
-      overrides += fmt::format("{}<code>{}</code> = {} (default {})", overrides.empty() ? "" : ", ",
-                               escapeXml(f.key), value(f, used), value(f, standard));
+      overrides.push_back(fmt::format("<code>{}</code> = {} (default {})", escapeXml(f.key),
+                                      value(f, used), value(f, standard)));
     }
   }
   return fmt::format(
@@ -57,9 +58,10 @@ std::string parametersSection(const ReportData& data) {
       "Symbol</th><th scope=\"col\">Key</th><th scope=\"col\">Value</th><th scope=\"col\">"
       "Default</th><th scope=\"col\">Unit</th><th scope=\"col\">Meaning</th></tr></thead>\n"
       "<tbody>\n{}</tbody></table></div>\n</section>\n",
-      overrides.empty() ? "Every parameter at its default: the paper's Table I, plus our "
-                          "simulation settings."
-                        : "Overrides of the defaults (the paper's Table I): " + overrides + ".",
+      overrides.empty()
+          ? "Every parameter at its default: the paper's Table I, plus our "
+            "simulation settings."
+          : "Overrides of the defaults (the paper's Table I): " + join(overrides, ", ") + ".",
       rows);
 }
 

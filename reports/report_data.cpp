@@ -59,11 +59,13 @@ MethodRuns loadMethodRuns(const results::BatchFolder& folder, const std::string&
     foldRange(runs.coverage, coverage, first);
     foldRange(runs.utilization, utilization, first);
     if (seed == medianSeed) {
-      for (const auto& step : run.steps) runs.time.push_back(step.time);
+      for (const auto& step : run.steps)
+        runs.time.push_back(step.time);
       runs.coverage.median = std::move(coverage);
       runs.utilization.median = std::move(utilization);
       runs.events = std::move(run.events);
-      for (auto& e : runs.events) e.path.clear();
+      for (auto& e : runs.events)
+        e.path.clear();
     }
   }
   return runs;
@@ -74,8 +76,8 @@ void loadScene(const results::SceneEntry& entry, SceneData& data) {
   try {
     text = scene::readText(entry.file);
   } catch (const InputError&) {
-    data.sceneNote = "scene file " + entry.file +
-                     " not found (batch.json names it as given to camcov bench)";
+    data.sceneNote =
+        "scene file " + entry.file + " not found (batch.json names it as given to camcov bench)";
     return;
   }
   try {
@@ -101,7 +103,8 @@ std::vector<std::string> findVideos(const fs::path& resultsDir, const fs::path& 
     return naturalLess(a.filename().string(), b.filename().string());
   });
   std::vector<std::string> urls;
-  for (const auto& f : files) urls.push_back(relativeUrl(f, reportDir));
+  for (const auto& f : files)
+    urls.push_back(relativeUrl(f, reportDir));
   return urls;
 }
 
@@ -120,18 +123,24 @@ SceneGroup sceneGroup(const std::string& name, const scene::Scene* scene) {
 
 const char* groupName(SceneGroup group) {
   switch (group) {
-    case SceneGroup::Static: return "static";
-    case SceneGroup::Dynamic: return "dynamic";
-    case SceneGroup::Other: break;
+    case SceneGroup::Static:
+      return "static";
+    case SceneGroup::Dynamic:
+      return "dynamic";
+    case SceneGroup::Other:
+      break;
   }
   return "other";
 }
 
 const char* groupTitle(SceneGroup group) {
   switch (group) {
-    case SceneGroup::Static: return "Static scenes";
-    case SceneGroup::Dynamic: return "Dynamic scenes";
-    case SceneGroup::Other: break;
+    case SceneGroup::Static:
+      return "Static scenes";
+    case SceneGroup::Dynamic:
+      return "Dynamic scenes";
+    case SceneGroup::Other:
+      break;
   }
   return "Other scenes";
 }

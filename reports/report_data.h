@@ -36,12 +36,14 @@ struct MethodRuns {
 };
 
 enum class SceneGroup { Static, Dynamic, Other };
+inline constexpr SceneGroup kSceneGroups[] = {SceneGroup::Static, SceneGroup::Dynamic,
+                                              SceneGroup::Other};  // in report order
 
 struct SceneData {
   std::string name;
   SceneGroup group = SceneGroup::Other;
-  std::optional<scene::Scene> scene;  // empty if its file cannot be read any more
-  std::string sceneNote;              // why the scene is missing, or that its file changed
+  std::optional<scene::Scene> scene;          // empty if its file cannot be read any more
+  std::string sceneNote;                      // why the scene is missing, or that its file changed
   std::map<std::string, MethodRuns> methods;  // by method name
 };
 
@@ -49,7 +51,7 @@ struct ReportData {
   results::BatchManifest manifest;
   results::BatchSummary summary;
   std::map<std::string, results::JobTiming> timings;
-  std::vector<SceneData> scenes;  // scenes[i] is summary.scenes[i] (natural order)
+  std::vector<SceneData> scenes;    // scenes[i] is summary.scenes[i] (natural order)
   std::vector<std::string> videos;  // relative URLs of videos/*.mp4, natural order
 };
 

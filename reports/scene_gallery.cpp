@@ -28,7 +28,6 @@ class WorldToSvg {
   Vec2 operator()(Vec2 p) const {
     return {kMargin + (p.x - box_.min.x) * scale_, kMargin + (box_.max.y - p.y) * scale_};
   }
-  double scale() const { return scale_; }
   double width() const { return (box_.max.x - box_.min.x) * scale_ + 2 * kMargin; }
   double height() const { return (box_.max.y - box_.min.y) * scale_ + 2 * kMargin; }
 
@@ -46,13 +45,15 @@ void appendPoint(std::string& points, Vec2 p) {
 
 std::vector<Vec2> mapped(const WorldToSvg& map, const std::vector<Vec2>& ring) {
   std::vector<Vec2> out;
-  for (const Vec2 p : ring) out.push_back(map(p));
+  for (const Vec2 p : ring)
+    out.push_back(map(p));
   return out;
 }
 
 std::string points(const std::vector<Vec2>& ring) {
   std::string out;
-  for (const Vec2 p : ring) appendPoint(out, p);
+  for (const Vec2 p : ring)
+    appendPoint(out, p);
   return out;
 }
 
@@ -65,7 +66,9 @@ struct LabelSpot {
 
 struct PixelBox {
   double x0, y0, x1, y1;
-  bool overlaps(const PixelBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  bool overlaps(const PixelBox& o) const {
+    return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1;
+  }
 };
 
 PixelBox boxOf(const std::vector<Vec2>& points) {
@@ -81,9 +84,9 @@ PixelBox boxOf(const std::vector<Vec2>& points) {
 std::vector<LabelSpot> spotsAround(const PixelBox& b) {
   const double cx = (b.x0 + b.x1) / 2, above = b.y0 - 4.0, below = b.y1 + kFont + 2.0;
   const double middle = (b.y0 + b.y1) / 2 + kFont / 3;
-  return {{{cx, above}, Anchor::Middle},     {{cx, below}, Anchor::Middle},
-          {{b.x0, above}, Anchor::Start},    {{b.x1, above}, Anchor::End},
-          {{b.x0, below}, Anchor::Start},    {{b.x1, below}, Anchor::End},
+  return {{{cx, above}, Anchor::Middle},         {{cx, below}, Anchor::Middle},
+          {{b.x0, above}, Anchor::Start},        {{b.x1, above}, Anchor::End},
+          {{b.x0, below}, Anchor::Start},        {{b.x1, below}, Anchor::End},
           {{b.x1 + 5.0, middle}, Anchor::Start}, {{b.x0 - 5.0, middle}, Anchor::End}};
 }
 
@@ -119,8 +122,7 @@ class LabelPlacer {
 
   void reserve(const PixelBox& box) { taken_.push_back(box); }
 
-  void place(const std::string& text, std::string_view color,
-             const std::vector<LabelSpot>& spots) {
+  void place(const std::string& text, std::string_view color, const std::vector<LabelSpot>& spots) {
     const double width = textWidth(text, kFont);
     std::optional<PixelBox> chosen;
     for (const LabelSpot& spot : spots) {
@@ -137,8 +139,7 @@ class LabelPlacer {
     if (!chosen) {
       const PixelBox r = boxOf(spots.front(), width);
       const double dx = std::clamp(r.x0, 1.0, std::max(1.0, width_ - 1.0 - width)) - r.x0;
-      const double dy =
-          std::clamp(r.y0, 1.0, std::max(1.0, height_ - 1.0 - (r.y1 - r.y0))) - r.y0;
+      const double dy = std::clamp(r.y0, 1.0, std::max(1.0, height_ - 1.0 - (r.y1 - r.y0))) - r.y0;
       chosen = PixelBox{r.x0 + dx, r.y0 + dy, r.x1 + dx, r.y1 + dy};
     }
     taken_.push_back(*chosen);
@@ -228,7 +229,8 @@ std::string cameras(const WorldToSvg& map, const scene::Scene& s, LabelPlacer& l
     return wedge;
   };
   // Every camera's body and view is reserved before any label is placed.
-  for (const auto& c : s.cameras) labels.reserve(boxOf(wedgeOf(c)));
+  for (const auto& c : s.cameras)
+    labels.reserve(boxOf(wedgeOf(c)));
   for (const auto& c : s.cameras) {
     const Vec2 at = map(c.initial.position());
     const std::vector<Vec2> wedge = wedgeOf(c);
@@ -267,7 +269,8 @@ std::string sceneCard(const SceneData& data) {
     const auto& s = *data.scene;
     int moving = 0;
     for (const auto* group : {&s.targets, &s.obstacles}) {
-      for (const auto& o : *group) moving += !o.isStatic();
+      for (const auto& o : *group)
+        moving += !o.isStatic();
     }
     out += sceneSvg(s);
     out += fmt::format(
@@ -303,7 +306,8 @@ std::string sceneSvg(const scene::Scene& s, double maxSize) {
   // Labels keep off the objects; cameras claim their spots first, they carry the most text.
   LabelPlacer labels(map.width(), map.height(), mapped(map, world.boundary));
   for (const auto* rings : {&world.obstacles, &world.targets}) {
-    for (const auto& ring : *rings) labels.reserve(boxOf(mapped(map, ring)));
+    for (const auto& ring : *rings)
+      labels.reserve(boxOf(mapped(map, ring)));
   }
   const std::string views = cameras(map, s, labels);
   out += objects(map, s.obstacles, world.obstacles, kObstacleColor, 0.85, "obstacle", labels);
@@ -321,7 +325,8 @@ std::string sceneGallerySection(const ReportData& data) {
       "view at its initial heading, labelled with v<sub>max</sub>, γ̇<sub>max</sub> and the "
       "heading.</p>\n<div class=\"gallery\">\n",
       kTargetColor, kObstacleColor, kPathColor, kViewColor);
-  for (const auto& scene : data.scenes) out += sceneCard(scene);
+  for (const auto& scene : data.scenes)
+    out += sceneCard(scene);
   return out + "</div>\n</section>\n";
 }
 

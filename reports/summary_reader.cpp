@@ -9,8 +9,8 @@ namespace camcov::reports {
 namespace {
 
 results::Description describedFrom(const nlohmann::json& j) {
-  return {j.at("count").get<int>(), j.at("mean").get<double>(),   j.at("sd").get<double>(),
-          j.at("min").get<double>(), j.at("q1").get<double>(),    j.at("median").get<double>(),
+  return {j.at("count").get<int>(),  j.at("mean").get<double>(), j.at("sd").get<double>(),
+          j.at("min").get<double>(), j.at("q1").get<double>(),   j.at("median").get<double>(),
           j.at("q3").get<double>(),  j.at("max").get<double>()};
 }
 
@@ -53,9 +53,12 @@ results::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string
     s.ties = totals.at("ties").get<int>();
     s.localWins = totals.at("localWins").get<int>();
     for (const auto& f : j.at("failures")) {
-      s.failures.push_back({f.at("scene").get<std::string>(), f.at("method").get<std::string>(),
-                            f.at("seed").get<std::uint64_t>(), true,
-                            f.at("error").get<std::string>(), {}});
+      s.failures.push_back({f.at("scene").get<std::string>(),
+                            f.at("method").get<std::string>(),
+                            f.at("seed").get<std::uint64_t>(),
+                            true,
+                            f.at("error").get<std::string>(),
+                            {}});
     }
     return s;
   } catch (const nlohmann::json::exception& e) {

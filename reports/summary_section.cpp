@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <vector>
 
 #include "reports/markup.h"
 #include "reports/method_style.h"
@@ -18,17 +19,21 @@ std::string pValueText(double p) {
 std::string winnerBadge(const std::string& winner) {
   if (winner.empty()) return "<span class=\"badge\">—</span>";
   const std::string_view color = winner == "tie" ? "#8a8f98" : methodStyle(winner).color;
-  return fmt::format("<span class=\"badge\" style=\"--c:{}\">{}</span>", color,
-                     escapeXml(winner));
+  return fmt::format("<span class=\"badge\" style=\"--c:{}\">{}</span>", color, escapeXml(winner));
 }
 
 std::string meanSd(const results::Description& d, bool best) {
+  if (d.count == 0) return "—";
   const std::string text = fixed(d.mean, 3) + " ± " + fixed(d.sd, 3);
   return best ? "<b>" + text + "</b>" : text;
 }
 
 std::string methodRow(const results::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
   const MethodStyle style = methodStyle(m.method);
+  // A method whose every run failed has no numbers, not zeros.
+  const auto number = [&](double v, int decimals) {
+    return m.runs == 0 ? std::string("—") : fixed(v, decimals);
+  };
   return fmt::format(
       "<td><span class=\"method-dot\" style=\"--c:{}\"></span>{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
@@ -37,34 +42,44 @@ std::string methodRow(const results::MethodSummary& m, bool bestCoverage, bool b
       "<td class=\"num\">{} / {}</td>",
       style.color, escapeXml(m.method),
       m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
-      meanSd(m.coverage, bestCoverage), fixed(m.coverage.median, 3),
-      meanSd(m.utilization, bestUtilization), fixed(m.utilization.median, 3), m.runsWithCollision,
-      m.runs, fixed(m.meanObjectCollisionTime, 2), fixed(m.meanCameraCollisionTime, 2),
-      fixed(m.minObjectDistance, 2), fixed(m.minCameraDistance, 2));
+      meanSd(m.coverage, bestCoverage), number(m.coverage.median, 3),
+      meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3), m.runsWithCollision,
+      m.runs, number(m.meanObjectCollisionTime, 2), number(m.meanCameraCollisionTime, 2),
+      number(m.minObjectDistance, 2), number(m.minCameraDistance, 2));
 }
 
 std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
                       const std::vector<const results::MethodSummary*>& rows, std::size_t order) {
-  double bestCoverage = -1.0, bestUtilization = -1.0;
-  for (const auto* m : rows) {
-    if (m->runs == 0) continue;
-    bestCoverage = std::max(bestCoverage, m->coverage.mean);
-    bestUtilization = std::max(bestUtilization, m->utilization.mean);
-  }
+  // Bold marks the one best mean; equal means (a deterministic tie) stay plain.
+  const auto uniqueBest = [&](results::Description results::MethodSummary::*metric) {
+    const results::MethodSummary* best = nullptr;
+    int atBest = 0;
+    for (const auto* m : rows) {
+      if (m->runs == 0) continue;
+      if (best == nullptr || (m->*metric).mean > (best->*metric).mean) {
+        best = m;
+        atBest = 1;
+      } else if ((m->*metric).mean == (best->*metric).mean) {
+        ++atBest;
+      }
+    }
+    return atBest == 1 ? best : nullptr;
+  };
+  const auto* bestCoverage = uniqueBest(&results::MethodSummary::coverage);
+  const auto* bestUtilization = uniqueBest(&results::MethodSummary::utilization);
   // Sort keys live on the <tbody>: the script reorders whole scenes.
-  std::string out = fmt::format(
-      "<tbody data-scene=\"{}\" data-delta=\"{}\" data-p=\"{}\" data-winner=\"{}\">\n", order,
-      c.meanDifference, c.pValue, escapeXml(c.winner));
+  std::string out =
+      fmt::format("<tbody data-scene=\"{}\" data-delta=\"{}\" data-p=\"{}\" data-winner=\"{}\">\n",
+                  order, c.meanDifference, c.pValue, escapeXml(c.winner));
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& m = *rows[i];
     out += "<tr>";
     if (i == 0) {
-      out += fmt::format(
-          "<th scope=\"rowgroup\" rowspan=\"{}\"><a href=\"#{}\">{}</a></th>", rows.size(),
-          anchorId("ts", scene.name), escapeXml(scene.name));
+      out += fmt::format("<th scope=\"rowgroup\" rowspan=\"{}\"><a href=\"#{}\">{}</a></th>",
+                         rows.size(), anchorId("ts", scene.name), escapeXml(scene.name));
     }
-    out += methodRow(m, rows.size() > 1 && m.coverage.mean == bestCoverage,
-                     rows.size() > 1 && m.utilization.mean == bestUtilization);
+    out += methodRow(m, rows.size() > 1 && &m == bestCoverage,
+                     rows.size() > 1 && &m == bestUtilization);
     if (i == 0) {
       const bool compared = !c.winner.empty();
       out += fmt::format(
@@ -81,7 +96,8 @@ std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
 
 std::string groupTable(SceneGroup group, const ReportData& data) {
   std::map<std::string, std::vector<const results::MethodSummary*>> byScene;
-  for (const auto& m : data.summary.methods) byScene[m.scene].push_back(&m);
+  for (const auto& m : data.summary.methods)
+    byScene[m.scene].push_back(&m);
   std::string bodies;
   int scenes = 0, paperWins = 0, ties = 0, localWins = 0;
   for (std::size_t i = 0; i < data.scenes.size(); ++i) {
@@ -135,7 +151,7 @@ std::string summarySection(const ReportData& data) {
       "coverage minus local's; p is the two-sided Mann-Whitney U test of the two samples; the "
       "winner is the better mean when p &lt; {}, else a tie. Click a column title to sort.</p>\n",
       data.manifest.seeds, data.manifest.parameters.sim.delta, results::kSignificance);
-  for (const SceneGroup group : {SceneGroup::Static, SceneGroup::Dynamic, SceneGroup::Other}) {
+  for (const SceneGroup group : kSceneGroups) {
     out += groupTable(group, data);
   }
   return out + "</section>\n";

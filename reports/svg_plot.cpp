@@ -36,6 +36,18 @@ std::vector<double> tickValues(long long firstIndex, long long lastIndex, double
   return values;
 }
 
+enum class Round { Down, Up };
+
+// floor or ceil of value / step, except that a quotient within rounding error of a whole
+// number is that number: 0.3 / 0.1 is 3, not 2.9999999999999996.
+long long tickIndex(double value, double step, Round round) {
+  const double q = value / step, nearest = std::round(q);
+  if (std::abs(q - nearest) <= 1e-9 * std::max(1.0, std::abs(q))) {
+    return static_cast<long long>(nearest);
+  }
+  return static_cast<long long>(round == Round::Down ? std::floor(q) : std::ceil(q));
+}
+
 std::string polylinePoints(const Chart& chart, std::span<const double> xs,
                            std::span<const double> ys) {
   std::string points;
@@ -73,7 +85,7 @@ double legendEntryWidth(const LegendEntry& e) {
 }  // namespace
 
 Ticks niceTicks(double lo, double hi, int maxTicks) {
-  if (maxTicks < 2) throw std::invalid_argument("niceTicks: maxTicks must be at least 2");
+  if (maxTicks < 3) throw std::invalid_argument("niceTicks: maxTicks must be at least 3");
   if (hi < lo) std::swap(lo, hi);
   if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
     const double pad = lo == 0.0 ? 1.0 : 0.05 * std::abs(lo);
@@ -87,9 +99,8 @@ Ticks niceTicks(double lo, double hi, int maxTicks) {
   for (;; ++exponent) {
     for (const double m : kMantissas) {
       const double step = m * std::pow(10.0, exponent);
-      // The slack absorbs rounding in lo / step when lo is itself a multiple of step.
-      const auto first = static_cast<long long>(std::floor(lo / step + 1e-9));
-      const auto last = static_cast<long long>(std::ceil(hi / step - 1e-9));
+      const long long first = tickIndex(lo, step, Round::Down);
+      const long long last = tickIndex(hi, step, Round::Up);
       if (last - first + 1 > maxTicks) continue;
       Ticks t;
       t.step = step;
@@ -158,7 +169,8 @@ Chart::Chart(ChartSpec spec) : spec_(std::move(spec)) {
   if (categorical) {
     const double slot = (right_ - left_) / static_cast<double>(spec_.categories.size());
     double widest = 0.0;
-    for (const auto& c : spec_.categories) widest = std::max(widest, textWidth(c, kTickFont));
+    for (const auto& c : spec_.categories)
+      widest = std::max(widest, textWidth(c, kTickFont));
     slantCategories_ = widest > slot - 8.0;
     if (slantCategories_) {
       const double a = kSlant * std::numbers::pi / 180.0;
@@ -202,8 +214,9 @@ void Chart::addBand(std::span<const double> xs, std::span<const double> lo,
     ringX.push_back(xs[i]);
     ringY.push_back(lo[i]);
   }
-  marks_ += fmt::format("<polygon fill=\"{}\" fill-opacity=\"{}\" stroke=\"none\" points=\"{}\"/>\n",
-                        color, opacity, polylinePoints(*this, ringX, ringY));
+  marks_ +=
+      fmt::format("<polygon fill=\"{}\" fill-opacity=\"{}\" stroke=\"none\" points=\"{}\"/>\n",
+                  color, opacity, polylinePoints(*this, ringX, ringY));
 }
 
 void Chart::addBox(std::size_t category, double offset, double width, const BoxStats& b,
@@ -230,7 +243,8 @@ void Chart::addBox(std::size_t category, double offset, double width, const BoxS
                    color, px(cx - w / 2), px(y(b.median)), px(w));
   if (!b.outliers.empty()) {
     std::string d;
-    for (const double v : b.outliers) d += plusPath(cx, y(v), 3.5);
+    for (const double v : b.outliers)
+      d += plusPath(cx, y(v), 3.5);
     g += fmt::format("<path class=\"outlier\" stroke=\"{}\" stroke-width=\"1.3\" d=\"{}\"/>", color,
                      d);
   }
@@ -257,7 +271,8 @@ void Chart::addAxisMark(double value, Swatch shape, std::string_view color,
 void Chart::drawYAxis(std::string& out) const {
   for (const double v : yTicks_.values) {
     const double py = y(v);
-    out += fmt::format("<path stroke=\"{}\" d=\"M{} {}H{}\"/>", kGrid, px(left_), px(py), px(right_));
+    out +=
+        fmt::format("<path stroke=\"{}\" d=\"M{} {}H{}\"/>", kGrid, px(left_), px(py), px(right_));
     out += fmt::format("<path stroke=\"{}\" d=\"M{} {}h{}\"/>", kInk, px(left_ - kTickLength),
                        px(py), px(kTickLength));
     out += fmt::format(
@@ -345,9 +360,9 @@ void Chart::drawLegend(std::string& out) const {
         break;
       case Swatch::Plus:
       case Swatch::Cross:
-        out += fmt::format("<path stroke=\"{}\" stroke-width=\"1.6\" d=\"{}\"/>", e.color,
-                           e.swatch == Swatch::Plus ? plusPath(mid, ly, 4.0)
-                                                    : crossPath(mid, ly, 3.5));
+        out += fmt::format(
+            "<path stroke=\"{}\" stroke-width=\"1.6\" d=\"{}\"/>", e.color,
+            e.swatch == Swatch::Plus ? plusPath(mid, ly, 4.0) : crossPath(mid, ly, 3.5));
         break;
     }
     out += fmt::format(

@@ -20,7 +20,7 @@ struct Ticks {
   int decimals = 0;  // digits after the point that tell adjacent ticks apart (labels)
   std::vector<double> values;
 };
-// lo == hi is widened around the value; maxTicks >= 2.
+// lo == hi is widened around the value. maxTicks >= 3: a range across zero needs three.
 Ticks niceTicks(double lo, double hi, int maxTicks = 6);
 
 // Maps the data interval [d0, d1] linearly onto the pixel interval [r0, r1] (r1 < r0 is fine:
@@ -37,7 +37,8 @@ class LinearScale {
 };
 
 // Tukey's box: quartiles interpolated as in results::describe (Hyndman & Fan type 7), whiskers
-// at the most extreme data still within 1.5 IQR of the box, everything beyond an outlier.
+// at the most extreme data still within 1.5 IQR of the box (at the box's edge if no data lies
+// between edge and fence, as matplotlib draws them), everything beyond an outlier.
 struct BoxStats {
   int count = 0;
   double q1 = 0.0;
@@ -86,7 +87,6 @@ class Chart {
   double x(double value) const { return xScale_(value); }
   double y(double value) const { return yScale_(value); }
   double slotWidth() const;  // px of one category slot (categorical axis only)
-  const Ticks& yTicks() const { return yTicks_; }
 
   void addLine(std::span<const double> xs, std::span<const double> ys, std::string_view color,
                double strokeWidth = 1.5, bool dashed = false);
@@ -94,8 +94,8 @@ class Chart {
   void addBand(std::span<const double> xs, std::span<const double> lo, std::span<const double> hi,
                std::string_view color, double opacity = 0.2);
   // A box-and-whisker glyph in category slot `category`, its centre shifted by `offset` slot
-  // widths, `width` slot widths wide, its median a bar in `color`; outliers drawn as "+". `title` becomes its tooltip and
-  // `dataAttributes` (e.g. data-scene="x") tag it for readers and tests.
+  // widths, `width` slot widths wide, its median a bar in `color`; outliers drawn as "+". `title`
+  // becomes its tooltip and `dataAttributes` (e.g. data-scene="x") tag it for readers and tests.
   void addBox(std::size_t category, double offset, double width, const BoxStats& stats,
               std::string_view color, std::string_view title, std::string_view dataAttributes);
   // A mark on the x axis at data x (a Triangle, or a Cross), with a faint vertical guide

@@ -18,7 +18,8 @@ constexpr double kChartWidth = 540.0;
 constexpr double kChartHeight = 250.0;
 
 bool endsWith(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // Events worth a mark, merged per instant so simultaneous plans of several cameras make one
@@ -40,11 +41,13 @@ std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const
       m = {aborted ? Swatch::Cross : Swatch::Triangle, std::string(methodStyle(method).color),
            fmt::format("t = {} s, {}", fixed(e.time, 1), method)};
     }
-    m.tooltip += fmt::format("\n{}{}: {}", e.kind, e.camera >= 0 ? fmt::format(" camera {}", e.camera + 1) : "",
-                             e.detail);
+    m.tooltip +=
+        fmt::format("\n{}{}: {}", e.kind,
+                    e.camera >= 0 ? fmt::format(" camera {}", e.camera + 1) : "", e.detail);
   }
   std::vector<std::pair<double, Mark>> out;
-  for (auto& [key, mark] : marks) out.emplace_back(key.first, std::move(mark));
+  for (auto& [key, mark] : marks)
+    out.emplace_back(key.first, std::move(mark));
   return out;
 }
 
@@ -64,18 +67,21 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
     shown.emplace_back(&it->second, methodStyle(method).color);
     spec.legend.push_back({fmt::format("{}, seed {}", method, it->second.medianSeed),
                            std::string(methodStyle(method).color), Swatch::Line});
-    for (auto& mark : eventMarks(method, it->second)) marks.push_back(std::move(mark));
+    for (auto& mark : eventMarks(method, it->second))
+      marks.push_back(std::move(mark));
   }
   // One legend entry per mark shape, in the colour of the first method that has it.
-  for (const auto& [shape, text] : {std::pair{Swatch::Triangle, "replan"},
-                                    std::pair{Swatch::Cross, "plan aborted"}}) {
-    const auto it = std::find_if(marks.begin(), marks.end(),
-                                 [shape = shape](const auto& m) { return m.second.shape == shape; });
+  for (const auto& [shape, text] :
+       {std::pair{Swatch::Triangle, "replan"}, std::pair{Swatch::Cross, "plan aborted"}}) {
+    const auto it = std::find_if(marks.begin(), marks.end(), [shape = shape](const auto& m) {
+      return m.second.shape == shape;
+    });
     if (it != marks.end()) spec.legend.push_back({text, it->second.color, shape});
   }
   Chart c(spec);
   // Guides under the bands, bands under the lines, the first method's line on top.
-  for (const auto& [t, mark] : marks) c.addAxisMark(t, mark.shape, mark.color, mark.tooltip);
+  for (const auto& [t, mark] : marks)
+    c.addAxisMark(t, mark.shape, mark.color, mark.tooltip);
   for (const auto& [runs, color] : shown) {
     c.addBand(runs->time, (runs->*series).min, (runs->*series).max, color, 0.18);
   }
@@ -87,13 +93,14 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
 
 std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& methods,
                         double duration) {
-  std::string caption;
+  std::vector<std::string> parts;
   for (const auto& method : methods) {
     const auto it = scene.methods.find(method);
     if (it == scene.methods.end()) continue;
-    caption += fmt::format("{}{}: {} seeds, median seed {}", caption.empty() ? "" : "; ", method,
-                           it->second.averageCoverage.size(), it->second.medianSeed);
+    parts.push_back(fmt::format("{}: {} seeds, median seed {}", method,
+                                it->second.averageCoverage.size(), it->second.medianSeed));
   }
+  const std::string caption = join(parts, "; ");
   return fmt::format(
       "<figure class=\"series\" id=\"{}\" data-figure=\"series\" data-scene=\"{}\">\n"
       "<figcaption><b>{}</b> <span class=\"muted\">{} · <a href=\"#{}\">scene</a></span>"

@@ -10,6 +10,8 @@ case "$kind" in
   sanitize) dir="$repo/build-asan"; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
 esac
+# Progress and errors go to stderr, so callers can take the folder from stdout and a log
+# still shows why a build failed.
 cmake -S "$repo" -B "$dir" -G Ninja "${flags[@]}" >/dev/null
-cmake --build "$dir" --parallel "$(nproc)"
+cmake --build "$dir" --parallel "$(nproc)" >&2
 echo "$dir"

@@ -19,6 +19,8 @@ packages=(
   ompl-demos python3                # ompl_benchmark_statistics reads our logs in a test
   time                              # /usr/bin/time in scripts/throughput_benchmark.sh
   libbenchmark-dev                  # Google Benchmark
+  clang libclang-rt-14-dev          # fuzzers: clang with libFuzzer (scripts/fuzz.sh)
+  chromium                          # headless browser test of the HTML report
 )
 
 missing=()

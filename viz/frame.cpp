@@ -8,8 +8,8 @@ namespace {
 void addPaths(const std::vector<scene::MovingObject>& objects, std::vector<ObjectPath>& out) {
   for (const auto& object : objects) {
     if (object.path.size() > 1 || object.angularVelocity != 0.0) {
-      out.push_back({object.path, object.path.size() > 1 ? object.velocity : 0.0,
-                     object.angularVelocity});
+      out.push_back(
+          {object.path, object.path.size() > 1 ? object.velocity : 0.0, object.angularVelocity});
     }
   }
 }

@@ -22,9 +22,9 @@ namespace camcov::viz {
 
 struct CameraView {
   geometry::Pose pose;
-  geometry::Ring view;                // its field of view clipped to what it can see
+  geometry::Ring view;                 // its field of view clipped to what it can see
   std::optional<geometry::Pose> goal;  // where its plan leads, if it follows one
-  std::vector<geometry::Vec2> plan;   // the rest of its planned path, from the camera on
+  std::vector<geometry::Vec2> plan;    // the rest of its planned path, from the camera on
 };
 
 // The closed loop an object's reference point travels (SPEC section 2), for objects that move
@@ -36,9 +36,9 @@ struct ObjectPath {
 };
 
 struct Caption {
-  std::string title;     // the scene's name
-  std::string subtitle;  // what the cameras are doing, e.g. "method paper, seed 1"
-  double time = 0.0;     // s
+  std::string title;         // the scene's name
+  std::string subtitle;      // what the cameras are doing, e.g. "method paper, seed 1"
+  double time = 0.0;         // s
   double coverage = 0.0;     // eq. (3), in [0, 1]
   double utilization = 0.0;  // eq. (5), in [0, 1]
 };

@@ -89,7 +89,8 @@ class Painter {
   void polylinePath(std::span<const Vec2> points) const {
     if (points.empty()) return;
     moveTo(points.front());
-    for (const Vec2& p : points.subspan(1)) lineTo(p);
+    for (const Vec2& p : points.subspan(1))
+      lineTo(p);
   }
   void ringPath(std::span<const Vec2> ring) const {
     polylinePath(ring);
@@ -156,7 +157,7 @@ void drawObjectPaths(const Painter& p, std::span<const ObjectPath> paths) {
 // Where an object path's label and arrow go: the middle of its longest leg, the direction of
 // travel there (image space), the point itself for an object turning in place.
 struct PathAnchor {
-  Vec2 point;     // image px
+  Vec2 point;      // image px
   Vec2 direction;  // unit, image space; zero for a turning object
 };
 
@@ -187,7 +188,8 @@ std::string speedLabel(const ObjectPath& path) {
   return label;
 }
 
-// Drawn last in the world so no shape hides a speed: text on a pale box, beside the path.
+// Drawn over every shape but the cameras and their plans, which matter more: text on a pale
+// box, beside the path.
 void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
   cairo_t* cr = p.cr();
   const double em = p.em(), size = 0.78 * em;
@@ -232,9 +234,11 @@ void drawViews(const Painter& p, std::span<const CameraView> cameras) {
 }
 
 void drawObjects(const Painter& p, const kinematics::World& world) {
-  for (const auto& o : world.obstacles) p.ringPath(o);
+  for (const auto& o : world.obstacles)
+    p.ringPath(o);
   p.fill(kObstacle);
-  for (const auto& t : world.targets) p.ringPath(t);
+  for (const auto& t : world.targets)
+    p.ringPath(t);
   p.fill(kTarget);
 }
 
@@ -310,8 +314,8 @@ void drawCameras(const Painter& p, std::span<const CameraView> cameras) {
 void drawMeter(cairo_t* cr, Vec2 baseline, const std::string& label, double value, Rgb colour,
                double em) {
   text(cr, baseline, label, 0.95 * em, kText);
-  text(cr, {baseline.x + 10.2 * em, baseline.y}, fmt::format("{:.1f} %", 100.0 * value),
-       0.95 * em, kText, Align::Right, true);
+  text(cr, {baseline.x + 10.2 * em, baseline.y}, fmt::format("{:.1f} %", 100.0 * value), 0.95 * em,
+       kText, Align::Right, true);
   const double x = baseline.x + 10.8 * em, y = baseline.y - 0.62 * em;
   const double width = 4.2 * em, height = 0.55 * em;
   cairo_rectangle(cr, x, y, width, height);
@@ -439,9 +443,9 @@ void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
   drawViews(painter, frame.cameras);
   drawObjects(painter, frame.world);
   drawSegments(painter, frame.segments);
+  drawPathLabels(painter, frame.paths);
   drawPlans(painter, frame.cameras);
   drawCameras(painter, frame.cameras);
-  drawPathLabels(painter, frame.paths);
   cairo_restore(cr);
 
   cairo_rectangle(cr, layout.panel.x, layout.panel.y, layout.panel.width, layout.panel.height);
@@ -455,8 +459,9 @@ void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
 }
 
 void writeSvg(const Frame& frame, int width, int height, const std::filesystem::path& file) {
-  // SVG units are points; one point per pixel keeps the SVG the same size as the PNG.
   Surface surface(cairo_svg_surface_create(file.c_str(), width, height));
+  // Pixels rather than Cairo's default points, so a browser shows the SVG as large as the PNG.
+  cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   const auto check = [&] {
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
       throw InputError(file.string() + ": cannot write: " +

@@ -53,8 +53,10 @@ RunScene loadRunScene(const results::RunMetadata& metadata, const std::filesyste
   return {scene::parseScene(text, file.string()), results::fnv1a(text) != metadata.sceneHash};
 }
 
-int recordedFps(const results::RunRecord& run) {
-  return std::max(1, static_cast<int>(std::lround(1.0 / run.metadata.parameters.sim.dt)));
+VideoSettings runVideoSettings(const results::RunRecord& run) {
+  VideoSettings settings;
+  settings.fps = std::max(1, static_cast<int>(std::lround(1.0 / run.metadata.parameters.sim.dt)));
+  return settings;
 }
 
 RunReplay::RunReplay(const results::RunRecord& run, const scene::Scene& scene)
@@ -86,13 +88,14 @@ std::size_t RunReplay::frameCount(int fps) const {
 std::size_t RunReplay::stepOfFrame(std::size_t frame, int fps) const {
   const double t = run_.steps.front().time + static_cast<double>(frame) / fps;
   const auto& steps = run_.steps;
-  const auto after = std::lower_bound(steps.begin(), steps.end(), t,
-                                      [](const auto& step, double time) { return step.time < time; });
+  const auto after =
+      std::lower_bound(steps.begin(), steps.end(), t,
+                       [](const auto& step, double time) { return step.time < time; });
   if (after == steps.end()) return steps.size() - 1;
   if (after == steps.begin()) return 0;
   const auto before = std::prev(after);
-  return static_cast<std::size_t>(
-      (t - before->time <= after->time - t ? before : after) - steps.begin());
+  return static_cast<std::size_t>((t - before->time <= after->time - t ? before : after) -
+                                  steps.begin());
 }
 
 const RunReplay::PlanSpan* RunReplay::planAt(std::size_t camera, double time) const {

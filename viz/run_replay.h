@@ -27,8 +27,8 @@ struct RunScene {
 RunScene loadRunScene(const results::RunMetadata& metadata,
                       const std::filesystem::path& moved = {});
 
-// One frame per recorded step: 1 / dt, rounded, at least 1.
-int recordedFps(const results::RunRecord& run);
+// The default settings with one frame per recorded step: fps = 1 / dt, rounded, at least 1.
+VideoSettings runVideoSettings(const results::RunRecord& run);
 
 class RunReplay {
  public:

@@ -112,8 +112,7 @@ struct VideoEncoder::Impl {
     AVDictionary* options = nullptr;
     av_dict_set(&options, "preset", settings.preset.c_str(), 0);
     av_dict_set(&options, "crf", std::to_string(settings.crf).c_str(), 0);
-    if (const char* e = std::getenv("XP")) av_dict_set(&options, "x264-params", e, 0);  // EXPERIMENT
-    if (const char* e = std::getenv("XPRESET")) av_dict_set(&options, "preset", e, 0);  // EXPERIMENT
+    av_dict_set(&options, "x264-params", settings.x264Params.c_str(), 0);
     const int opened = avcodec_open2(&c, x264, &options);
     av_dict_free(&options);
     check(opened, "opening libx264");
@@ -179,8 +178,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& file, const VideoSetting
   m.partial += ".part";
   m.settings = settings;
   AVFormatContext* format = nullptr;
-  check(avformat_alloc_output_context2(&format, nullptr, "mp4", m.partial.c_str()),
-        "MP4 muxer");
+  check(avformat_alloc_output_context2(&format, nullptr, "mp4", m.partial.c_str()), "MP4 muxer");
   m.format.reset(format);
   m.openCodec();
   m.openFile();

@@ -17,9 +17,12 @@ struct VideoSettings {
   // libx264's constant rate factor, in [0, 51]: lower is sharper and larger. 23 keeps thin
   // lines and small text of 720p frames clean.
   int crf = 23;
-  // libx264's speed/size trade-off; "veryfast" encodes 720p frames of flat drawings several
-  // times faster than real time on one core, at a few percent more bytes than "medium".
-  std::string preset = "veryfast";
+  // libx264's speed/size trade-off, and options on top of it (x264 --help). "superfast" with
+  // the macroblock tree and a 10-frame lookahead put back (as in "veryfast") encodes our flat
+  // drawings about a quarter faster than "veryfast" at about 20 % more bytes; without them
+  // the files double, since the tree is what spends few bits on what does not move.
+  std::string preset = "superfast";
+  std::string x264Params = "mbtree=1:rc-lookahead=10";
   // Encoder threads; 1 by default because batches already run one job per core. 0: automatic.
   int threads = 1;
 };

@@ -30,7 +30,8 @@ int render(const RenderOptions& o) {
   const scene::Scene s = scene::loadScene(o.scene);
   std::vector<geometry::Pose> cameras;
   if (o.camerasFile.empty()) {
-    for (const auto& c : s.cameras) cameras.push_back(c.initial);
+    for (const auto& c : s.cameras)
+      cameras.push_back(c.initial);
   } else {
     cameras = scene::loadCameraPoses(o.camerasFile);
   }
@@ -42,9 +43,8 @@ int render(const RenderOptions& o) {
           ? "cameras at their initial poses"
           : "cameras from " + std::filesystem::path(o.camerasFile).filename().string();
   viz::FrameRenderer(o.width, o.height).write(frame, o.out);
-  std::cout << fmt::format("{} at t = {} s: coverage {:.4f}, utilization {:.4f}\n  -> {}\n",
-                           s.name, o.time, frame.caption.coverage, frame.caption.utilization,
-                           o.out);
+  std::cout << fmt::format("{} at t = {} s: coverage {:.4f}, utilization {:.4f}\n  -> {}\n", s.name,
+                           o.time, frame.caption.coverage, frame.caption.utilization, o.out);
   return 0;
 }
 

@@ -18,8 +18,8 @@ struct ReportOptions {
 };
 
 int report(const ReportOptions& o) {
-  const std::filesystem::path out =
-      o.out.empty() ? std::filesystem::path(o.results) / "report.html" : std::filesystem::path(o.out);
+  const std::filesystem::path out = o.out.empty() ? std::filesystem::path(o.results) / "report.html"
+                                                  : std::filesystem::path(o.out);
   reports::writeReport(o.results, out);
   std::cout << fmt::format("wrote {}\n", out.string());
   return 0;

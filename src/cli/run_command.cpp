@@ -39,7 +39,8 @@ int run(const RunOptions& o) {
       record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization, s.duration,
       s.minObjectDistance, s.objectCollisionTime, file.string());
   if (!o.video.empty()) {
-    viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video, {});
+    viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,
+                       viz::runVideoSettings(record));
     std::cout << "  -> " << o.video << "\n";
   }
   return 0;

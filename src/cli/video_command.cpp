@@ -27,8 +27,8 @@ struct VideoOptions {
 int video(const VideoOptions& o) {
   viz::requireMp4(o.out);
   if (o.width % 2 != 0 || o.height % 2 != 0) {
-    throw InputError(fmt::format("--width {} --height {}: H.264 (yuv420p) needs even sizes",
-                                 o.width, o.height));
+    throw InputError(
+        fmt::format("--width {} --height {}: H.264 (yuv420p) needs even sizes", o.width, o.height));
   }
   const results::RunRecord run = results::loadRunFile(o.results);
   if (o.scene.empty() && !std::filesystem::exists(run.metadata.sceneFile)) {
@@ -40,10 +40,10 @@ int video(const VideoOptions& o) {
     std::cerr << "warning: the scene file has changed since the run; the video shows the scene "
                  "as it is now\n";
   }
-  viz::VideoSettings settings;
+  viz::VideoSettings settings = viz::runVideoSettings(run);
   settings.width = o.width;
   settings.height = o.height;
-  settings.fps = o.fps > 0 ? o.fps : viz::recordedFps(run);
+  if (o.fps > 0) settings.fps = o.fps;
   const std::size_t frames = viz::writeRunVideo(run, scene.scene, o.out, settings);
   std::cout << fmt::format("{} {} seed {}: {} frames at {} fps\n  -> {}\n", run.metadata.scene,
                            run.metadata.method, run.metadata.seed, frames, settings.fps, o.out);

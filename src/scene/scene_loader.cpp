@@ -41,7 +41,9 @@ class Node {
 
   const json& object(std::initializer_list<const char*> allowedKeys) const {
     if (!value_.is_object()) fail("expected an object, found " + typeName());
-    for (const auto& [key, unused] : value_.items()) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    for (const auto& item : value_.items()) {
+      const std::string& key = item.key();
       if (std::none_of(allowedKeys.begin(), allowedKeys.end(),
                        [&](const char* k) { return key == k; })) {
         std::string allowed;
@@ -67,21 +69,34 @@ class Node {
     return value_.get<std::string>();
   }
   std::vector<geometry::Vec2> wktRing() const {
+    std::vector<geometry::Vec2> ring;
     try {
-      return parseWktPolygonRing(string());
+      ring = parseWktPolygonRing(string());
     } catch (const WktError& e) {
       fail(e.what());
     }
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      requireWithinRange(ring[i], i);
+    return ring;
   }
   geometry::Vec2 wktPoint() const {
+    geometry::Vec2 point;
     try {
-      return parseWktPoint(string());
+      point = parseWktPoint(string());
     } catch (const WktError& e) {
       fail(e.what());
     }
+    requireWithinRange(point, 0);
+    return point;
   }
 
  private:
+  void requireWithinRange(geometry::Vec2 v, std::size_t index) const {
+    if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate) {
+      fail(fmt::format("coordinate {} ({} {}) lies beyond ±{:g} m", index, v.x, v.y,
+                       kMaxCoordinate));
+    }
+  }
   std::string join(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
   std::string typeName() const { return value_.type_name(); }
 
@@ -127,6 +142,17 @@ double positive(const Node& node, const char* what) {
   return v;
 }
 
+double speed(const Node& node, const char* what) {
+  const double v = node.number();
+  if (std::abs(v) > kMaxSpeed) node.fail(fmt::format("{} {} exceeds {:g}", what, v, kMaxSpeed));
+  return v;
+}
+
+double positiveSpeed(const Node& node, const char* what) {
+  positive(node, what);
+  return speed(node, what);
+}
+
 Deformation deformation(const Node& node, const geometry::Ring& writtenShape) {
   node.object({"period", "keyframes"});
   Deformation result;
@@ -168,8 +194,9 @@ MovingObject movingObject(const Node& node) {
   const Node shapeNode = node.child("shape");
   object.shape = simpleRing(shapeNode);
   object.path = path(node.child("path"));
-  if (node.has("velocity")) object.velocity = positive(node.child("velocity"), "velocity");
-  if (node.has("angularVelocity")) object.angularVelocity = node.child("angularVelocity").number();
+  if (node.has("velocity")) object.velocity = positiveSpeed(node.child("velocity"), "velocity");
+  if (node.has("angularVelocity"))
+    object.angularVelocity = speed(node.child("angularVelocity"), "angularVelocity");
   if (node.has("deformation")) {
     // Keyframes correspond vertex by vertex to the shape as written; normalise them together.
     geometry::Ring written = shapeNode.wktRing();
@@ -201,8 +228,8 @@ CameraSpec camera(const Node& node) {
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
-  camera.maxVelocity = positive(node.child("maxVelocity"), "maxVelocity");
-  camera.maxAngularVelocity = positive(node.child("maxAngularVelocity"), "maxAngularVelocity");
+  camera.maxVelocity = positiveSpeed(node.child("maxVelocity"), "maxVelocity");
+  camera.maxAngularVelocity = positiveSpeed(node.child("maxAngularVelocity"), "maxAngularVelocity");
   return camera;
 }
 

@@ -12,6 +12,12 @@ namespace camcov::scene {
 // The visibility sweep keeps visibleBy(s_l) as a 64-bit mask.
 inline constexpr std::size_t kMaxCameras = 64;
 
+// Bounds on magnitudes: far beyond any camera scene, and small enough that nothing computed
+// from them overflows (areas and orientation tests multiply coordinates; placing an object
+// multiplies speeds by times up to 1e9 s).
+inline constexpr double kMaxCoordinate = 1e9;  // m, |x| and |y| of every WKT coordinate
+inline constexpr double kMaxSpeed = 1e9;       // m/s and rad/s, every velocity, either sign
+
 // Zero-length edges, zero area, self-intersections. Empty string for a simple polygon.
 std::string describeRingDefect(const geometry::Ring& ring);
 

@@ -2,7 +2,9 @@
 
 // Boost 1.74's WKT reader trips GCC 12's -Wmaybe-uninitialized inside its own ring appender
 // (a false positive in a header we do not own); this file holds nothing else to hide.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>

@@ -68,8 +68,9 @@ std::string consoleErrors(const fs::path& page, const fs::path& scratch) {
   const fs::path copy = page.parent_path() / ("instrumented-" + page.filename().string());
   std::ofstream(copy, std::ios::binary) << html;
   // The virtual time budget lets late events (media metadata, timers) happen before the dump.
-  const auto r = runChromium(scratch / "profile-dom",
-                             "--virtual-time-budget=3000 --dump-dom 'file://" + copy.string() + "'");
+  const auto r =
+      runChromium(scratch / "profile-dom",
+                  "--virtual-time-budget=3000 --dump-dom 'file://" + copy.string() + "'");
   fs::remove(copy);
   if (r.exitCode != 0) return "chromium failed (exit " + std::to_string(r.exitCode) + "): " + r.err;
   if (r.out.find("data-test-loaded=\"1\"") == std::string::npos) {
@@ -98,13 +99,14 @@ TEST_F(Browser, OpensTheReportWithoutConsoleErrorsAndTakesScreenshots) {
 
   fs::create_directories(kScreenshots);
   // A laptop's first screen, and the whole page for a person to look at.
-  for (const auto& [name, size] : {std::pair{"report-laptop.png", "1366,900"},
-                                   std::pair{"report-full.png", "1366,5200"}}) {
+  for (const auto& [name, size] :
+       {std::pair{"report-laptop.png", "1366,900"}, std::pair{"report-full.png", "1366,5200"}}) {
     const fs::path shot = kScreenshots / name;
     fs::remove(shot);
-    const auto r = runChromium(dir_ / ("profile-" + std::string(name)),
-                               "--window-size=" + std::string(size) + " --screenshot=" +
-                                   shot.string() + " 'file://" + report.string() + "'");
+    const auto r =
+        runChromium(dir_ / ("profile-" + std::string(name)),
+                    "--window-size=" + std::string(size) + " --screenshot=" + shot.string() +
+                        " 'file://" + report.string() + "'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_TRUE(fs::exists(shot)) << r.err;
     EXPECT_EQ(readFile(shot).substr(1, 3), "PNG");

@@ -107,7 +107,8 @@ TEST(ReportData, FoldsEverySeedAndKeepsTheMedianRun) {
           EXPECT_GE(band->max[k], band->median[k]);
         }
       }
-      for (const auto& e : runs.events) EXPECT_TRUE(e.path.empty()) << "paths are dropped";
+      for (const auto& e : runs.events)
+        EXPECT_TRUE(e.path.empty()) << "paths are dropped";
     }
   }
   EXPECT_TRUE(data.videos.empty());

@@ -39,9 +39,10 @@ inline const char* const kFixtureScenes[] = {"tiny_dynamic", "tiny_static"};
 
 // `camcov bench` into `out`; extra arguments (e.g. --no-report) are appended.
 inline CommandResult benchFixture(const std::filesystem::path& out, const std::string& extra = "") {
-  return runCamcov("bench --scenes " + (testDataDir() / "scenes").string() +
-                   " --seeds 3 --duration 2 --set global.K=30 --set planner.T2=0.05 --jobs 2 --out " +
-                   out.string() + " " + extra);
+  return runCamcov(
+      "bench --scenes " + (testDataDir() / "scenes").string() +
+      " --seeds 3 --duration 2 --set global.K=30 --set planner.T2=0.05 --jobs 2 --out " +
+      out.string() + " " + extra);
 }
 
 inline std::string readFile(const std::filesystem::path& file) {
@@ -53,7 +54,8 @@ inline std::string readFile(const std::filesystem::path& file) {
 
 inline int countOf(const std::string& text, const std::string& needle) {
   int n = 0;
-  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+    ++n;
   return n;
 }
 

@@ -4,7 +4,8 @@
 // HTML, and the same bytes from the same folder except the build date and machine.
 #include <gtest/gtest.h>
 
-#include <regex>
+#include <algorithm>
+#include <cctype>
 #include <set>
 #include <vector>
 
@@ -47,7 +48,8 @@ std::string nestingError(const std::string& html) {
     const bool closing = html[at + 1] == '/';
     const std::size_t nameStart = at + (closing ? 2 : 1);
     std::size_t nameEnd = nameStart;
-    while (nameEnd < end && std::isalnum(static_cast<unsigned char>(html[nameEnd]))) ++nameEnd;
+    while (nameEnd < end && std::isalnum(static_cast<unsigned char>(html[nameEnd])))
+      ++nameEnd;
     const std::string name = html.substr(nameStart, nameEnd - nameStart);
     if (name.empty()) return "stray '<' at offset " + std::to_string(at);
     if (closing) {
@@ -68,6 +70,15 @@ std::string nestingError(const std::string& html) {
   return open.empty() ? std::string() : "unclosed <" + open.back() + ">";
 }
 
+// `html` without the header's date and machine lines.
+std::string withoutBuildContext(std::string html) {
+  for (const char* term : {"<dt>Report built</dt>", "<dt>Machine</dt>"}) {
+    const auto at = html.find(term);
+    if (at != std::string::npos) html.erase(at, html.find('\n', at) - at);
+  }
+  return html;
+}
+
 TEST(Report, BenchWritesItWithEverySceneInEverySection) {
   const ScratchDir dir;
   const auto r = benchFixture(dir / "results");
@@ -81,14 +92,14 @@ TEST(Report, BenchWritesItWithEverySceneInEverySection) {
                       "data-figure=\"series\" data-scene=\"" + scene + "\""),
               1)
         << scene;
-    EXPECT_EQ(countOf(section(html, "scenes"), "data-figure=\"scene\" data-scene=\"" + scene + "\""),
-              1)
+    EXPECT_EQ(
+        countOf(section(html, "scenes"), "data-figure=\"scene\" data-scene=\"" + scene + "\""), 1)
         << scene;
     for (const char* method : {"paper", "local"}) {
-      EXPECT_EQ(countOf(section(html, "box-plots"),
-                        "data-metric=\"coverage\" data-scene=\"" + scene + "\" data-method=\"" +
-                            method + "\""),
-                1)
+      EXPECT_EQ(
+          countOf(section(html, "box-plots"), "data-metric=\"coverage\" data-scene=\"" + scene +
+                                                  "\" data-method=\"" + method + "\""),
+          1)
           << scene << " " << method;
     }
   }
@@ -137,9 +148,9 @@ TEST(Report, FetchesNothingAndNestsWell) {
   EXPECT_NE(html.find("Content-Security-Policy\" content=\"default-src 'none'"), std::string::npos);
   EXPECT_EQ(nestingError(html), "");
   for (const char* tag : {"html", "head", "body", "main", "section", "figure", "svg", "table"}) {
-    EXPECT_EQ(countOf(html, std::string("<") + tag + ">") +
-                  countOf(html, std::string("<") + tag + " "),
-              countOf(html, std::string("</") + tag + ">"))
+    EXPECT_EQ(
+        countOf(html, std::string("<") + tag + ">") + countOf(html, std::string("<") + tag + " "),
+        countOf(html, std::string("</") + tag + ">"))
         << tag;
   }
 }
@@ -186,7 +197,8 @@ TEST(Report, ReportCommandWritesWhereAskedAndEmbedsVideosByRelativeUrl) {
   EXPECT_NE(videos.find("src=\"videos/tiny_static-paper-seed1.mp4\""), std::string::npos);
   EXPECT_NE(videos.find("src=\"videos/tiny_static.mp4\""), std::string::npos);
 
-  r = runCamcov("report " + (dir / "results").string() + " -o " + (dir / "out" / "r.html").string());
+  r = runCamcov("report " + (dir / "results").string() + " -o " +
+                (dir / "out" / "r.html").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(readFile(dir / "out" / "r.html").find("src=\"../results/videos/tiny_static.mp4\""),
             std::string::npos);
@@ -202,8 +214,8 @@ TEST(Report, MergeWritesItWithAFailedJobsSection) {
   std::ofstream(dir / "results" / "runs" / "tiny_static-paper-seed4.error.json")
       << R"({"format": "camcov-failure/1", "scene": "tiny_static", "method": "paper", "seed": 4,
             "error": "planner <exploded>"})";
-  const auto r = runCamcov("merge " + (dir / "results").string() + " --out " +
-                           (dir / "merged").string());
+  const auto r =
+      runCamcov("merge " + (dir / "results").string() + " --out " + (dir / "merged").string());
   EXPECT_EQ(r.exitCode, 1) << "a failed job: " << r.err;
   const std::string html = readFile(dir / "merged" / "report.html");
   const std::string failures = section(html, "failures");
@@ -219,12 +231,11 @@ TEST(Report, SameFolderSameBytesButTheBuildContext) {
   const reports::ReportData data = reports::loadReportData(dir / "results", file);
   const reports::BuildContext context{"2000-01-01 00:00 UTC", "host", "cpu", 4};
   const std::string html = reports::buildReportHtml(data, context);
-  EXPECT_EQ(html, reports::buildReportHtml(reports::loadReportData(dir / "results", file), context));
+  EXPECT_EQ(html,
+            reports::buildReportHtml(reports::loadReportData(dir / "results", file), context));
 
   // The file camcov wrote differs only in the date and machine lines.
-  const std::regex volatileLines("<dt>(Report built|Machine)</dt><dd>[^\n]*");
-  EXPECT_EQ(std::regex_replace(readFile(file), volatileLines, ""),
-            std::regex_replace(html, volatileLines, ""));
+  EXPECT_EQ(withoutBuildContext(readFile(file)), withoutBuildContext(html));
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 #include <limits>
 #include <random>
 
-#include "reports/markup.h"
 #include "report_fixture.h"
+#include "reports/markup.h"
 
 namespace camcov::reports {
 namespace {
@@ -41,7 +41,7 @@ TEST(NiceTicks, CoverTheDataWithFewNiceEvenlySpacedTicks) {
   std::mt19937 rng(7);
   // Moderate magnitudes: lo / step stays far from where doubles lose whole units.
   std::uniform_real_distribution<double> centre(-100.0, 100.0), logSpan(-2.0, 4.0);
-  std::uniform_int_distribution<int> maxTicks(2, 12);
+  std::uniform_int_distribution<int> maxTicks(3, 12);
   for (int trial = 0; trial < 2000; ++trial) {
     const double span = std::pow(10.0, logSpan(rng));
     const double lo = centre(rng), hi = lo + span;
@@ -56,7 +56,7 @@ TEST(NiceTicks, CoverTheDataWithFewNiceEvenlySpacedTicks) {
     }
     // The step is the finest nice one that fits: the next finer would need too many ticks.
     const double finer = t.step / (isNiceStep(t.step / 2) ? 2.0 : 2.5);
-    const double needed = std::ceil(hi / finer - 1e-9) - std::floor(lo / finer + 1e-9) + 1;
+    const double needed = std::ceil(hi / finer) - std::floor(lo / finer) + 1;
     ASSERT_GT(needed, n) << lo << ".." << hi << " step " << t.step;
   }
 }
@@ -66,7 +66,8 @@ TEST(NiceTicks, LabelsTellTicksApart) {
   EXPECT_LE(t.first, 0.21);
   EXPECT_GE(t.last, 0.99);
   std::vector<std::string> labels;
-  for (const double v : t.values) labels.push_back(fixed(v, t.decimals));
+  for (const double v : t.values)
+    labels.push_back(fixed(v, t.decimals));
   EXPECT_EQ(labels, (std::vector<std::string>{"0.2", "0.4", "0.6", "0.8", "1.0"}));
   const Ticks small = niceTicks(0.0, 0.013, 6);
   EXPECT_EQ(fixed(small.values[1], small.decimals), "0.005");
@@ -114,9 +115,19 @@ TEST(BoxStats, AValueOnTheFenceIsNoOutlier) {
 TEST(BoxStats, OutliersOnBothSidesAscending) {
   const std::vector<double> v{-50.0, 10.0, 11.0, 12.0, 13.0, 14.0, 60.0, 55.0};
   const BoxStats b = boxStats(v);
+  EXPECT_DOUBLE_EQ(b.q1, 10.75);
+  EXPECT_DOUBLE_EQ(b.q3, 24.25);  // fences -9.5 and 44.5
   EXPECT_EQ(b.outliers, (std::vector<double>{-50.0, 55.0, 60.0}));
   EXPECT_DOUBLE_EQ(b.whiskerLow, 10.0);
-  EXPECT_DOUBLE_EQ(b.whiskerHigh, 14.0);
+  EXPECT_DOUBLE_EQ(b.whiskerHigh, 24.25) << "no run between q3 and the fence: the box's edge";
+}
+
+TEST(NiceTicks, ThreeTicksSpanZero) {
+  const Ticks t = niceTicks(-90.4, 9800.8, 3);
+  EXPECT_LE(t.first, -90.4);
+  EXPECT_GE(t.last, 9800.8);
+  EXPECT_EQ(t.values.size(), 3u);
+  EXPECT_THROW(niceTicks(0.0, 1.0, 2), std::invalid_argument);
 }
 
 TEST(BoxStats, EqualRunsCollapseToOneValue) {
@@ -144,8 +155,8 @@ TEST(Chart, HasBothAxesWithTickLabelsAxisLabelsAndLegend) {
   const std::string svg = chart.svg();
   EXPECT_EQ(svg.rfind("<svg class=\"chart\"", 0), 0u);
   EXPECT_EQ(countOf(svg, "<text class=\"tick\""), 7 + 6) << "0, 5, ..., 30 and 0, 0.2, ..., 1";
-  for (const char* label : {">0<", ">30<", ">0.0<", ">1.0<", ">time, s<", ">coverage<", ">paper<",
-                            ">a&lt;b<"}) {
+  for (const char* label :
+       {">0<", ">30<", ">0.0<", ">1.0<", ">time, s<", ">coverage<", ">paper<", ">a&lt;b<"}) {
     EXPECT_NE(svg.find(label), std::string::npos) << label;
   }
   EXPECT_EQ(svg.find("http"), std::string::npos) << "inline SVG needs no namespace URL";
@@ -164,7 +175,8 @@ TEST(Chart, MapsDataIntoThePlotArea) {
 
 TEST(Chart, DrawsLinesBandsAndAxisMarks) {
   Chart chart(timeChart());
-  const std::vector<double> t{0.0, 10.0, 20.0, 30.0}, lo{0.1, 0.2, 0.2, 0.3}, hi{0.4, 0.5, 0.6, 0.9};
+  const std::vector<double> t{0.0, 10.0, 20.0, 30.0}, lo{0.1, 0.2, 0.2, 0.3},
+      hi{0.4, 0.5, 0.6, 0.9};
   chart.addBand(t, lo, hi, "#ff7f0e");
   chart.addLine(t, hi, "#ff7f0e");
   chart.addAxisMark(5.0, Swatch::Triangle, "#ff7f0e", "t = 5 s: replan");
@@ -194,7 +206,8 @@ TEST(Chart, CategoricalAxisPlacesOneSlotPerNameAndBoxesInThem) {
   EXPECT_EQ(countOf(svg, "class=\"outlier\""), 1) << "0.1 lies below the lower fence";
   EXPECT_NE(svg.find("data-scene=\"c\""), std::string::npos);
   EXPECT_EQ(svg.find("rotate(-40)"), std::string::npos) << "short names stay level";
-  for (const char* name : {">a<", ">b<", ">c<", ">d<"}) EXPECT_NE(svg.find(name), std::string::npos);
+  for (const char* name : {">a<", ">b<", ">c<", ">d<"})
+    EXPECT_NE(svg.find(name), std::string::npos);
 }
 
 TEST(Chart, LongCategoryNamesSlant) {

@@ -5,10 +5,12 @@
 // CAMCOV_VISIBILITY_CASE=<index> runs only that one, to debug a failure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "random_scenes.h"
 #include "reference_visibility.h"
@@ -133,7 +135,7 @@ TEST(RandomConfigurations, SweepAgreesWithReferenceOnLengthsAndUtilization) {
   Occluders occluders;
   std::vector<Segment> segments;
   int failures = 0;
-  for (std::uint64_t index = 0; index < count && failures < 40; ++index) {
+  for (std::uint64_t index = 0; index < count && failures < 10; ++index) {
     if (only != ~std::uint64_t{0} && index != only) continue;
     const testing::Case c = testing::randomCase(kSeed, index);
     occluders.build(c.world);

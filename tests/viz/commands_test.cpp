@@ -28,8 +28,8 @@ std::string head(const std::filesystem::path& file, std::size_t n) {
 TEST(RenderCommand, WritesPngOrSvgByExtension) {
   ScratchDir dir;
   for (const char* name : {"f.png", "f.svg"}) {
-    const auto r = runCamcov("render " + quoted(tinyScene()) + " --time 1 --width 640 --height 360 -o " +
-                             quoted(dir / name));
+    const auto r = runCamcov("render " + quoted(tinyScene()) +
+                             " --time 1 --width 640 --height 360 -o " + quoted(dir / name));
     EXPECT_EQ(r.exitCode, 0) << r.err;
   }
   EXPECT_EQ(head(dir / "f.png", 8), "\x89PNG\r\n\x1a\n");
@@ -106,9 +106,9 @@ TEST_F(RecordedRun, BadInputsExitTwo) {
             2);  // a scene is not a results file
   EXPECT_EQ(runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "f.jpg")).exitCode,
             2);
-  EXPECT_EQ(runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "no" / "f.png"))
-                .exitCode,
-            2);
+  EXPECT_EQ(
+      runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "no" / "f.png")).exitCode,
+      2);
   // Rejected before the simulation runs: no results are written.
   EXPECT_EQ(runCamcov("run " + quoted(tinyScene()) + " --duration 1 --out " +
                       quoted(dir_ / "other") + " --video " + quoted(dir_ / "v.avi"))

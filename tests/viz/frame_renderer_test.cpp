@@ -48,8 +48,8 @@ class TinyFrame : public ::testing::Test {
   Colour at(Vec2 world) const {
     const Vec2 p = renderer_.layoutOf(frame_).toImage(world);
     cairo_surface_t* s = png_.get();
-    const unsigned char* row = cairo_image_surface_get_data(s) +
-                               static_cast<int>(p.y) * cairo_image_surface_get_stride(s);
+    const unsigned char* row =
+        cairo_image_surface_get_data(s) + static_cast<int>(p.y) * cairo_image_surface_get_stride(s);
     std::uint32_t word;
     std::memcpy(&word, row + 4 * static_cast<int>(p.x), 4);
     return {((word >> 16) & 255) / 255.0, ((word >> 8) & 255) / 255.0, (word & 255) / 255.0};
@@ -104,12 +104,13 @@ TEST_F(TinyFrame, SvgHoldsTheSameDrawingAsVectors) {
   const std::string svg = text.str();
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
-  EXPECT_NE(svg.find("width=\"800pt\" height=\"600pt\""), std::string::npos);
+  EXPECT_NE(svg.find("width=\"800px\" height=\"600px\""), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   // Vectors, not an embedded raster.
   EXPECT_EQ(svg.find("<image"), std::string::npos);
   std::size_t paths = 0;
-  for (auto i = svg.find("<path"); i != std::string::npos; i = svg.find("<path", i + 1)) ++paths;
+  for (auto i = svg.find("<path"); i != std::string::npos; i = svg.find("<path", i + 1))
+    ++paths;
   EXPECT_GT(paths, 20u);
   // Text (caption, legend) as glyphs.
   EXPECT_NE(svg.find("<use xlink:href=\"#glyph"), std::string::npos);

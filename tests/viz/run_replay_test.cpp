@@ -37,9 +37,10 @@ class TinyRun : public ::testing::Test {
 
 TEST_F(TinyRun, OneFramePerStepAtTheRecordedRate) {
   RunReplay replay(run_, scene_);
-  EXPECT_EQ(recordedFps(run_), 10);
+  EXPECT_EQ(runVideoSettings(run_).fps, 10);
   EXPECT_EQ(replay.frameCount(10), 31u);
-  for (std::size_t k = 0; k < 31; ++k) EXPECT_EQ(replay.stepOfFrame(k, 10), k);
+  for (std::size_t k = 0; k < 31; ++k)
+    EXPECT_EQ(replay.stepOfFrame(k, 10), k);
 }
 
 TEST_F(TinyRun, HigherRatesHoldStepsAndLowerRatesSkipThem) {
@@ -78,12 +79,12 @@ TEST_F(TinyRun, RunWithAnotherCameraCountIsAnInputError) {
   EXPECT_THROW(RunReplay(run_, scene_), InputError);
 }
 
-TEST(RecordedFps, IsOneOverDtRounded) {
+TEST(RunVideoSettings, ShowEachStepOnceAtOneOverDtFramesPerSecond) {
   results::RunRecord run;
   run.metadata.parameters.sim.dt = 0.04;
-  EXPECT_EQ(recordedFps(run), 25);
+  EXPECT_EQ(runVideoSettings(run).fps, 25);
   run.metadata.parameters.sim.dt = 3.0;
-  EXPECT_EQ(recordedFps(run), 1);
+  EXPECT_EQ(runVideoSettings(run).fps, 1);
 }
 
 TEST(LoadRunScene, NoticesAChangedSceneFile) {

@@ -40,7 +40,8 @@ TEST(VideoEncoder, WritesH264Yuv420pWithOneFramePerCallAndTheIndexFirst) {
   const auto file = dir / "clip.mp4";
   Frames frames(64, 48);
   VideoEncoder encoder(file, small(4));
-  for (int k = 0; k < 12; ++k) encoder.addFrame(frames.frame(k));
+  for (int k = 0; k < 12; ++k)
+    encoder.addFrame(frames.frame(k));
   encoder.finish();
   EXPECT_EQ(encoder.frames(), 12);
   EXPECT_FALSE(std::filesystem::exists(dir / "clip.mp4.part"));

@@ -43,7 +43,7 @@ struct VideoFacts {
   std::string pixelFormat;
   int width = 0;
   int height = 0;
-  int frames = 0;  // decoded, not taken from the header
+  int frames = 0;         // decoded, not taken from the header
   double duration = 0.0;  // s
 };
 
@@ -57,7 +57,8 @@ inline VideoFacts probeVideo(const std::filesystem::path& file) {
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
     std::array<char, 4096> buffer;
     std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+      out.append(buffer.data(), n);
     EXPECT_EQ(::pclose(pipe), 0) << command << "\n" << out;
   }
   VideoFacts facts;
@@ -86,13 +87,14 @@ inline std::vector<std::string> topLevelBoxes(const std::filesystem::path& file)
     unsigned char header[16];
     in.seekg(static_cast<std::streamoff>(offset));
     in.read(reinterpret_cast<char*>(header), 8);
-    std::uint64_t size = (std::uint64_t{header[0]} << 24) | (header[1] << 16) | (header[2] << 8) |
-                         header[3];
+    std::uint64_t size =
+        (std::uint64_t{header[0]} << 24) | (header[1] << 16) | (header[2] << 8) | header[3];
     boxes.emplace_back(reinterpret_cast<char*>(header + 4), 4);
     if (size == 1) {  // 64-bit size follows the type
       in.read(reinterpret_cast<char*>(header + 8), 8);
       size = 0;
-      for (int i = 8; i < 16; ++i) size = (size << 8) | header[i];
+      for (int i = 8; i < 16; ++i)
+        size = (size << 8) | header[i];
     }
     if (size < 8) break;  // 0: to the end of the file
     offset += size;
