@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the whole test suite: once in the Release build,
-# then again under AddressSanitizer + UndefinedBehaviorSanitizer (skip that with --fast).
+# then again under AddressSanitizer + UndefinedBehaviorSanitizer, then a short libFuzzer run
+# (skip both with --fast).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$repo/scripts/install_deps.sh"
@@ -20,3 +21,5 @@ for kind in "${kinds[@]}"; do
   echo "== $kind tests"
   ctest --test-dir "$dir" --parallel "$(nproc)" --output-on-failure --timeout 900
 done
+# A short fuzz of the scene loader and the visibility sweep, same inputs every time.
+[ "${1:-}" = "--fast" ] || "$repo/scripts/fuzz.sh" 30000

@@ -13,6 +13,18 @@
 #include "viz/file_extension.h"
 #include "viz/frame_layout.h"
 
+#if defined(__SANITIZE_ADDRESS__)
+// Fontconfig keeps the font patterns Cairo's text matched in a cache that only FcFini()
+// frees, and nothing calls that before exit: LeakSanitizer would report the cache as a leak
+// of every program that draws a caption. Suppressed here, where the text is drawn.
+extern "C" const char* __lsan_default_suppressions() {
+  return "leak:libfontconfig.so\n";
+}
+extern "C" const char* __lsan_default_options() {
+  return "print_suppressions=0";
+}
+#endif
+
 namespace camcov::viz {
 namespace {
 
@@ -40,6 +52,10 @@ constexpr Rgb kMutedText{0.38, 0.41, 0.46};
 constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
 
 constexpr double kViewAlpha = 0.28;
+// Line widths in em, shared by the drawing and its legend sample.
+constexpr double kSegmentWidth = 0.3;
+constexpr double kPlanWidth = 0.14;
+constexpr double kObjectPathWidth = 0.09;
 constexpr const char* kFont = "sans-serif";
 
 // The caption's rows are drawPanel's; the legend has one row per entry.
@@ -59,10 +75,10 @@ void setColour(cairo_t* cr, Rgb c, double alpha = 1.0) {
 
 enum class Align { Left, Centre, Right };
 
-// Text with its baseline at `at`; returns its advance width. The toy text API is enough for
-// one-line labels and needs no layout library.
-double text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour,
-            Align align = Align::Left, bool bold = false) {
+// Text with its baseline at `at`. The toy text API is enough for one-line labels and needs
+// no layout library.
+void text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour,
+          Align align = Align::Left, bool bold = false) {
   cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
@@ -74,7 +90,6 @@ double text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour,
   cairo_move_to(cr, at.x - shift, at.y);
   setColour(cr, colour);
   cairo_show_text(cr, s.c_str());
-  return extents.x_advance;
 }
 
 // Draws in image pixels; world points go through the layout's transform.
@@ -100,10 +115,6 @@ class Painter {
     moveTo(a);
     lineTo(b);
   }
-  void circle(Vec2 centreImage, double radius) const {
-    cairo_new_sub_path(cr_);
-    cairo_arc(cr_, centreImage.x, centreImage.y, radius, 0.0, 2.0 * std::numbers::pi);
-  }
   void fill(Rgb colour, double alpha = 1.0) const {
     setColour(cr_, colour, alpha);
     cairo_fill(cr_);
@@ -128,6 +139,12 @@ class Painter {
   const FrameLayout& layout_;
 };
 
+// Object paths are dashed: they are where things will be, not where they are.
+void setPathDash(cairo_t* cr, double em) {
+  const double dash[] = {0.35 * em, 0.25 * em};
+  cairo_set_dash(cr, dash, 2, 0.0);
+}
+
 // Image-space direction of a world heading (the image's y runs down).
 Vec2 imageHeading(double yaw) {
   return {std::cos(yaw), -std::sin(yaw)};
@@ -144,14 +161,13 @@ void drawArena(const Painter& p, const kinematics::World& world) {
 // Thin dashed loops with an arrow in the direction of travel on the longest leg.
 void drawObjectPaths(const Painter& p, std::span<const ObjectPath> paths) {
   cairo_t* cr = p.cr();
-  const double dash[] = {0.35 * p.em(), 0.25 * p.em()};
+  setPathDash(cr, p.em());
   for (const ObjectPath& path : paths) {
     if (path.waypoints.size() < 2) continue;
-    cairo_set_dash(cr, dash, 2, 0.0);
     p.ringPath(path.waypoints);
-    p.stroke(kObjectPath, 0.09);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
+    p.stroke(kObjectPath, kObjectPathWidth);
   }
+  cairo_set_dash(cr, nullptr, 0, 0.0);
 }
 
 // Where an object path's label and arrow go: the middle of its longest leg, the direction of
@@ -250,13 +266,13 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
     for (const auto& s : segments) {
       if ((s.visibleBy != 0) == seen) p.linePath(s.a, s.b);
     }
-    p.stroke(seen ? kSeen : kUnseen, 0.3);
+    p.stroke(seen ? kSeen : kUnseen, kSegmentWidth);
   }
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 }
 
-// A ring with a tick in the goal's heading.
-void drawGoalMarker(cairo_t* cr, Vec2 at, double yaw, double em) {
+// A ring with a tick in the goal's heading, as a path for the caller to stroke.
+void goalMarkerPath(cairo_t* cr, Vec2 at, double yaw, double em) {
   const Vec2 tip = at + imageHeading(yaw) * (1.0 * em);
   cairo_new_sub_path(cr);
   cairo_arc(cr, at.x, at.y, 0.42 * em, 0.0, 2.0 * std::numbers::pi);
@@ -270,11 +286,11 @@ void drawPlans(const Painter& p, std::span<const CameraView> cameras) {
   for (const CameraView& c : cameras) {
     if (c.plan.size() >= 2) {
       p.polylinePath(c.plan);
-      p.stroke(kPlan, 0.14, 0.9);
+      p.stroke(kPlan, kPlanWidth, 0.9);
     }
     if (c.goal) {
-      drawGoalMarker(cr, p.image(c.goal->position()), c.goal->yaw, p.em());
-      p.stroke(kPlan, 0.14);
+      goalMarkerPath(cr, p.image(c.goal->position()), c.goal->yaw, p.em());
+      p.stroke(kPlan, kPlanWidth);
     }
   }
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
@@ -344,10 +360,10 @@ void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
   };
   switch (entry) {
     case Legend::Seen:
-      line(kSeen, 0.3);
+      line(kSeen, kSegmentWidth);
       break;
     case Legend::Unseen:
-      line(kUnseen, 0.3);
+      line(kUnseen, kSegmentWidth);
       break;
     case Legend::Target:
       box(kTarget);
@@ -369,18 +385,16 @@ void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
     case Legend::Plan:
       cairo_move_to(cr, left.x, left.y);
       cairo_line_to(cr, right.x - 0.4 * em, right.y);
-      drawGoalMarker(cr, right - Vec2{0.4 * em, 0.0}, std::numbers::pi / 2.0, 0.8 * em);
+      goalMarkerPath(cr, right - Vec2{0.4 * em, 0.0}, std::numbers::pi / 2.0, 0.8 * em);
       setColour(cr, kPlan);
-      cairo_set_line_width(cr, 0.14 * em);
+      cairo_set_line_width(cr, kPlanWidth * em);
       cairo_stroke(cr);
       break;
-    case Legend::ObjectPath: {
-      const double dash[] = {0.35 * em, 0.25 * em};
-      cairo_set_dash(cr, dash, 2, 0.0);
-      line(kObjectPath, 0.09);
+    case Legend::ObjectPath:
+      setPathDash(cr, em);
+      line(kObjectPath, kObjectPathWidth);
       cairo_set_dash(cr, nullptr, 0, 0.0);
       break;
-    }
   }
 }
 

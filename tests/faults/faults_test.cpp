@@ -71,8 +71,8 @@ class TmpfsMount {
 
   // Empty when mounted, else why not.
   const std::string& error() const { return error_; }
-  bool remount(const std::string& options) {
-    return ::mount("tmpfs", dir_.c_str(), "tmpfs", MS_REMOUNT, options.c_str()) == 0;
+  bool remount(const std::string& options, unsigned long flags = 0) {
+    return ::mount("tmpfs", dir_.c_str(), "tmpfs", MS_REMOUNT | flags, options.c_str()) == 0;
   }
 
  private:
@@ -104,11 +104,10 @@ TEST(Faults, RunIntoAnOutPathThroughAFileFailsWithExitTwoAndWritesNothing) {
 
 TEST(Faults, RunAndBenchIntoAReadOnlyFileSystemFailWithExitTwoAndWriteNothing) {
   const fs::path dir = freshDir("read_only");
-  const TmpfsMount mount(dir, "size=1m");
+  TmpfsMount mount(dir, "size=1m");
   CAMCOV_REQUIRE_MOUNT(mount);
   fs::create_directories(dir / "out");
-  ASSERT_EQ(::mount("tmpfs", dir.c_str(), "tmpfs", MS_REMOUNT | MS_RDONLY, "size=1m"), 0)
-      << std::strerror(errno);
+  ASSERT_TRUE(mount.remount("size=1m", MS_RDONLY)) << std::strerror(errno);
 
   const auto run =
       runCamcov("run " + tinyStatic().string() + kShortRun + " --out " + (dir / "out").string());
@@ -175,10 +174,10 @@ TEST(Faults, SceneThatBreaksMidBatchIsRecordedAsFailedAndTheOtherJobsFinish) {
   const std::string bench = camcovBinary() + " bench --scenes " + (dir / "scenes").string() +
                             " --methods local --seeds 4 --jobs 1 --duration 300 --out " +
                             out.string();
-  const auto r = runShell(bench + " > " + (dir / "stdout.txt").string() + " & pid=$!; " +
-                          "until [ -e " + (out / "batch.json").string() +
-                          " ]; do sleep 0.005; done; echo '{ broken' > " +
-                          (dir / "scenes" / "b_breaks.json").string() + "; wait $pid");
+  const auto r =
+      runShell(bench + " > " + (dir / "stdout.txt").string() + " & pid=$!; " + "until [ -e " +
+               (out / "batch.json").string() + " ]; do sleep 0.005; done; echo '{ broken' > " +
+               (dir / "scenes" / "b_breaks.json").string() + "; wait $pid");
   const std::string stdoutText = read(dir / "stdout.txt");
   EXPECT_EQ(r.exitCode, 1) << "a batch with failed jobs exits 1\n" << r.err;
 

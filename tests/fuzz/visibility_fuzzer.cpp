@@ -4,7 +4,9 @@
 //  - the segments tile every target's boundary: contiguous along each edge, from its first
 //    vertex to its last, lengths adding up to the perimeter;
 //  - per camera, the visible length, and the length seen by anyone (coverage), agree with
-//    reference::visibleIntervals within the conditioning bound of docs/visibility.md.
+//    reference::visibleIntervals within the conditioning bound of docs/visibility.md;
+//  - the omnidirectional visibility polygon (Algorithm 2's sampler) of one more decoded
+//    point is finite and has the reference's area (the tolerance of test_visibility_polygon).
 // Coordinates are mostly small integers times a power of two, so that collinear vertices,
 // shared edges, cameras on supporting lines and vertices on field-of-view rays come up all
 // the time and stay exact at every scale (2^-20 ≈ 1e-6 to 2^20 ≈ 1e6).
@@ -52,14 +54,17 @@ class Decoder {
     c.halfFov = in_.ConsumeBool()
                     ? in_.PickValueInArray({kPi / 4, kPi / 2, 3 * kPi / 4, kPi - 1e-3, 0.3})
                     : 0.01 + (kPi - 0.02) * in_.ConsumeProbability<double>();
-    const int cameras = in_.ConsumeBool() ? in_.ConsumeIntegralInRange(1, 4)
-                                          : in_.ConsumeIntegralInRange(1, 64);
+    // Up to 64 cameras (every bit of the mask) now and then: the reference is O(n²) each.
+    const int cameras = in_.ConsumeIntegralInRange(0, 7) == 0 ? in_.ConsumeIntegralInRange(1, 64)
+                                                              : in_.ConsumeIntegralInRange(1, 4);
     for (int j = 0; j < cameras; ++j) {
       const Vec2 p = cameraPosition(c.world);
       c.cameras.push_back({p.x, p.y, cameraYaw(c.world, p, c.halfFov)});
     }
     return c;
   }
+
+  Vec2 viewpoint(const kinematics::World& world) { return cameraPosition(world); }
 
  private:
   Vec2 gridPoint(int lo, int hi) {
@@ -68,8 +73,7 @@ class Decoder {
   }
 
   Ring rectangle(double x0, double y0, double x1, double y1) const {
-    return {Vec2{x0, y0} * unit_, Vec2{x1, y0} * unit_, Vec2{x1, y1} * unit_,
-            Vec2{x0, y1} * unit_};
+    return {Vec2{x0, y0} * unit_, Vec2{x1, y0} * unit_, Vec2{x1, y1} * unit_, Vec2{x0, y1} * unit_};
   }
 
   Ring polygon(int lo, int hi) {
@@ -105,6 +109,7 @@ class Decoder {
     return ring[in_.ConsumeIntegralInRange<std::size_t>(0, ring.size() - 1)];
   }
 
+  // Anywhere, but mostly on a vertex, an edge, a supporting line or 1e-9 beside an edge.
   Vec2 cameraPosition(const kinematics::World& world) {
     const Ring& ring = anyRing(world);
     const std::size_t i = in_.ConsumeIntegralInRange<std::size_t>(0, ring.size() - 1);
@@ -185,6 +190,10 @@ void checkTiling(const visibility::testing::Case& c, const std::vector<visibilit
   if (k != s.size()) fail(c, "segments out of order or naming a missing target or edge");
 }
 
+double edgeLength(const Ring& ring, std::size_t k) {
+  return geometry::distance(ring[k], ring[(k + 1) % ring.size()]);
+}
+
 // Length of a set of parameter intervals on an edge of length `edge`, after merging overlaps.
 double unionLength(std::vector<visibility::reference::Interval> set, double edge) {
   std::sort(set.begin(), set.end(), [](auto x, auto y) { return x.lo < y.lo; });
@@ -203,8 +212,8 @@ double lengthTolerance(const kinematics::World& world, Vec2 p, double extent, do
   double g = INFINITY;
   for (const Ring& ring : world.targets) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
-      const double d = std::abs(geometry::orient(a, b, p)) / geometry::distance(a, b);
+      const double d =
+          std::abs(geometry::orient(ring[i], ring[(i + 1) % ring.size()], p)) / edgeLength(ring, i);
       if (d > eps) g = std::min(g, d);
     }
   }
@@ -235,8 +244,7 @@ void compareWithReference(const visibility::testing::Case& c,
     double want = 0.0;
     for (std::size_t i = 0; i < targets.size(); ++i) {
       for (std::size_t k = 0; k < targets[i].size(); ++k) {
-        const double edge = geometry::distance(targets[i][k], targets[i][(k + 1) % targets[i].size()]);
-        want += unionLength(seen[i][k], edge);
+        want += unionLength(seen[i][k], edgeLength(targets[i], k));
         seenByAnyone[i][k].insert(seenByAnyone[i][k].end(), seen[i][k].begin(), seen[i][k].end());
       }
     }
@@ -249,18 +257,34 @@ void compareWithReference(const visibility::testing::Case& c,
   double want = 0.0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     for (std::size_t k = 0; k < targets[i].size(); ++k) {
-      want += unionLength(seenByAnyone[i][k],
-                          geometry::distance(targets[i][k], targets[i][(k + 1) % targets[i].size()]));
+      want += unionLength(seenByAnyone[i][k], edgeLength(targets[i], k));
     }
   }
   if (std::abs(sweepUnion - want) > 1e-6 * std::max(sweepUnion, want) + unionTolerance)
     fail(c, "the length seen by anyone differs from the reference", sweepUnion, want);
 }
 
+void checkVisibilityPolygon(const visibility::testing::Case& c,
+                            const visibility::Occluders& occluders, visibility::Sweep& sweep,
+                            Vec2 point) {
+  Ring polygon;
+  sweep.visibilityPolygon(occluders, point, polygon);
+  if (!std::all_of(polygon.begin(), polygon.end(), finite))
+    fail(c, "non-finite visibility polygon vertex");
+  const double got = polygon.size() < 3 ? 0.0 : geometry::signedArea(polygon);
+  const double want = visibility::reference::visibleArea(c.world, point);
+  if (std::abs(got - want) > 1e-6 * want + 1e-9 * occluders.extent() * occluders.extent()) {
+    std::fprintf(stderr, "viewpoint %.17g %.17g\n", point.x, point.y);
+    fail(c, "the visibility polygon's area differs from the reference", got, want);
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const visibility::testing::Case c = Decoder(data, size).decode();
+  Decoder decoder(data, size);
+  const visibility::testing::Case c = decoder.decode();
+  const Vec2 viewpoint = decoder.viewpoint(c.world);
   const visibility::Occluders occluders(c.world);
   visibility::Sweep sweep;
   std::vector<visibility::Segment> segments;
@@ -273,5 +297,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   checkTiling(c, segments, 4.0 * occluders.tolerance());
   compareWithReference(c, segments, occluders);
+  checkVisibilityPolygon(c, occluders, sweep, viewpoint);
   return 0;
 }
