@@ -41,6 +41,7 @@ results::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string
       ms.minObjectDistance = numberOrInfinity(m.at("minObjectDistance"));
       ms.minCameraDistance = numberOrInfinity(m.at("minCameraDistance"));
       ms.medianSeed = m.at("medianSeed").get<std::uint64_t>();
+      ms.bestSeed = m.at("bestSeed").get<std::uint64_t>();
       s.methods.push_back(std::move(ms));
     }
     for (const auto& c : j.at("scenes")) {

@@ -1,4 +1,5 @@
-// Section 7: the videos `camcov video` left in videos/ next to the results, embedded by
+// Section 7: the videos in videos/ next to the results (`camcov bench --videos` writes the
+// median-seed run of each method per scene; `camcov video` may add others), embedded by
 // relative URL so the report and its folder can move together.
 #include <fmt/format.h>
 
@@ -13,8 +14,11 @@ std::string videosSection(const ReportData& data) {
   if (data.videos.empty()) return {};
   std::string out =
       "<section id=\"videos\">\n<h2>Videos</h2>\n<p>The MP4 files found in "
-      "<code>videos/</code> next to the results, named after the scene (and method and seed). "
-      "They play from the folder, so keep it beside this file.</p>\n<div class=\"videos\">\n";
+      "<code>videos/</code> next to the results, named <i>scene-method-seed</i>. By default "
+      "<code>camcov bench</code> makes one per scene and method, of the seed whose average "
+      "coverage is the median, so each shows a typical run (<code>--videos "
+      "none|median|best|all</code>). They play from the folder, so keep it beside this "
+      "file.</p>\n<div class=\"videos\">\n";
   for (const auto& url : data.videos) {
     // The URL is percent-encoded; its file name without ".mp4" is the caption.
     const std::string name = std::filesystem::path(url).stem().string();

@@ -3,13 +3,12 @@
 #include <fmt/format.h>
 #include <time.h>
 
-#include <atomic>
 #include <chrono>
 #include <exception>
 #include <mutex>
-#include <thread>
 
 #include "cli/progress.h"
+#include "cli/worker_pool.h"
 #include "results/run_files.h"
 
 namespace camcov::cli {
@@ -42,48 +41,39 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const results::BatchFolder&
                  jobs.size() - pending.size(), jobs.size(), folder.root().c_str(), pending.size());
   }
   Progress progress(jobs.size(), jobs.size() - pending.size());
-  std::atomic<std::size_t> next{0};
   std::mutex mutex;
-  auto work = [&] {
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const BatchJob& job = jobs[pending[k]];
-      results::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
-      const auto wallStart = std::chrono::steady_clock::now();
-      const double cpuStart = threadCpuSeconds();
-      std::string what;
+  forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
+    const BatchJob& job = jobs[pending[k]];
+    results::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
+    const auto wallStart = std::chrono::steady_clock::now();
+    const double cpuStart = threadCpuSeconds();
+    std::string what;
+    try {
+      const results::RunRecord run = runJob(job.spec);
+      results::writeRunFiles(run, folder.runsDir());
+      folder.removeFailure(job.stem);
+      outcome.summary = run.summary;
+      what = fmt::format("{}: coverage {:.3f}", job.stem, run.summary.averageCoverage);
+    } catch (const std::exception& e) {
+      outcome.failed = true;
+      outcome.error = e.what();
+      what = fmt::format("{}: FAILED: {}", job.stem, e.what());
       try {
-        const results::RunRecord run = runJob(job.spec);
-        results::writeRunFiles(run, folder.runsDir());
-        folder.removeFailure(job.stem);
-        outcome.summary = run.summary;
-        what = fmt::format("{}: coverage {:.3f}", job.stem, run.summary.averageCoverage);
-      } catch (const std::exception& e) {
-        outcome.failed = true;
-        outcome.error = e.what();
-        what = fmt::format("{}: FAILED: {}", job.stem, e.what());
-        try {
-          folder.writeFailure(job.stem, outcome);
-        } catch (const std::exception& again) {  // e.g. the disk is full: say so, go on
-          what += fmt::format(" (not recorded: {})", again.what());
-        }
+        folder.writeFailure(job.stem, outcome);
+      } catch (const std::exception& again) {  // e.g. the disk is full: say so, go on
+        what += fmt::format(" (not recorded: {})", again.what());
       }
-      const results::JobTiming timing{
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
-          threadCpuSeconds() - cpuStart};
-      {
-        const std::lock_guard lock(mutex);
-        batch.outcomes[pending[k]] = std::move(outcome);
-        batch.timings[job.stem] = timing;
-      }
-      progress.finished(what);
     }
-  };
-  std::vector<std::thread> threads;
-  for (unsigned w = 1; w < std::max(workers, 1u); ++w)
-    threads.emplace_back(work);
-  work();
-  for (auto& t : threads)
-    t.join();
+    const results::JobTiming timing{
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
+        threadCpuSeconds() - cpuStart};
+    {
+      const std::lock_guard lock(mutex);
+      batch.outcomes[pending[k]] = std::move(outcome);
+      batch.timings[job.stem] = timing;
+    }
+    progress.finished(what);
+  });
   progress.close();
   return batch;
 }

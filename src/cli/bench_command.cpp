@@ -34,7 +34,7 @@ struct BenchOptions {
   std::string out = "bench-results";
   std::string shard;
   bool force = false;
-  bool noReport = false;
+  BenchOutputOptions outputs;
   ParameterOptions parameters;
   std::vector<std::string> argv;
 };
@@ -93,6 +93,7 @@ int bench(const BenchOptions& o) {
   for (const auto& m : methods)
     requireKnownMethod(m);
   if (o.seeds == 0) throw InputError("--seeds must be at least 1");
+  o.outputs.videoChoice();  // a bad --videos fails now, not after the runs
   const Shard shard = parseShard(o.shard);
   params::Parameters parameters = o.parameters.resolve();
   if (o.duration >= 0.0) parameters.sim.duration = o.duration;
@@ -109,9 +110,7 @@ int bench(const BenchOptions& o) {
     for (const auto& method : methods) {
       for (std::uint64_t seed = 1; seed <= o.seeds; ++seed) {
         JobSpec spec{entry.file, method, seed, parameters};
-        const std::string stem = results::runStem(
-            {entry.name, entry.file, entry.hash, method, seed, parameters, kVersion});
-        jobs.push_back({spec, entry.name, entry.hash, stem});
+        jobs.push_back({spec, entry.name, entry.hash, results::runStem(entry.name, method, seed)});
       }
     }
   }
@@ -153,7 +152,7 @@ int bench(const BenchOptions& o) {
         shard.index + 1, shard.count, mine.size(), failed);
     return failed ? 1 : 0;
   }
-  return writeBenchOutputs(folder, manifest, run.outcomes, !o.noReport);
+  return writeBenchOutputs(folder, manifest, run.outcomes, o.outputs, workers);
 }
 
 }  // namespace
@@ -171,7 +170,7 @@ Registration addBenchCommand(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "results folder")->capture_default_str();
   cmd->add_option("--shard", o->shard, "run only part K of N of the jobs (K/N, 1-based)");
   cmd->add_flag("--force", o->force, "run again jobs made with other parameters");
-  cmd->add_flag("--no-report", o->noReport, "do not write report.html");
+  o->outputs.addTo(*cmd);
   o->parameters.addTo(*cmd);
   return {cmd, [o] {
             o->argv = invocation();

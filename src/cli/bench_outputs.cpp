@@ -5,13 +5,23 @@
 #include <iostream>
 #include <map>
 
+#include "cli/bench_videos.h"
 #include "reports/report_builder.h"
 #include "results/ompl_benchmark_log.h"
 
 namespace camcov::cli {
 
+void BenchOutputOptions::addTo(CLI::App& cmd) {
+  cmd.add_flag("--no-report", noReport, "do not write report.html");
+  cmd.add_option("--videos", videos,
+                 "videos/ for the report: none; median (per scene and method, the seed with the "
+                 "median average coverage); best (the highest); all")
+      ->capture_default_str();
+}
+
 int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
-                      const std::vector<results::JobOutcome>& outcomes, bool report) {
+                      const std::vector<results::JobOutcome>& outcomes,
+                      const BenchOutputOptions& options, unsigned workers) {
   const results::BatchSummary summary = results::summarize(outcomes);
   folder.writeSummary(summary);
   const auto logs = results::writeOmplBenchmarkLogs(folder, manifest.parameters);
@@ -41,7 +51,15 @@ int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchMa
   std::cout << fmt::format(
       "wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl\n",
       folder.root().string(), logs.size(), folder.root().string());
-  if (report) {
+  // Before the report, which embeds what it finds in videos/.
+  const auto chosen = results::chooseVideoRuns(summary, outcomes, options.videoChoice());
+  if (!chosen.empty()) {
+    const VideoBatch videos = writeBenchVideos(folder, chosen, workers);
+    std::cout << fmt::format("wrote {} videos in {}/videos ({} up to date{})\n", videos.written,
+                             folder.root().string(), videos.upToDate,
+                             videos.failed ? fmt::format(", {} not written", videos.failed) : "");
+  }
+  if (!options.noReport) {
     reports::writeReport(folder.root(), folder.root() / "report.html");
     std::cout << fmt::format("wrote {}\n", (folder.root() / "report.html").string());
   }

@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "cli/bench_outputs.h"
 #include "cli/command.h"
@@ -18,10 +19,11 @@ namespace fs = std::filesystem;
 struct MergeOptions {
   std::vector<std::string> inputs;
   std::string out;
-  bool noReport = false;
+  BenchOutputOptions outputs;
 };
 
 int merge(const MergeOptions& o) {
+  o.outputs.videoChoice();  // a bad --videos fails before anything is copied
   const results::BatchFolder target(o.out);
   std::optional<results::BatchManifest> manifest;
   std::map<std::string, results::JobTiming> timings;
@@ -55,7 +57,8 @@ int merge(const MergeOptions& o) {
   manifest->command = invocation();
   target.writeManifest(*manifest);
   target.writeTimings(timings);
-  return writeBenchOutputs(target, *manifest, target.allJobs(), !o.noReport);
+  return writeBenchOutputs(target, *manifest, target.allJobs(), o.outputs,
+                           std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace
@@ -68,7 +71,7 @@ Registration addMergeCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out,-o", o->out, "the combined folder (may be one of the inputs)")->required();
-  cmd->add_flag("--no-report", o->noReport, "do not write report.html");
+  o->outputs.addTo(*cmd);
   return {cmd, [o] { return merge(*o); }};
 }
 

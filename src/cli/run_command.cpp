@@ -49,7 +49,8 @@ int run(const RunOptions& o) {
 }  // namespace
 
 Registration addRunCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("run", "Simulate one scene with one method and seed; write its results");
+  auto* cmd =
+      app.add_subcommand("run", "Simulate one scene with one method and seed; write its results");
   auto o = std::make_shared<RunOptions>();
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
   cmd->add_option("--method,-m", o->method, "paper (section V) or local (the baseline)")

@@ -76,6 +76,9 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes) {
       m.meanCameraCollisionTime /= m.runs;
       std::sort(bySeed.begin(), bySeed.end());
       m.medianSeed = bySeed[(bySeed.size() - 1) / 2].second;
+      m.bestSeed = std::find_if(bySeed.begin(), bySeed.end(), [&](const auto& run) {
+                     return run.first == bySeed.back().first;
+                   })->second;
     }
     m.coverage = describe(coverage);
     m.utilization = describe(utilization);
@@ -125,7 +128,8 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"runsWithCollision", m.runsWithCollision},
                             {"minObjectDistance", finiteOrNull(m.minObjectDistance)},
                             {"minCameraDistance", finiteOrNull(m.minCameraDistance)},
-                            {"medianSeed", m.medianSeed}});
+                            {"medianSeed", m.medianSeed},
+                            {"bestSeed", m.bestSeed}});
   }
   j["scenes"] = nlohmann::json::array();
   for (const auto& c : summary.scenes) {
@@ -154,17 +158,17 @@ std::string summaryToCsv(const BatchSummary& summary) {
       "coverage_q3,coverage_max,utilization_mean,utilization_sd,utilization_min,utilization_q1,"
       "utilization_median,utilization_q3,utilization_max,mean_object_collision_time,"
       "mean_camera_collision_time,runs_with_collision,min_object_distance,min_camera_distance,"
-      "median_seed,winner,p_value\n";
+      "median_seed,best_seed,winner,p_value\n";
   for (const auto& m : summary.methods) {
     const SceneComparison& c = *comparison.at(m.scene);
     const auto& cv = m.coverage;
     const auto& ut = m.utilization;
     csv += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", m.scene,
-        m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3, cv.max,
-        ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+        m.scene, m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3,
+        cv.max, ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
         m.meanCameraCollisionTime, m.runsWithCollision, m.minObjectDistance, m.minCameraDistance,
-        m.medianSeed, c.winner, c.pValue);
+        m.medianSeed, m.bestSeed, c.winner, c.pValue);
   }
   return csv;
 }

@@ -37,7 +37,10 @@ struct MethodSummary {
   int runsWithCollision = 0;       // runs with any time below δ
   double minObjectDistance = 0.0;  // over all runs (infinity: no object)
   double minCameraDistance = 0.0;  // over all runs (infinity: one camera)
-  std::uint64_t medianSeed = 0;    // the seed whose coverage is the median (lower middle)
+  // Runs ordered by (coverage, seed): the seed of the median (the lower middle one) and of
+  // the best (the highest coverage, of equals the lowest seed). 0 without runs.
+  std::uint64_t medianSeed = 0;
+  std::uint64_t bestSeed = 0;
 };
 
 struct SceneComparison {

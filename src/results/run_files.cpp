@@ -61,8 +61,12 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
 
 }  // namespace
 
+std::string runStem(const std::string& scene, const std::string& method, std::uint64_t seed) {
+  return fmt::format("{}-{}-seed{}", scene, method, seed);
+}
+
 std::string runStem(const RunMetadata& m) {
-  return fmt::format("{}-{}-seed{}", m.scene, m.method, m.seed);
+  return runStem(m.scene, m.method, m.seed);
 }
 
 nlohmann::json runToJson(const RunRecord& run) {

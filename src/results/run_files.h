@@ -2,6 +2,7 @@
 // A run's results files: JSON (metadata with every parameter, summary, time series, events)
 // and CSV (the time series, one row per step). Same run, same bytes: no clocks, no
 // machine-dependent fields; numbers in shortest round-trip form.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -20,7 +21,8 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source);
 RunRecord loadRunFile(const std::filesystem::path& file);
 std::string runToCsv(const RunRecord& run);
 
-// "<scene>-<method>-seed<N>": the stem of a run's files.
+// "<scene>-<method>-seed<N>": the stem of a run's files (and of its video in a batch).
+std::string runStem(const std::string& scene, const std::string& method, std::uint64_t seed);
 std::string runStem(const RunMetadata& metadata);
 
 // Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically; returns the JSON path.

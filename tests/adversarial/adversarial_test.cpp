@@ -13,6 +13,7 @@
 #include "geometry/ring.h"
 #include "scene/scene_loader.h"
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
@@ -32,25 +33,10 @@ std::vector<std::string> adversarialScenes() {
   return names;
 }
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 class AdversarialScene : public ::testing::TestWithParam<std::string> {
  protected:
   fs::path scene() const { return testDataDir() / "adversarial" / (GetParam() + ".json"); }
   bool rejected() const { return GetParam().starts_with("reject_"); }
-
-  fs::path outDir(const std::string& what) const {
-    const fs::path dir = fs::temp_directory_path() /
-                         ("camcov_adversarial_" + std::to_string(::getpid())) / GetParam() / what;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-  }
 
   // Runs `camcov <command> <scene> <options>`; checks the exit code against the file's
   // expectation and returns the result for further checks.
@@ -101,7 +87,7 @@ TEST_P(AdversarialScene, ValidateStateAndInspectHandleItOrRejectIt) {
 TEST_P(AdversarialScene, RunsStayFiniteAndInsideTheBoundary) {
   for (const std::string method : {"paper", "local"}) {
     SCOPED_TRACE(method);
-    const fs::path out = outDir("run-" + method);
+    const fs::path out = freshDir("run-" + method);
     expectHandledOrRejected("run", "--method " + method + kRunOptions + " --out " + out.string());
     if (rejected()) {
       EXPECT_TRUE(fs::is_empty(out)) << "a rejected scene writes nothing";
@@ -109,7 +95,7 @@ TEST_P(AdversarialScene, RunsStayFiniteAndInsideTheBoundary) {
     }
     const fs::path file = out / (GetParam() + "-" + method + "-seed1.json");
     ASSERT_TRUE(fs::exists(file));
-    const auto run = nlohmann::json::parse(read(file));
+    const auto run = nlohmann::json::parse(readFile(file));
     for (const char* key : {"averageCoverage", "averageUtilization", "averageReward",
                             "minObjectDistance", "objectCollisionTime"})
       expectNumber(run["summary"][key], std::string("summary.") + key);
@@ -141,14 +127,14 @@ TEST_P(AdversarialScene, RunsStayFiniteAndInsideTheBoundary) {
 }
 
 TEST_P(AdversarialScene, RendersAFrame) {
-  const fs::path out = outDir("render");
+  const fs::path out = freshDir("render");
   expectHandledOrRejected("render", "--time 1.3 --out " + (out / "frame.png").string());
   if (rejected()) return;
-  EXPECT_EQ(read(out / "frame.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_EQ(readFile(out / "frame.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
 }
 
 TEST(AdversarialScenes, EveryFileHasALineInTheReadme) {
-  const std::string readme = read(testDataDir() / "adversarial" / "README.md");
+  const std::string readme = readFile(testDataDir() / "adversarial" / "README.md");
   for (const std::string& name : adversarialScenes())
     EXPECT_NE(readme.find("`" + name + ".json`"), std::string::npos) << name;
 }

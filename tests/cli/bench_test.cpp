@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
@@ -15,25 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path freshDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("camcov_bench_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-// 2 scenes x 2 methods x 3 seeds = 12 short jobs.
-std::string benchArgs(const fs::path& out, int seeds = 3) {
+// 2 scenes x 2 methods x 3 seeds = 12 short jobs; without videos unless a test asks.
+std::string benchArgs(const fs::path& out, int seeds = 3, const std::string& videos = "none") {
   return "bench --scenes " + (testDataDir() / "scenes").string() + " --seeds " +
-         std::to_string(seeds) + " --duration 2 --set global.K=30 --set planner.T2=0.05 --out " +
-         out.string();
+         std::to_string(seeds) + " --duration 2 --set global.K=30 --set planner.T2=0.05 --videos " +
+         videos + " --out " + out.string();
 }
 
 std::set<std::string> runFiles(const fs::path& out) {
@@ -49,7 +37,7 @@ TEST(CliBench, WritesRunsSummaryAndLogs) {
   const auto r = runCamcov(benchArgs(out) + " --jobs 2");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_EQ(runFiles(out).size(), 24u) << "12 runs, JSON and CSV each";
-  const auto summary = nlohmann::json::parse(read(out / "summary.json"));
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
   EXPECT_EQ(summary["methods"].size(), 4u);
   EXPECT_EQ(summary["scenes"].size(), 2u);
   EXPECT_EQ(summary["methods"][0]["runs"], 3);
@@ -57,6 +45,63 @@ TEST(CliBench, WritesRunsSummaryAndLogs) {
   EXPECT_TRUE(fs::exists(out / "ompl" / "tiny_static.log"));
   EXPECT_TRUE(fs::exists(out / "batch.json"));
   EXPECT_NE(r.out.find("tiny_dynamic"), std::string::npos) << "the table names each scene";
+}
+
+std::set<std::string> videoFiles(const fs::path& out) {
+  std::set<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(out / "videos", ec))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
+// The median-seed run per (scene, method), found from the runs' own results files: order by
+// (average coverage, seed), take the lower middle one.
+std::set<std::string> medianRunVideos(const fs::path& out) {
+  std::map<std::string, std::vector<std::pair<double, int>>> byGroup;
+  for (const auto& name : runFiles(out)) {
+    if (fs::path(name).extension() != ".json") continue;
+    const auto run = nlohmann::json::parse(readFile(out / "runs" / name));
+    byGroup[run["scene"]["name"].get<std::string>() + "-" + run["method"].get<std::string>()]
+        .push_back({run["summary"]["averageCoverage"].get<double>(), run["seed"].get<int>()});
+  }
+  std::set<std::string> names;
+  for (auto& [group, runs] : byGroup) {
+    std::sort(runs.begin(), runs.end());
+    names.insert(group + "-seed" + std::to_string(runs[(runs.size() - 1) / 2].second) + ".mp4");
+  }
+  return names;
+}
+
+TEST(CliBench, VideosShowTheMedianSeedRunOfEachMethodAndAreNotMadeTwice) {
+  const fs::path out = freshDir("videos");
+  const auto first = runCamcov(benchArgs(out, 3, "median") + " --jobs 2");
+  ASSERT_EQ(first.exitCode, 0) << first.out << first.err;
+  const std::set<std::string> expected = medianRunVideos(out);
+  ASSERT_EQ(expected.size(), 4u) << "2 scenes x 2 methods";
+  EXPECT_EQ(videoFiles(out), expected);
+  const std::string report = readFile(out / "report.html");
+  for (const auto& name : expected) {
+    EXPECT_NE(report.find("src=\"videos/" + name + "\""), std::string::npos) << name;
+    EXPECT_EQ(readFile(out / "videos" / name).substr(4, 4), "ftyp") << name << " is an MP4";
+  }
+
+  const auto before = fs::last_write_time(out / "videos" / *expected.begin());
+  const auto again = runCamcov(benchArgs(out, 3, "median") + " --jobs 2");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.out.find("wrote 0 videos"), std::string::npos) << again.out;
+  EXPECT_EQ(fs::last_write_time(out / "videos" / *expected.begin()), before);
+}
+
+TEST(CliBench, VideosNoneWritesNoVideosAndAllWritesOnePerRun) {
+  const fs::path none = freshDir("videos_none");
+  ASSERT_EQ(runCamcov(benchArgs(none, 2, "none")).exitCode, 0);
+  EXPECT_FALSE(fs::exists(none / "videos"));
+  const fs::path all = freshDir("videos_all");
+  ASSERT_EQ(runCamcov(benchArgs(all, 2, "all") + " --methods local").exitCode, 0);
+  EXPECT_EQ(videoFiles(all),
+            (std::set<std::string>{"tiny_dynamic-local-seed1.mp4", "tiny_dynamic-local-seed2.mp4",
+                                   "tiny_static-local-seed1.mp4", "tiny_static-local-seed2.mp4"}));
 }
 
 TEST(CliBench, KilledBatchResumesWithoutRedoingFinishedJobs) {
@@ -90,8 +135,8 @@ TEST(CliBench, KilledBatchResumesWithoutRedoingFinishedJobs) {
   EXPECT_GE(kept, 4) << "at least two finished jobs, JSON and CSV each";
   for (const auto& name : runFiles(out))
     EXPECT_EQ(name.find(".tmp-"), std::string::npos) << name;
-  EXPECT_EQ(read(out / "summary.json"), read(reference / "summary.json"));
-  EXPECT_EQ(read(out / "summary.csv"), read(reference / "summary.csv"));
+  EXPECT_EQ(readFile(out / "summary.json"), readFile(reference / "summary.json"));
+  EXPECT_EQ(readFile(out / "summary.csv"), readFile(reference / "summary.csv"));
 }
 
 TEST(CliBench, ShardsPlusMergeEqualOneProcess) {
@@ -106,11 +151,11 @@ TEST(CliBench, ShardsPlusMergeEqualOneProcess) {
       runCamcov("merge " + (base / "shard1").string() + " " + (base / "shard2").string() + " " +
                 (base / "shard3").string() + " --out " + (base / "merged").string());
   ASSERT_EQ(merged.exitCode, 0) << merged.err;
-  EXPECT_EQ(read(base / "merged" / "summary.json"), read(one / "summary.json"));
-  EXPECT_EQ(read(base / "merged" / "summary.csv"), read(one / "summary.csv"));
+  EXPECT_EQ(readFile(base / "merged" / "summary.json"), readFile(one / "summary.json"));
+  EXPECT_EQ(readFile(base / "merged" / "summary.csv"), readFile(one / "summary.csv"));
   // And every run file, byte for byte, whatever process made it.
   for (const auto& name : runFiles(one)) {
-    EXPECT_EQ(read(base / "merged" / "runs" / name), read(one / "runs" / name)) << name;
+    EXPECT_EQ(readFile(base / "merged" / "runs" / name), readFile(one / "runs" / name)) << name;
   }
 }
 
@@ -132,7 +177,7 @@ TEST(CliBench, SlurmArrayRecipeShardsAndMerges) {
       runCamcov("merge " + (base / "shard-1").string() + " " + (base / "shard-2").string() + " " +
                 (base / "shard-3").string() + " --out " + (base / "merged").string());
   ASSERT_EQ(merged.exitCode, 0) << merged.err;
-  EXPECT_EQ(read(base / "merged" / "summary.json"), read(one / "summary.json"));
+  EXPECT_EQ(readFile(base / "merged" / "summary.json"), readFile(one / "summary.json"));
 }
 
 TEST(CliBench, RefusesOtherParametersInTheSameFolderUnlessForced) {
@@ -149,6 +194,7 @@ TEST(CliBench, BadArgumentsExitTwoBeforeRunningAnything) {
   EXPECT_EQ(runCamcov("bench --scenes /nonexistent --out " + out.string()).exitCode, 2);
   EXPECT_EQ(runCamcov(benchArgs(out) + " --methods paper,magic").exitCode, 2);
   EXPECT_EQ(runCamcov(benchArgs(out) + " --shard 4/3").exitCode, 2);
+  EXPECT_EQ(runCamcov(benchArgs(out, 3, "sometimes")).exitCode, 2);
   EXPECT_EQ(runCamcov(benchArgs(out, 0)).exitCode, 2);
   const auto badScene =
       runCamcov("bench --scenes " + (testDataDir() / "bad" / "no_cameras.json").string() +

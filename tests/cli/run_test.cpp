@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
@@ -13,56 +14,42 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path outDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("camcov_run_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
 const std::string kScene = (ownScenesDir() / "fig1_example.json").string();
 
 TEST(CliRun, WritesJsonAndCsvAndPrintsAverages) {
-  const fs::path out = outDir("basic");
+  const fs::path out = freshDir("basic");
   const auto r =
       runCamcov("run " + kScene + " --method local --seed 3 --duration 2 --out " + out.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("average coverage"), std::string::npos);
-  const auto j = nlohmann::json::parse(read(out / "fig1_example-local-seed3.json"));
+  const auto j = nlohmann::json::parse(readFile(out / "fig1_example-local-seed3.json"));
   EXPECT_EQ(j["format"], "camcov-run/1");
   EXPECT_EQ(j["method"], "local");
   EXPECT_EQ(j["seed"], 3);
   EXPECT_EQ(j["parameters"]["global"]["K"], 500) << "every parameter is in the metadata";
   EXPECT_EQ(j["series"]["time"].size(), 21u);
-  const std::string csv = read(out / "fig1_example-local-seed3.csv");
+  const std::string csv = readFile(out / "fig1_example-local-seed3.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 22);
 }
 
 TEST(CliRun, SameArgumentsGiveByteIdenticalFilesAndAnotherSeedDiffers) {
-  const fs::path a = outDir("a"), b = outDir("b"), c = outDir("c");
+  const fs::path a = freshDir("a"), b = freshDir("b"), c = freshDir("c");
   const std::string args = " --method paper --duration 6 --set global.K=60 --set planner.T2=0.1 ";
   ASSERT_EQ(runCamcov("run " + kScene + args + "--seed 1 --out " + a.string()).exitCode, 0);
   ASSERT_EQ(runCamcov("run " + kScene + args + "--seed 1 --out " + b.string()).exitCode, 0);
   ASSERT_EQ(runCamcov("run " + kScene + args + "--seed 2 --out " + c.string()).exitCode, 0);
   const std::string stem = "fig1_example-paper-seed";
-  EXPECT_EQ(read(a / (stem + "1.json")), read(b / (stem + "1.json")));
-  EXPECT_EQ(read(a / (stem + "1.csv")), read(b / (stem + "1.csv")));
-  const auto one = nlohmann::json::parse(read(a / (stem + "1.json")));
-  const auto two = nlohmann::json::parse(read(c / (stem + "2.json")));
+  EXPECT_EQ(readFile(a / (stem + "1.json")), readFile(b / (stem + "1.json")));
+  EXPECT_EQ(readFile(a / (stem + "1.csv")), readFile(b / (stem + "1.csv")));
+  const auto one = nlohmann::json::parse(readFile(a / (stem + "1.json")));
+  const auto two = nlohmann::json::parse(readFile(c / (stem + "2.json")));
   EXPECT_NE(one["series"]["cameras"], two["series"]["cameras"]) << "the method samples";
   EXPECT_FALSE(one["events"].empty());
   EXPECT_EQ(one["events"][0]["kind"], "global");
 }
 
 TEST(CliRun, BadInputExitsTwo) {
-  const fs::path out = outDir("bad");
+  const fs::path out = freshDir("bad") / "out";
   EXPECT_EQ(runCamcov("run " + kScene + " --method magic --out " + out.string()).exitCode, 2);
   EXPECT_EQ(runCamcov("run /nonexistent.json --out " + out.string()).exitCode, 2);
   EXPECT_EQ(runCamcov("run " + kScene + " --set global.K=0 --out " + out.string()).exitCode, 2);

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
@@ -23,21 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kShortRun = " --duration 2 --set global.K=30 --set planner.T2=0.05";
-
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path freshDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("camcov_faults_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 fs::path tinyStatic() {
   return testDataDir() / "scenes" / "tiny_static.json";
@@ -49,7 +35,7 @@ void expectNoPartialFiles(const fs::path& dir) {
     const std::string name = entry.path().filename().string();
     EXPECT_EQ(name.find(".tmp-"), std::string::npos) << entry.path();
     if (entry.is_regular_file() && entry.path().extension() == ".json") {
-      EXPECT_TRUE(nlohmann::json::accept(read(entry.path()))) << entry.path();
+      EXPECT_TRUE(nlohmann::json::accept(readFile(entry.path()))) << entry.path();
     }
   }
 }
@@ -99,7 +85,7 @@ TEST(Faults, RunIntoAnOutPathThroughAFileFailsWithExitTwoAndWritesNothing) {
   const auto r = runCamcov("run " + tinyStatic().string() + kShortRun + " --out " + out.string());
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find("error: cannot create folder " + out.string()), std::string::npos) << r.err;
-  EXPECT_EQ(read(dir / "plain_file"), "not a folder");
+  EXPECT_EQ(readFile(dir / "plain_file"), "not a folder");
 }
 
 TEST(Faults, RunAndBenchIntoAReadOnlyFileSystemFailWithExitTwoAndWriteNothing) {
@@ -129,13 +115,13 @@ TEST(Faults, RunOnAFullDiskFailsClearlyAndKeepsThePreviousResults) {
       "run " + tinyStatic().string() + " --method local" + kShortRun + " --out " + dir.string();
   ASSERT_EQ(runCamcov(run).exitCode, 0);
   const fs::path json = dir / "tiny_static-local-seed1.json";
-  const std::string before = read(json);
+  const std::string before = readFile(json);
 
   fillUp(dir / "filler");
   const auto full = runCamcov(run);
   EXPECT_NE(full.exitCode, 0);
   EXPECT_NE(full.err.find("No space left on device"), std::string::npos) << full.err;
-  EXPECT_EQ(read(json), before) << "the results of the earlier run are intact";
+  EXPECT_EQ(readFile(json), before) << "the results of the earlier run are intact";
   expectNoPartialFiles(dir);
 }
 
@@ -156,7 +142,7 @@ TEST(Faults, BenchOnADiskThatFillsUpKeepsWholeFilesAndResumesOnceThereIsRoom) {
   const auto resumed = runCamcov(bench + dir.string());
   ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
   ASSERT_EQ(runCamcov(bench + reference.string()).exitCode, 0);
-  EXPECT_EQ(read(dir / "summary.json"), read(reference / "summary.json"));
+  EXPECT_EQ(readFile(dir / "summary.json"), readFile(reference / "summary.json"));
   expectNoPartialFiles(dir);
 }
 
@@ -178,7 +164,7 @@ TEST(Faults, SceneThatBreaksMidBatchIsRecordedAsFailedAndTheOtherJobsFinish) {
       runShell(bench + " > " + (dir / "stdout.txt").string() + " & pid=$!; " + "until [ -e " +
                (out / "batch.json").string() + " ]; do sleep 0.005; done; echo '{ broken' > " +
                (dir / "scenes" / "b_breaks.json").string() + "; wait $pid");
-  const std::string stdoutText = read(dir / "stdout.txt");
+  const std::string stdoutText = readFile(dir / "stdout.txt");
   EXPECT_EQ(r.exitCode, 1) << "a batch with failed jobs exits 1\n" << r.err;
 
   for (int seed = 1; seed <= 4; ++seed) {
@@ -186,17 +172,17 @@ TEST(Faults, SceneThatBreaksMidBatchIsRecordedAsFailedAndTheOtherJobsFinish) {
     EXPECT_TRUE(fs::exists(out / "runs" / ("a_good-local-seed" + s + ".json"))) << seed;
     const fs::path error = out / "runs" / ("b_breaks-local-seed" + s + ".error.json");
     ASSERT_TRUE(fs::exists(error)) << seed;
-    const auto j = nlohmann::json::parse(read(error));
+    const auto j = nlohmann::json::parse(readFile(error));
     EXPECT_NE(j["error"].get<std::string>().find("b_breaks.json: (top level): invalid JSON"),
               std::string::npos)
         << j["error"];
   }
-  const auto summary = nlohmann::json::parse(read(out / "summary.json"));
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
   ASSERT_EQ(summary["failures"].size(), 4u);
   EXPECT_EQ(summary["failures"][0]["scene"], "b_breaks");
   EXPECT_NE(stdoutText.find("4 failed jobs"), std::string::npos) << stdoutText;
   EXPECT_NE(stdoutText.find("failed: b_breaks local seed 1"), std::string::npos) << stdoutText;
-  const std::string report = read(out / "report.html");
+  const std::string report = readFile(out / "report.html");
   EXPECT_NE(report.find("Failed jobs (4)"), std::string::npos);
   EXPECT_NE(report.find("invalid JSON"), std::string::npos);
   expectNoPartialFiles(out);

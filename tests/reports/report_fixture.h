@@ -11,29 +11,10 @@
 #include <string>
 
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
-
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("camcov_report_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-             std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() { std::filesystem::remove_all(path_); }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 inline const char* const kFixtureScenes[] = {"tiny_dynamic", "tiny_static"};
 
@@ -41,15 +22,9 @@ inline const char* const kFixtureScenes[] = {"tiny_dynamic", "tiny_static"};
 inline CommandResult benchFixture(const std::filesystem::path& out, const std::string& extra = "") {
   return runCamcov(
       "bench --scenes " + (testDataDir() / "scenes").string() +
-      " --seeds 3 --duration 2 --set global.K=30 --set planner.T2=0.05 --jobs 2 --out " +
+      " --seeds 3 --duration 2 --set global.K=30 --set planner.T2=0.05 --jobs 2 --videos none"
+      " --out " +
       out.string() + " " + extra);
-}
-
-inline std::string readFile(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 inline int countOf(const std::string& text, const std::string& needle) {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/scratch.h"
 #include "util/input_error.h"
 
 namespace camcov::results {
@@ -12,20 +13,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(WriteFileAtomically, CreatesFoldersReplacesContentAndLeavesNoTemporaries) {
   const fs::path dir = fs::path(CAMCOV_TEST_TMP) / "atomic";
   fs::remove_all(dir);
   const fs::path file = dir / "sub" / "x.json";
   writeFileAtomically(file, "first");
   writeFileAtomically(file, "second");
-  EXPECT_EQ(read(file), "second");
+  EXPECT_EQ(testing::readFile(file), "second");
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(file.parent_path()))
     ++entries;
@@ -48,7 +42,7 @@ TEST(WriteFileAtomically, FullDiskIsAnErrorAndKeepsTheOldFile) {
   const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
   fs::create_symlink("/dev/full", temporary);
   EXPECT_THROW(writeFileAtomically(file, std::string(1 << 16, 'x')), std::runtime_error);
-  EXPECT_EQ(read(file), "old");
+  EXPECT_EQ(testing::readFile(file), "old");
   EXPECT_FALSE(fs::exists(fs::symlink_status(temporary)));
 }
 

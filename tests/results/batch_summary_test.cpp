@@ -39,6 +39,20 @@ TEST(Summarize, GroupsBySceneAndMethodInNaturalOrderAndPicksWinners) {
   EXPECT_EQ(summary.failures[0].error, "boom");
   // Median seed: coverages rise with the seed, so seed 3 is the median of five.
   EXPECT_EQ(summary.methods[3].medianSeed, 3u);
+  EXPECT_EQ(summary.methods[3].bestSeed, 5u);
+}
+
+TEST(Summarize, MedianIsTheLowerMiddleAndTiesGoToTheLowerSeed) {
+  // Coverages by seed 1..4: 0.4, 0.9, 0.2, 0.9. Ordered: 0.2 (3), 0.4 (1), 0.9 (2), 0.9 (4).
+  std::vector<JobOutcome> jobs;
+  for (const auto& [seed, coverage] : {std::pair{4u, 0.9}, {3u, 0.2}, {2u, 0.9}, {1u, 0.4}}) {
+    jobs.push_back(job("s", "paper", seed, coverage));
+  }
+  jobs.push_back({"s", "paper", 5, true, "failed runs have no coverage", {}});
+  const BatchSummary summary = summarize(jobs);
+  ASSERT_EQ(summary.methods.size(), 1u);
+  EXPECT_EQ(summary.methods[0].medianSeed, 1u);
+  EXPECT_EQ(summary.methods[0].bestSeed, 2u);
 }
 
 TEST(Summarize, OutputDoesNotDependOnInputOrder) {

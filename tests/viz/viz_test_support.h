@@ -12,31 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "support/scratch.h"
+
 namespace camcov::testing {
 
 inline std::filesystem::path tinyScene() {
   return std::filesystem::path(CAMCOV_VIZ_TEST_DIR) / "tiny_scene.json";
 }
-
-// A fresh folder named after the running test, removed when the test ends.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("camcov_viz_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-             std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() { std::filesystem::remove_all(path_); }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 struct VideoFacts {
   std::string codec;

@@ -1,0 +1,75 @@
+#include "cli/bench_videos.h"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "cli/progress.h"
+#include "cli/worker_pool.h"
+#include "results/run_files.h"
+#include "viz/run_replay.h"
+
+namespace camcov::cli {
+
+namespace fs = std::filesystem;
+
+VideoBatch writeBenchVideos(const results::BatchFolder& folder,
+                            std::span<const results::VideoRun> runs, unsigned workers) {
+  VideoBatch batch;
+  if (runs.empty()) return batch;
+  const fs::path dir = folder.root() / "videos";
+  fs::create_directories(dir);
+
+  // A video is up to date if it is newer than its run's results file: a run done again
+  // (other parameters, --force, a changed scene) gets a new video.
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string stem = results::runStem(runs[i].scene, runs[i].method, runs[i].seed);
+    std::error_code ec;
+    const auto video = fs::last_write_time(dir / (stem + ".mp4"), ec);
+    if (!ec && video >= fs::last_write_time(folder.runFile(stem))) {
+      ++batch.upToDate;
+    } else {
+      pending.push_back(i);
+    }
+  }
+  std::fprintf(stderr, "videos: %zu to write, %zu up to date in %s\n", pending.size(),
+               batch.upToDate, dir.c_str());
+  Progress progress(runs.size(), batch.upToDate);
+  std::atomic<std::size_t> written{0};
+  std::mutex mutex;
+  std::vector<std::string> problems;  // said again after the progress line, which may overwrite
+  forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
+    const results::VideoRun& chosen = runs[pending[k]];
+    const std::string stem = results::runStem(chosen.scene, chosen.method, chosen.seed);
+    std::string what;
+    try {
+      const results::RunRecord run = results::loadRunFile(folder.runFile(stem));
+      const viz::RunScene scene = viz::loadRunScene(run.metadata);
+      const std::size_t frames =
+          viz::writeRunVideo(run, scene.scene, dir / (stem + ".mp4"), viz::runVideoSettings(run));
+      ++written;
+      what =
+          fmt::format("videos/{}.mp4: {} frames{}", stem, frames,
+                      scene.changed ? " (warning: the scene file has changed since the run)" : "");
+    } catch (const std::exception& e) {
+      what = fmt::format("videos/{}.mp4: not written: {}", stem, e.what());
+      const std::lock_guard lock(mutex);
+      problems.push_back(what);
+    }
+    progress.finished(what);
+  });
+  progress.close();
+  for (const std::string& problem : problems)
+    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+  batch.written = written;
+  batch.failed = problems.size();
+  return batch;
+}
+
+}  // namespace camcov::cli

@@ -1,0 +1,29 @@
+#pragma once
+// The batch's thread pool: `workers` threads (the calling one among them) take the items
+// 0..count-1 in order, one at a time, so long and short items balance themselves.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace camcov::cli {
+
+// `task(i)` is called once per item, from any of the threads; it must not throw.
+template <class Task>
+void forEachOnWorkers(std::size_t count, unsigned workers, const Task& task) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < count; i = next++)
+      task(i);
+  };
+  std::vector<std::thread> threads;
+  const std::size_t extra = std::min<std::size_t>(std::max(workers, 1u), count) - (count > 0);
+  for (std::size_t w = 0; w < extra; ++w)
+    threads.emplace_back(work);
+  work();
+  for (auto& t : threads)
+    t.join();
+}
+
+}  // namespace camcov::cli
