@@ -79,7 +79,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
         "<p class=\"verdict\">On average coverage the paper's method <b>wins {}</b>, ties {} "
         "and <b>loses {}</b> of {} scenes (two-sided Mann-Whitney U test over seeds, "
         "α&nbsp;=&nbsp;{}). Mean over scenes of the mean average coverage: {}.</p>\n",
-        s.paperWins, s.ties, s.localWins, compared, results::kSignificance,
+        s.paperWins, s.ties, s.localWins, compared, records::kSignificance,
         meanCoverageByMethod(data));
   }
   out += "<dl class=\"facts\">\n";

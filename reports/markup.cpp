@@ -7,33 +7,6 @@
 
 namespace camcov::reports {
 
-std::string escapeXml(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string fixed(double value, int decimals) {
   if (!std::isfinite(value)) return "—";
   const std::string s = fmt::format("{:.{}f}", value, decimals);

@@ -6,10 +6,11 @@
 #include <string_view>
 #include <vector>
 
+#include "util/escape_xml.h"
+
 namespace camcov::reports {
 
-// Escapes &, <, >, " and ' for text and attribute values of HTML and SVG.
-std::string escapeXml(std::string_view text);
+using camcov::escapeXml;  // util/escape_xml.h: also the sweep debugger's (viz/)
 
 // A pixel coordinate with one decimal: enough for screens and print, and byte-stable.
 std::string px(double value);

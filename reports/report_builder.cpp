@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
+#include "records/atomic_file.h"
 #include "reports/markup.h"
 #include "reports/report_assets.h"
 #include "reports/sections.h"
-#include "results/atomic_file.h"
 
 namespace camcov::reports {
 namespace {
@@ -64,7 +64,7 @@ std::string buildReportHtml(const ReportData& data, const BuildContext& context)
 void writeReport(const std::filesystem::path& resultsDir, const std::filesystem::path& reportFile) {
   const std::filesystem::path target = std::filesystem::absolute(reportFile);
   const ReportData data = loadReportData(resultsDir, target);
-  results::writeFileAtomically(target, buildReportHtml(data, currentBuildContext()));
+  records::writeFileAtomically(target, buildReportHtml(data, currentBuildContext()));
 }
 
 }  // namespace camcov::reports

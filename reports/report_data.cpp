@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "records/run_files.h"
 #include "reports/markup.h"
 #include "reports/summary_reader.h"
-#include "results/run_files.h"
 #include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
@@ -35,19 +35,19 @@ void foldRange(SeriesBand& band, const std::vector<double>& values, bool first) 
   }
 }
 
-MethodRuns loadMethodRuns(const results::BatchFolder& folder, const std::string& scene,
+MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string& scene,
                           const std::string& method, std::uint64_t seeds,
                           std::uint64_t medianSeed) {
   MethodRuns runs;
   runs.medianSeed = medianSeed;
   for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
-    results::RunMetadata id;
+    records::RunMetadata id;
     id.scene = scene;
     id.method = method;
     id.seed = seed;
-    const fs::path file = folder.runFile(results::runStem(id));
+    const fs::path file = folder.runFile(records::runStem(id));
     if (!fs::exists(file)) continue;  // failed, or not run by this shard
-    results::RunRecord run = results::loadRunFile(file);
+    records::RunRecord run = records::loadRunFile(file);
     runs.averageCoverage.push_back(run.summary.averageCoverage);
     runs.averageUtilization.push_back(run.summary.averageUtilization);
     std::vector<double> coverage, utilization;
@@ -71,7 +71,7 @@ MethodRuns loadMethodRuns(const results::BatchFolder& folder, const std::string&
   return runs;
 }
 
-void loadScene(const results::SceneEntry& entry, SceneData& data) {
+void loadScene(const records::SceneEntry& entry, SceneData& data) {
   std::string text;
   try {
     text = scene::readText(entry.file);
@@ -86,7 +86,7 @@ void loadScene(const results::SceneEntry& entry, SceneData& data) {
     data.sceneNote = e.what();
     return;
   }
-  if (results::fnv1a(text) != entry.hash) {
+  if (records::fnv1a(text) != entry.hash) {
     data.sceneNote = entry.file + " changed since the batch ran; drawn as it is now";
   }
 }
@@ -146,7 +146,7 @@ const char* groupTitle(SceneGroup group) {
 }
 
 ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile) {
-  const results::BatchFolder folder(resultsDir);
+  const records::BatchFolder folder(resultsDir);
   auto manifest = folder.readManifest();
   if (!manifest) {
     throw InputError(resultsDir.string() + ": not a camcov results folder (no batch.json)");
@@ -160,7 +160,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
     scene.name = comparison.scene;
     const auto entry =
         std::find_if(data.manifest.scenes.begin(), data.manifest.scenes.end(),
-                     [&](const results::SceneEntry& e) { return e.name == comparison.scene; });
+                     [&](const records::SceneEntry& e) { return e.name == comparison.scene; });
     if (entry != data.manifest.scenes.end()) {
       loadScene(*entry, scene);
     } else {

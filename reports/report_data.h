@@ -1,5 +1,5 @@
 #pragma once
-// Everything the report shows, read from a results folder (src/results/batch_folder.h): the
+// Everything the report shows, read from a results folder (src/records/batch_folder.h): the
 // manifest, the summary, the timings, each scene's file, and per scene and method what the
 // figures need of the runs: every seed's average coverage and utilization (Fig. 4), the
 // median-seed run's time series and events plus the band over all seeds (Fig. 5). Runs are
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "control/controller.h"
-#include "results/batch_folder.h"
-#include "results/batch_summary.h"
+#include "records/batch_folder.h"
+#include "records/batch_summary.h"
 #include "scene/scene.h"
 
 namespace camcov::reports {
@@ -48,9 +48,9 @@ struct SceneData {
 };
 
 struct ReportData {
-  results::BatchManifest manifest;
-  results::BatchSummary summary;
-  std::map<std::string, results::JobTiming> timings;
+  records::BatchManifest manifest;
+  records::BatchSummary summary;
+  std::map<std::string, records::JobTiming> timings;
   std::vector<SceneData> scenes;    // scenes[i] is summary.scenes[i] (natural order)
   std::vector<std::string> videos;  // relative URLs of videos/*.mp4, natural order
 };

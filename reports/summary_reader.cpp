@@ -8,7 +8,7 @@
 namespace camcov::reports {
 namespace {
 
-results::Description describedFrom(const nlohmann::json& j) {
+records::Description describedFrom(const nlohmann::json& j) {
   return {j.at("count").get<int>(),  j.at("mean").get<double>(), j.at("sd").get<double>(),
           j.at("min").get<double>(), j.at("q1").get<double>(),   j.at("median").get<double>(),
           j.at("q3").get<double>(),  j.at("max").get<double>()};
@@ -21,14 +21,14 @@ double numberOrInfinity(const nlohmann::json& v) {
 
 }  // namespace
 
-results::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source) {
+records::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source) {
   try {
     if (j.at("format") != "camcov-summary/1") {
       throw InputError(source + ": not a camcov summary (format camcov-summary/1)");
     }
-    results::BatchSummary s;
+    records::BatchSummary s;
     for (const auto& m : j.at("methods")) {
-      results::MethodSummary ms;
+      records::MethodSummary ms;
       ms.scene = m.at("scene").get<std::string>();
       ms.method = m.at("method").get<std::string>();
       ms.runs = m.at("runs").get<int>();
@@ -67,7 +67,7 @@ results::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string
   }
 }
 
-results::BatchSummary loadSummaryFile(const std::filesystem::path& file) {
+records::BatchSummary loadSummaryFile(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open the batch summary");
   try {

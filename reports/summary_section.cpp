@@ -22,13 +22,13 @@ std::string winnerBadge(const std::string& winner) {
   return fmt::format("<span class=\"badge\" style=\"--c:{}\">{}</span>", color, escapeXml(winner));
 }
 
-std::string meanSd(const results::Description& d, bool best) {
+std::string meanSd(const records::Description& d, bool best) {
   if (d.count == 0) return "—";
   const std::string text = fixed(d.mean, 3) + " ± " + fixed(d.sd, 3);
   return best ? "<b>" + text + "</b>" : text;
 }
 
-std::string methodRow(const results::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
+std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
   const MethodStyle style = methodStyle(m.method);
   // A method whose every run failed has no numbers, not zeros.
   const auto number = [&](double v, int decimals) {
@@ -48,11 +48,11 @@ std::string methodRow(const results::MethodSummary& m, bool bestCoverage, bool b
       number(m.minObjectDistance, 2), number(m.minCameraDistance, 2));
 }
 
-std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
-                      const std::vector<const results::MethodSummary*>& rows, std::size_t order) {
+std::string sceneBody(const SceneData& scene, const records::SceneComparison& c,
+                      const std::vector<const records::MethodSummary*>& rows, std::size_t order) {
   // Bold marks the one best mean; equal means (a deterministic tie) stay plain.
-  const auto uniqueBest = [&](results::Description results::MethodSummary::*metric) {
-    const results::MethodSummary* best = nullptr;
+  const auto uniqueBest = [&](records::Description records::MethodSummary::*metric) {
+    const records::MethodSummary* best = nullptr;
     int atBest = 0;
     for (const auto* m : rows) {
       if (m->runs == 0) continue;
@@ -65,8 +65,8 @@ std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
     }
     return atBest == 1 ? best : nullptr;
   };
-  const auto* bestCoverage = uniqueBest(&results::MethodSummary::coverage);
-  const auto* bestUtilization = uniqueBest(&results::MethodSummary::utilization);
+  const auto* bestCoverage = uniqueBest(&records::MethodSummary::coverage);
+  const auto* bestUtilization = uniqueBest(&records::MethodSummary::utilization);
   // Sort keys live on the <tbody>: the script reorders whole scenes.
   std::string out =
       fmt::format("<tbody data-scene=\"{}\" data-delta=\"{}\" data-p=\"{}\" data-winner=\"{}\">\n",
@@ -95,7 +95,7 @@ std::string sceneBody(const SceneData& scene, const results::SceneComparison& c,
 }
 
 std::string groupTable(SceneGroup group, const ReportData& data) {
-  std::map<std::string, std::vector<const results::MethodSummary*>> byScene;
+  std::map<std::string, std::vector<const records::MethodSummary*>> byScene;
   for (const auto& m : data.summary.methods)
     byScene[m.scene].push_back(&m);
   std::string bodies;
@@ -103,8 +103,8 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
   for (std::size_t i = 0; i < data.scenes.size(); ++i) {
     const SceneData& scene = data.scenes[i];
     if (scene.group != group) continue;
-    const results::SceneComparison& c = data.summary.scenes[i];
-    std::vector<const results::MethodSummary*> rows;
+    const records::SceneComparison& c = data.summary.scenes[i];
+    std::vector<const records::MethodSummary*> rows;
     for (const auto& method : orderedMethods(data.manifest.methods)) {
       for (const auto* m : byScene[scene.name]) {
         if (m->method == method) rows.push_back(m);
@@ -150,7 +150,7 @@ std::string summarySection(const ReportData& data) {
       "or to another camera, and the smallest such distance in any run. Δ is the paper's mean "
       "coverage minus local's; p is the two-sided Mann-Whitney U test of the two samples; the "
       "winner is the better mean when p &lt; {}, else a tie. Click a column title to sort.</p>\n",
-      data.manifest.seeds, data.manifest.parameters.sim.delta, results::kSignificance);
+      data.manifest.seeds, data.manifest.parameters.sim.delta, records::kSignificance);
   for (const SceneGroup group : kSceneGroups) {
     out += groupTable(group, data);
   }

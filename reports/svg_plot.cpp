@@ -8,8 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "records/statistics.h"
 #include "reports/markup.h"
-#include "results/statistics.h"
 
 namespace camcov::reports {
 namespace {
@@ -122,9 +122,9 @@ BoxStats boxStats(std::span<const double> values) {
   std::sort(sorted.begin(), sorted.end());
   BoxStats b;
   b.count = static_cast<int>(sorted.size());
-  b.q1 = results::quantileOfSorted(sorted, 0.25);
-  b.median = results::quantileOfSorted(sorted, 0.5);
-  b.q3 = results::quantileOfSorted(sorted, 0.75);
+  b.q1 = records::quantileOfSorted(sorted, 0.25);
+  b.median = records::quantileOfSorted(sorted, 0.5);
+  b.q3 = records::quantileOfSorted(sorted, 0.75);
   const double reach = 1.5 * (b.q3 - b.q1);
   const double lowFence = b.q1 - reach, highFence = b.q3 + reach;
   b.whiskerLow = b.q1;

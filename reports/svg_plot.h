@@ -36,7 +36,7 @@ class LinearScale {
   double factor_;
 };
 
-// Tukey's box: quartiles interpolated as in results::describe (Hyndman & Fan type 7), whiskers
+// Tukey's box: quartiles interpolated as in records::describe (Hyndman & Fan type 7), whiskers
 // at the most extreme data still within 1.5 IQR of the box (at the box's edge if no data lies
 // between edge and fence, as matplotlib draws them), everything beyond an outlier.
 struct BoxStats {

@@ -1,161 +1,40 @@
 #include "viz/frame_renderer.h"
 
-#include <cairo-svg.h>
 #include <cairo.h>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "util/input_error.h"
+#include "viz/cairo_drawing.h"
 #include "viz/file_extension.h"
 #include "viz/frame_layout.h"
-
-#if defined(__SANITIZE_ADDRESS__)
-// Fontconfig keeps the font patterns Cairo's text matched in a cache that only FcFini()
-// frees, and nothing calls that before exit: LeakSanitizer would report the cache as a leak
-// of every program that draws a caption. Suppressed here, where the text is drawn.
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libfontconfig.so\n";
-}
-extern "C" const char* __lsan_default_options() {
-  return "print_suppressions=0";
-}
-#endif
 
 namespace camcov::viz {
 namespace {
 
 using geometry::Vec2;
 
-struct Rgb {
-  double r, g, b;
-};
-
-// Green and red differ in lightness as well as hue, so the two stay apart for readers with
-// red-green colour blindness; the views are amber, which clashes with neither nor with blue.
-constexpr Rgb kPage{0.925, 0.929, 0.937};  // outside the boundary, and the panel
-constexpr Rgb kFloor{1.0, 1.0, 1.0};       // free space inside the boundary
-constexpr Rgb kWall{0.42, 0.45, 0.50};
-constexpr Rgb kObstacle{0.22, 0.24, 0.28};
-constexpr Rgb kTarget{0.78, 0.79, 0.81};
-constexpr Rgb kSeen{0.09, 0.60, 0.26};
-constexpr Rgb kUnseen{0.87, 0.18, 0.16};
-constexpr Rgb kView{0.96, 0.65, 0.14};
-constexpr Rgb kCamera{0.13, 0.15, 0.19};
-constexpr Rgb kPlan{0.15, 0.42, 0.82};
+// Frame-only colours and widths; the shared palette is in cairo_drawing.h.
 constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
-constexpr Rgb kText{0.13, 0.15, 0.19};
-constexpr Rgb kMutedText{0.38, 0.41, 0.46};
 constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
-
-constexpr double kViewAlpha = 0.28;
-// Line widths in em, shared by the drawing and its legend sample.
-constexpr double kSegmentWidth = 0.3;
 constexpr double kPlanWidth = 0.14;
 constexpr double kObjectPathWidth = 0.09;
-constexpr const char* kFont = "sans-serif";
 
 // The caption's rows are drawPanel's; the legend has one row per entry.
 enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
 constexpr PanelRows kPanelRows{5, 7};
 
-struct CairoDeleter {
-  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
-  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, CairoDeleter>;
-using Context = std::unique_ptr<cairo_t, CairoDeleter>;
-
-void setColour(cairo_t* cr, Rgb c, double alpha = 1.0) {
-  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
-
-enum class Align { Left, Centre, Right };
-
-// Text with its baseline at `at`. The toy text API is enough for one-line labels and needs
-// no layout library.
-void text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour,
-          Align align = Align::Left, bool bold = false) {
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-  cairo_text_extents_t extents;
-  cairo_text_extents(cr, s.c_str(), &extents);
-  const double shift = align == Align::Left     ? 0.0
-                       : align == Align::Centre ? extents.x_advance / 2.0
-                                                : extents.x_advance;
-  cairo_move_to(cr, at.x - shift, at.y);
-  setColour(cr, colour);
-  cairo_show_text(cr, s.c_str());
-}
-
-// Draws in image pixels; world points go through the layout's transform.
-class Painter {
- public:
-  Painter(cairo_t* cr, const FrameLayout& layout) : cr_(cr), layout_(layout) {}
-
-  cairo_t* cr() const { return cr_; }
-  double em() const { return layout_.em; }
-  Vec2 image(Vec2 world) const { return layout_.toImage(world); }
-
-  void polylinePath(std::span<const Vec2> points) const {
-    if (points.empty()) return;
-    moveTo(points.front());
-    for (const Vec2& p : points.subspan(1))
-      lineTo(p);
-  }
-  void ringPath(std::span<const Vec2> ring) const {
-    polylinePath(ring);
-    cairo_close_path(cr_);
-  }
-  void linePath(Vec2 a, Vec2 b) const {
-    moveTo(a);
-    lineTo(b);
-  }
-  void fill(Rgb colour, double alpha = 1.0) const {
-    setColour(cr_, colour, alpha);
-    cairo_fill(cr_);
-  }
-  void stroke(Rgb colour, double widthEm, double alpha = 1.0) const {
-    setColour(cr_, colour, alpha);
-    cairo_set_line_width(cr_, widthEm * layout_.em);
-    cairo_stroke(cr_);
-  }
-
- private:
-  void moveTo(Vec2 world) const {
-    const Vec2 p = image(world);
-    cairo_move_to(cr_, p.x, p.y);
-  }
-  void lineTo(Vec2 world) const {
-    const Vec2 p = image(world);
-    cairo_line_to(cr_, p.x, p.y);
-  }
-
-  cairo_t* cr_;
-  const FrameLayout& layout_;
-};
-
 // Object paths are dashed: they are where things will be, not where they are.
 void setPathDash(cairo_t* cr, double em) {
   const double dash[] = {0.35 * em, 0.25 * em};
   cairo_set_dash(cr, dash, 2, 0.0);
-}
-
-// Image-space direction of a world heading (the image's y runs down).
-Vec2 imageHeading(double yaw) {
-  return {std::cos(yaw), -std::sin(yaw)};
-}
-
-void drawArena(const Painter& p, const kinematics::World& world) {
-  p.ringPath(world.boundary);
-  cairo_t* cr = p.cr();
-  setColour(cr, kFloor);
-  cairo_fill_preserve(cr);
-  p.stroke(kWall, 0.14);
 }
 
 // Thin dashed loops with an arrow in the direction of travel on the longest leg.
@@ -239,36 +118,8 @@ void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
 }
 
 void drawViews(const Painter& p, std::span<const CameraView> cameras) {
-  for (const CameraView& c : cameras) {
-    if (c.view.size() < 3) continue;
-    p.ringPath(c.view);
-    cairo_t* cr = p.cr();
-    setColour(cr, kView, kViewAlpha);
-    cairo_fill_preserve(cr);
-    p.stroke(kView, 0.07, 0.9);
-  }
-}
-
-void drawObjects(const Painter& p, const kinematics::World& world) {
-  for (const auto& o : world.obstacles)
-    p.ringPath(o);
-  p.fill(kObstacle);
-  for (const auto& t : world.targets)
-    p.ringPath(t);
-  p.fill(kTarget);
-}
-
-// Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
-void drawSegments(const Painter& p, std::span<const visibility::Segment> segments) {
-  cairo_t* cr = p.cr();
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (const bool seen : {false, true}) {
-    for (const auto& s : segments) {
-      if ((s.visibleBy != 0) == seen) p.linePath(s.a, s.b);
-    }
-    p.stroke(seen ? kSeen : kUnseen, kSegmentWidth);
-  }
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for (const CameraView& c : cameras)
+    drawView(p, c.view);
 }
 
 // A ring with a tick in the goal's heading, as a path for the caller to stroke.
@@ -294,29 +145,6 @@ void drawPlans(const Painter& p, std::span<const CameraView> cameras) {
     }
   }
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
-}
-
-// A dark disc with the camera's number and a nose in its heading: the heading still shows
-// when the camera sees nothing and has no view to draw.
-void drawCameraMarker(cairo_t* cr, Vec2 at, double yaw, const std::string& label, double em) {
-  const Vec2 d = imageHeading(yaw), n{-d.y, d.x};
-  const Vec2 tip = at + d * (1.3 * em);
-  const Vec2 base = at + d * (0.3 * em);
-  cairo_move_to(cr, tip.x, tip.y);
-  cairo_line_to(cr, base.x + n.x * 0.5 * em, base.y + n.y * 0.5 * em);
-  cairo_line_to(cr, base.x - n.x * 0.5 * em, base.y - n.y * 0.5 * em);
-  cairo_close_path(cr);
-  cairo_new_sub_path(cr);
-  cairo_arc(cr, at.x, at.y, 0.6 * em, 0.0, 2.0 * std::numbers::pi);
-  // A pale halo first, the fill over it: one outline around disc and nose together.
-  setColour(cr, kFloor);
-  cairo_set_line_width(cr, 0.2 * em);
-  cairo_stroke_preserve(cr);
-  setColour(cr, kCamera);
-  cairo_fill(cr);
-  if (!label.empty()) {
-    text(cr, {at.x, at.y + 0.25 * em}, label, 0.68 * em, kFloor, Align::Centre, true);
-  }
 }
 
 void drawCameras(const Painter& p, std::span<const CameraView> cameras) {
@@ -451,7 +279,7 @@ void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
   const PixelRect& area = layout.worldArea;
   cairo_rectangle(cr, area.x, area.y, area.width, area.height);
   cairo_clip(cr);
-  const Painter painter(cr, layout);
+  const Painter painter(cr, layout.toImage, layout.em);
   drawArena(painter, frame.world);
   drawObjectPaths(painter, frame.paths);
   drawViews(painter, frame.cameras);
@@ -473,22 +301,13 @@ void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
 }
 
 void writeSvg(const Frame& frame, int width, int height, const std::filesystem::path& file) {
-  Surface surface(cairo_svg_surface_create(file.c_str(), width, height));
-  // Pixels rather than Cairo's default points, so a browser shows the SVG as large as the PNG.
-  cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
-  const auto check = [&] {
-    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-      throw InputError(file.string() + ": cannot write: " +
-                       cairo_status_to_string(cairo_surface_status(surface.get())));
-    }
-  };
-  check();
-  {
-    const Context cr(cairo_create(surface.get()));
-    drawFrame(cr.get(), frame, width, height);
-  }
-  cairo_surface_finish(surface.get());
-  check();
+  const std::string svg =
+      svgDocument(width, height, [&](cairo_t* cr) { drawFrame(cr, frame, width, height); });
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw InputError(file.string() + ": cannot write: " + std::strerror(errno));
+  out << svg;
+  out.close();
+  if (!out) throw std::runtime_error(file.string() + ": writing failed");
 }
 
 }  // namespace

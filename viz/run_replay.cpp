@@ -46,20 +46,20 @@ void remainingPath(std::span<const geometry::Pose> path, geometry::Vec2 position
 
 }  // namespace
 
-RunScene loadRunScene(const results::RunMetadata& metadata, const std::filesystem::path& moved) {
+RunScene loadRunScene(const records::RunMetadata& metadata, const std::filesystem::path& moved) {
   const std::filesystem::path file =
       moved.empty() ? std::filesystem::path(metadata.sceneFile) : moved;
   const std::string text = scene::readText(file);
-  return {scene::parseScene(text, file.string()), results::fnv1a(text) != metadata.sceneHash};
+  return {scene::parseScene(text, file.string()), records::fnv1a(text) != metadata.sceneHash};
 }
 
-VideoSettings runVideoSettings(const results::RunRecord& run) {
+VideoSettings runVideoSettings(const records::RunRecord& run) {
   VideoSettings settings;
   settings.fps = std::max(1, static_cast<int>(std::lround(1.0 / run.metadata.parameters.sim.dt)));
   return settings;
 }
 
-RunReplay::RunReplay(const results::RunRecord& run, const scene::Scene& scene)
+RunReplay::RunReplay(const records::RunRecord& run, const scene::Scene& scene)
     : run_(run),
       builder_(scene),
       subtitle_(fmt::format("method {}, seed {}", run.metadata.method, run.metadata.seed)),
@@ -106,7 +106,7 @@ const RunReplay::PlanSpan* RunReplay::planAt(std::size_t camera, double time) co
 }
 
 void RunReplay::build(std::size_t step, Frame& out) {
-  const results::StepRow& row = run_.steps.at(step);
+  const records::StepRow& row = run_.steps.at(step);
   builder_.build(row.time, row.cameras, out);
   out.caption.subtitle = subtitle_;
   for (std::size_t j = 0; j < out.cameras.size(); ++j) {
@@ -118,7 +118,7 @@ void RunReplay::build(std::size_t step, Frame& out) {
   }
 }
 
-std::size_t writeRunVideo(const results::RunRecord& run, const scene::Scene& scene,
+std::size_t writeRunVideo(const records::RunRecord& run, const scene::Scene& scene,
                           const std::filesystem::path& file, const VideoSettings& settings) {
   RunReplay replay(run, scene);
   FrameRenderer renderer(settings.width, settings.height);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "results/run_record.h"
+#include "records/run_record.h"
 #include "scene/scene.h"
 #include "viz/frame.h"
 #include "viz/video_encoder.h"
@@ -24,17 +24,17 @@ struct RunScene {
 
 // The scene a run was made with: the file named in its metadata, or `moved` if given (the
 // file has moved since). SceneError if it is missing or invalid.
-RunScene loadRunScene(const results::RunMetadata& metadata,
+RunScene loadRunScene(const records::RunMetadata& metadata,
                       const std::filesystem::path& moved = {});
 
 // The default settings with one frame per recorded step: fps = 1 / dt, rounded, at least 1.
-VideoSettings runVideoSettings(const results::RunRecord& run);
+VideoSettings runVideoSettings(const records::RunRecord& run);
 
 class RunReplay {
  public:
   // Keeps a reference to `run`. InputError if the run has no steps or a step's camera count
   // differs from the scene's.
-  RunReplay(const results::RunRecord& run, const scene::Scene& scene);
+  RunReplay(const records::RunRecord& run, const scene::Scene& scene);
 
   // Frames at `fps` span the run from its first to its last step; frame k shows the step
   // recorded nearest to k / fps after the first (so each step once when fps = 1 / dt, each
@@ -55,7 +55,7 @@ class RunReplay {
   };
   const PlanSpan* planAt(std::size_t camera, double time) const;
 
-  const results::RunRecord& run_;
+  const records::RunRecord& run_;
   FrameBuilder builder_;
   std::string subtitle_;
   std::vector<std::vector<PlanSpan>> plans_;  // per camera, in time order
@@ -63,7 +63,7 @@ class RunReplay {
 
 // Renders every frame of the run at settings.fps and encodes them into `file`; returns the
 // number of frames.
-std::size_t writeRunVideo(const results::RunRecord& run, const scene::Scene& scene,
+std::size_t writeRunVideo(const records::RunRecord& run, const scene::Scene& scene,
                           const std::filesystem::path& file, const VideoSettings& settings);
 
 }  // namespace camcov::viz

@@ -9,7 +9,7 @@
 
 #include "cli/progress.h"
 #include "cli/worker_pool.h"
-#include "results/run_files.h"
+#include "records/run_files.h"
 
 namespace camcov::cli {
 
@@ -23,7 +23,7 @@ double threadCpuSeconds() {
 
 }  // namespace
 
-BatchRun runBatch(const std::vector<BatchJob>& jobs, const results::BatchFolder& folder,
+BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder& folder,
                   unsigned workers) {
   BatchRun batch;
   batch.outcomes.resize(jobs.size());
@@ -44,13 +44,13 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const results::BatchFolder&
   std::mutex mutex;
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const BatchJob& job = jobs[pending[k]];
-    results::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
+    records::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
     const auto wallStart = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     std::string what;
     try {
-      const results::RunRecord run = runJob(job.spec);
-      results::writeRunFiles(run, folder.runsDir());
+      const records::RunRecord run = runJob(job.spec);
+      records::writeRunFiles(run, folder.runsDir());
       folder.removeFailure(job.stem);
       outcome.summary = run.summary;
       what = fmt::format("{}: coverage {:.3f}", job.stem, run.summary.averageCoverage);
@@ -64,7 +64,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const results::BatchFolder&
         what += fmt::format(" (not recorded: {})", again.what());
       }
     }
-    const results::JobTiming timing{
+    const records::JobTiming timing{
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
         threadCpuSeconds() - cpuStart};
     {

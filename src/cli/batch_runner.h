@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "cli/run_job.h"
-#include "results/batch_folder.h"
-#include "results/batch_summary.h"
+#include "records/batch_folder.h"
+#include "records/batch_summary.h"
 
 namespace camcov::cli {
 
@@ -20,13 +20,13 @@ struct BatchJob {
 };
 
 struct BatchRun {
-  std::vector<results::JobOutcome> outcomes;          // one per job, in job order
-  std::map<std::string, results::JobTiming> timings;  // of the jobs run now, by stem
+  std::vector<records::JobOutcome> outcomes;          // one per job, in job order
+  std::map<std::string, records::JobTiming> timings;  // of the jobs run now, by stem
 };
 
 // `workers` threads (at least 1). Progress goes to stderr: a live line on a terminal, one
 // line per finished job otherwise.
-BatchRun runBatch(const std::vector<BatchJob>& jobs, const results::BatchFolder& folder,
+BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder& folder,
                   unsigned workers);
 
 }  // namespace camcov::cli

@@ -14,7 +14,7 @@
 #include "cli/command.h"
 #include "cli/parameter_options.h"
 #include "params/parameter_table.h"
-#include "results/run_files.h"
+#include "records/run_files.h"
 #include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
@@ -99,18 +99,18 @@ int bench(const BenchOptions& o) {
   if (o.duration >= 0.0) parameters.sim.duration = o.duration;
 
   // Every scene is read and validated before anything runs: a typo fails in a second.
-  results::BatchManifest manifest{kVersion, parameters, methods, o.seeds, {}, o.argv};
+  records::BatchManifest manifest{kVersion, parameters, methods, o.seeds, {}, o.argv};
   std::vector<BatchJob> jobs;
   for (const fs::path& file : sceneFiles(o.scenes)) {
     const std::string text = scene::readText(file);
     const scene::Scene s = scene::parseScene(text, file.string());
-    manifest.scenes.push_back({s.name, file.string(), results::fnv1a(text)});
+    manifest.scenes.push_back({s.name, file.string(), records::fnv1a(text)});
   }
   for (const auto& entry : manifest.scenes) {
     for (const auto& method : methods) {
       for (std::uint64_t seed = 1; seed <= o.seeds; ++seed) {
         JobSpec spec{entry.file, method, seed, parameters};
-        jobs.push_back({spec, entry.name, entry.hash, results::runStem(entry.name, method, seed)});
+        jobs.push_back({spec, entry.name, entry.hash, records::runStem(entry.name, method, seed)});
       }
     }
   }
@@ -119,7 +119,7 @@ int bench(const BenchOptions& o) {
     if (i % shard.count == shard.index) mine.push_back(jobs[i]);
   }
 
-  const results::BatchFolder folder(o.out);
+  const records::BatchFolder folder(o.out);
   if (const auto previous = folder.readManifest()) {
     if (params::toJson(previous->parameters) != params::toJson(parameters) && !o.force) {
       throw InputError(o.out +

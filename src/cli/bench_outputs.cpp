@@ -6,8 +6,8 @@
 #include <map>
 
 #include "cli/bench_videos.h"
+#include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
-#include "results/ompl_benchmark_log.h"
 
 namespace camcov::cli {
 
@@ -19,14 +19,14 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
       ->capture_default_str();
 }
 
-int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
-                      const std::vector<results::JobOutcome>& outcomes,
+int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+                      const std::vector<records::JobOutcome>& outcomes,
                       const BenchOutputOptions& options, unsigned workers) {
-  const results::BatchSummary summary = results::summarize(outcomes);
+  const records::BatchSummary summary = records::summarize(outcomes);
   folder.writeSummary(summary);
-  const auto logs = results::writeOmplBenchmarkLogs(folder, manifest.parameters);
+  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
 
-  std::map<std::pair<std::string, std::string>, const results::MethodSummary*> rows;
+  std::map<std::pair<std::string, std::string>, const records::MethodSummary*> rows;
   for (const auto& m : summary.methods)
     rows[{m.scene, m.method}] = &m;
   auto cell = [&](const std::string& scene, const std::string& method) {
@@ -52,7 +52,7 @@ int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchMa
       "wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl\n",
       folder.root().string(), logs.size(), folder.root().string());
   // Before the report, which embeds what it finds in videos/.
-  const auto chosen = results::chooseVideoRuns(summary, outcomes, options.videoChoice());
+  const auto chosen = records::chooseVideoRuns(summary, outcomes, options.videoChoice());
   if (!chosen.empty()) {
     const VideoBatch videos = writeBenchVideos(folder, chosen, workers);
     std::cout << fmt::format("wrote {} videos in {}/videos ({} up to date{})\n", videos.written,

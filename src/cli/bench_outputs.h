@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "results/batch_folder.h"
-#include "results/batch_summary.h"
-#include "results/video_choice.h"
+#include "records/batch_folder.h"
+#include "records/batch_summary.h"
+#include "records/video_choice.h"
 
 namespace camcov::cli {
 
@@ -17,12 +17,12 @@ struct BenchOutputOptions {
   std::string videos = "median";
   void addTo(CLI::App& cmd);
   // InputError for a bad --videos: called before any job runs.
-  results::VideoChoice videoChoice() const { return results::parseVideoChoice(videos); }
+  records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
 };
 
 // Returns the exit code: 0, or 1 if some job failed. Videos are made on `workers` threads.
-int writeBenchOutputs(const results::BatchFolder& folder, const results::BatchManifest& manifest,
-                      const std::vector<results::JobOutcome>& outcomes,
+int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+                      const std::vector<records::JobOutcome>& outcomes,
                       const BenchOutputOptions& options, unsigned workers);
 
 }  // namespace camcov::cli

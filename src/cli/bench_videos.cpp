@@ -11,15 +11,15 @@
 
 #include "cli/progress.h"
 #include "cli/worker_pool.h"
-#include "results/run_files.h"
+#include "records/run_files.h"
 #include "viz/run_replay.h"
 
 namespace camcov::cli {
 
 namespace fs = std::filesystem;
 
-VideoBatch writeBenchVideos(const results::BatchFolder& folder,
-                            std::span<const results::VideoRun> runs, unsigned workers) {
+VideoBatch writeBenchVideos(const records::BatchFolder& folder,
+                            std::span<const records::VideoRun> runs, unsigned workers) {
   VideoBatch batch;
   if (runs.empty()) return batch;
   const fs::path dir = folder.root() / "videos";
@@ -29,7 +29,7 @@ VideoBatch writeBenchVideos(const results::BatchFolder& folder,
   // (other parameters, --force, a changed scene) gets a new video.
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const std::string stem = results::runStem(runs[i].scene, runs[i].method, runs[i].seed);
+    const std::string stem = records::runStem(runs[i].scene, runs[i].method, runs[i].seed);
     std::error_code ec;
     const auto video = fs::last_write_time(dir / (stem + ".mp4"), ec);
     if (!ec && video >= fs::last_write_time(folder.runFile(stem))) {
@@ -45,11 +45,11 @@ VideoBatch writeBenchVideos(const results::BatchFolder& folder,
   std::mutex mutex;
   std::vector<std::string> problems;  // said again after the progress line, which may overwrite
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
-    const results::VideoRun& chosen = runs[pending[k]];
-    const std::string stem = results::runStem(chosen.scene, chosen.method, chosen.seed);
+    const records::VideoRun& chosen = runs[pending[k]];
+    const std::string stem = records::runStem(chosen.scene, chosen.method, chosen.seed);
     std::string what;
     try {
-      const results::RunRecord run = results::loadRunFile(folder.runFile(stem));
+      const records::RunRecord run = records::loadRunFile(folder.runFile(stem));
       const viz::RunScene scene = viz::loadRunScene(run.metadata);
       const std::size_t frames =
           viz::writeRunVideo(run, scene.scene, dir / (stem + ".mp4"), viz::runVideoSettings(run));

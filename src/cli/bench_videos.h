@@ -3,8 +3,8 @@
 // <results>/videos/<run stem>.mp4 for the report to embed.
 #include <span>
 
-#include "results/batch_folder.h"
-#include "results/video_choice.h"
+#include "records/batch_folder.h"
+#include "records/video_choice.h"
 
 namespace camcov::cli {
 
@@ -17,7 +17,7 @@ struct VideoBatch {
 // Writes the missing or outdated videos on `workers` threads. A video that cannot be made
 // (its scene file has moved, say) is reported and skipped: the runs are the results, a video
 // only shows one.
-VideoBatch writeBenchVideos(const results::BatchFolder& folder,
-                            std::span<const results::VideoRun> runs, unsigned workers);
+VideoBatch writeBenchVideos(const records::BatchFolder& folder,
+                            std::span<const records::VideoRun> runs, unsigned workers);
 
 }  // namespace camcov::cli

@@ -1,5 +1,6 @@
-// `camcov inspect SCENE --time T [--cameras FILE] [--json]`: the visibility sweep's answer for
-// one instant — every segment of S with visibleBy, and the reward's terms (paper IV-A, IV-B).
+// `camcov inspect SCENE --time T [--cameras FILE] [--json] [--camera J -o debug.svg]`: the
+// visibility sweep's answer for one instant — every segment of S with visibleBy, and the
+// reward's terms (paper IV-A, IV-B) — and, with -o, the sweep of camera J drawn for debugging.
 #include <fmt/format.h>
 
 #include <bit>
@@ -10,9 +11,12 @@
 #include "cli/command.h"
 #include "cli/parameter_options.h"
 #include "kinematics/kinematics.h"
+#include "records/atomic_file.h"
 #include "reward/reward_model.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
+#include "util/input_error.h"
+#include "viz/sweep_debug_svg.h"
 
 namespace camcov::cli {
 namespace {
@@ -22,6 +26,8 @@ struct InspectOptions {
   double time = 0.0;
   std::string camerasFile;
   bool json = false;
+  std::string debugSvg;  // the sweep debugger's drawing, if asked for
+  unsigned camera = 0;   // the camera it traces
   ParameterOptions parameters;
 };
 
@@ -33,6 +39,7 @@ nlohmann::json cameraList(std::uint64_t mask) {
 }
 
 int inspect(const InspectOptions& o) {
+  if (!o.debugSvg.empty()) viz::requireSvg(o.debugSvg);  // a wrong extension fails before any work
   const scene::Scene s = scene::loadScene(o.scene);
   const params::Parameters p = o.parameters.resolve();
   std::vector<geometry::Pose> cameras;
@@ -41,6 +48,14 @@ int inspect(const InspectOptions& o) {
       cameras.push_back(c.initial);
   } else {
     cameras = scene::loadCameraPoses(o.camerasFile);
+  }
+  if (!o.debugSvg.empty()) {
+    if (o.camera >= cameras.size()) {
+      throw InputError(fmt::format("--camera {}: out of range, the cameras are numbered 0 to {}",
+                                   o.camera, cameras.size() - 1));
+    }
+    records::writeFileAtomically(
+        o.debugSvg, viz::sweepDebugSvg(viz::buildSweepDebug(s, o.time, cameras, o.camera)));
   }
   reward::RewardModel model(p.reward, s.fovHalfAngle);
   model.setWorld(kinematics::Kinematics(s).worldAt(o.time));
@@ -91,6 +106,7 @@ int inspect(const InspectOptions& o) {
         seg.target, seg.edge, seg.a.x, seg.a.y, seg.b.x, seg.b.y, visibility::length(seg),
         seg.visibleBy ? cameraList(seg.visibleBy).dump() : "nobody");
   }
+  if (!o.debugSvg.empty()) std::cout << fmt::format("  -> {}\n", o.debugSvg);
   return 0;
 }
 
@@ -98,7 +114,9 @@ int inspect(const InspectOptions& o) {
 
 Registration addInspectCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "inspect", "Visibility at one instant: the segments S with visibleBy, coverage and reward");
+      "inspect",
+      "Visibility at one instant: the segments S with visibleBy, coverage and reward; with -o, "
+      "one camera's sweep drawn for debugging");
   auto o = std::make_shared<InspectOptions>();
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
   cmd->add_option("--time,-t", o->time, "time t in seconds")->check(CLI::Range(0.0, 1e9));
@@ -106,6 +124,10 @@ Registration addInspectCommand(CLI::App& app) {
                   "JSON list of poses [{\"x\":..,\"y\":..,\"yaw_deg\":..}] (default: the scene's "
                   "initial cameras)");
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
+  auto* out = cmd->add_option("--out,-o", o->debugSvg,
+                              "also draw the polar sweep of one camera for debugging: its events "
+                              "in order, the edge in front after each, S with visibleBy (.svg)");
+  cmd->add_option("--camera", o->camera, "the camera whose sweep -o draws (default 0)")->needs(out);
   o->parameters.addTo(*cmd);
   return {cmd, [o] { return inspect(*o); }};
 }

@@ -24,11 +24,11 @@ struct MergeOptions {
 
 int merge(const MergeOptions& o) {
   o.outputs.videoChoice();  // a bad --videos fails before anything is copied
-  const results::BatchFolder target(o.out);
-  std::optional<results::BatchManifest> manifest;
-  std::map<std::string, results::JobTiming> timings;
+  const records::BatchFolder target(o.out);
+  std::optional<records::BatchManifest> manifest;
+  std::map<std::string, records::JobTiming> timings;
   for (const auto& input : o.inputs) {
-    const results::BatchFolder source(input);
+    const records::BatchFolder source(input);
     const auto m = source.readManifest();
     if (!m) throw InputError(input + ": not a camcov bench folder (no batch.json)");
     if (!manifest) {

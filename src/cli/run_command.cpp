@@ -8,7 +8,7 @@
 #include "cli/command.h"
 #include "cli/parameter_options.h"
 #include "cli/run_job.h"
-#include "results/run_files.h"
+#include "records/run_files.h"
 #include "scene/scene_loader.h"
 #include "viz/run_replay.h"
 
@@ -30,8 +30,8 @@ int run(const RunOptions& o) {
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
   JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
-  const results::RunRecord record = runJob(job);
-  const auto file = results::writeRunFiles(record, o.out);
+  const records::RunRecord record = runJob(job);
+  const auto file = records::writeRunFiles(record, o.out);
   const auto& s = record.summary;
   std::cout << fmt::format(
       "{} {} seed {}: average coverage {:.4f}, utilization {:.4f} over {} s; min distance to "

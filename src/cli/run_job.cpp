@@ -18,15 +18,15 @@ void requireKnownMethod(const std::string& method) {
   }
 }
 
-results::RunRecord runJob(const JobSpec& job) {
+records::RunRecord runJob(const JobSpec& job) {
   requireKnownMethod(job.method);
   const std::string text = scene::readText(job.sceneFile);
   const scene::Scene scene = scene::parseScene(text, job.sceneFile.string());
 
-  results::RunRecord run;
+  records::RunRecord run;
   run.metadata = {scene.name,
                   job.sceneFile.string(),
-                  results::fnv1a(text),
+                  records::fnv1a(text),
                   job.method,
                   job.seed,
                   job.parameters,
@@ -37,7 +37,7 @@ results::RunRecord runJob(const JobSpec& job) {
   } else {
     controller = std::make_unique<control::LocalController>(scene, job.parameters);
   }
-  results::RunRecorder recorder(run);
+  records::RunRecorder recorder(run);
   run.summary = sim::simulate(scene, job.parameters, *controller, recorder);
   return run;
 }

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "params/parameters.h"
-#include "results/run_record.h"
+#include "records/run_record.h"
 
 namespace camcov::cli {
 
@@ -17,7 +17,7 @@ struct JobSpec {
 };
 
 // Throws InputError for an unknown method or a bad scene.
-results::RunRecord runJob(const JobSpec& job);
+records::RunRecord runJob(const JobSpec& job);
 void requireKnownMethod(const std::string& method);
 
 }  // namespace camcov::cli

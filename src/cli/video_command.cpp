@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "cli/command.h"
-#include "results/run_files.h"
+#include "records/run_files.h"
 #include "util/input_error.h"
 #include "viz/run_replay.h"
 #include "viz/video_encoder.h"
@@ -30,7 +30,7 @@ int video(const VideoOptions& o) {
     throw InputError(
         fmt::format("--width {} --height {}: H.264 (yuv420p) needs even sizes", o.width, o.height));
   }
-  const results::RunRecord run = results::loadRunFile(o.results);
+  const records::RunRecord run = records::loadRunFile(o.results);
   if (o.scene.empty() && !std::filesystem::exists(run.metadata.sceneFile)) {
     throw InputError(fmt::format("{}: the run's scene file {} is not there; give it with --scene",
                                  o.results, run.metadata.sceneFile));

@@ -34,7 +34,7 @@ Box segmentBox(Vec2 a, Vec2 b) {
 void Occluders::build(const kinematics::World& world) {
   inVertices_.clear();
   inNext_.clear();
-  inEdge_.clear();
+  inRingEdge_.clear();
   inRings_.clear();
   inChains_.clear();
   splits_.clear();
@@ -67,13 +67,11 @@ void Occluders::build(const kinematics::World& world) {
   extent_ = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-300});
   tolerance_ = kRelativeTolerance * extent_;
 
-  addRing(world.boundary, RingKind::Boundary, 0, kNone);
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
-    addRing(world.obstacles[i], RingKind::Obstacle, static_cast<std::uint32_t>(i), kNone);
-  }
-  for (std::size_t i = 0; i < world.targets.size(); ++i) {
-    addRing(world.targets[i], RingKind::Target, static_cast<std::uint32_t>(i), targetOffsets_[i]);
-  }
+  addRing(world.boundary, RingKind::Boundary, 0);
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    addRing(world.obstacles[i], RingKind::Obstacle, static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < world.targets.size(); ++i)
+    addRing(world.targets[i], RingKind::Target, static_cast<std::uint32_t>(i));
 
   findSplits();
   std::sort(splits_.begin(), splits_.end(), [](const Split& x, const Split& y) {
@@ -84,21 +82,26 @@ void Occluders::build(const kinematics::World& world) {
   findTwins();
 }
 
-void Occluders::addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t owner,
-                        std::uint32_t globalEdgeBase) {
+const Chain& Occluders::chainOf(std::uint32_t piece) const {
+  // Chains are contiguous and in vertex order: the last one starting at or before the piece.
+  const auto after = std::upper_bound(chains_.begin(), chains_.end(), piece,
+                                      [](std::uint32_t p, const Chain& c) { return p < c.first; });
+  return *(after - 1);
+}
+
+void Occluders::addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t owner) {
   const auto first = static_cast<std::uint32_t>(inVertices_.size());
   const std::size_t n = ring.size();
   for (std::size_t k = 0; k < n; ++k) {
     // Of a run of repeated vertices keep the last: its edge is the one of non-zero length.
     if (ring[k] == ring[(k + 1) % n]) continue;
     inVertices_.push_back(ring[k]);
-    inEdge_.push_back(kind == RingKind::Target ? globalEdgeBase + static_cast<std::uint32_t>(k)
-                                               : kNone);
+    inRingEdge_.push_back(static_cast<std::uint32_t>(k));
   }
   const auto count = static_cast<std::uint32_t>(inVertices_.size()) - first;
   if (count < 2) {  // a point occludes nothing and has no length to cover
     inVertices_.resize(first);
-    inEdge_.resize(first);
+    inRingEdge_.resize(first);
     return;
   }
   for (std::uint32_t k = 0; k < count; ++k)
@@ -276,7 +279,9 @@ void Occluders::buildChains() {
       const std::uint32_t i = chain.first + k, n = chain.first + (k + 1) % chain.count;
       next_[i] = n;
       t1_[i] = inputEdgeOfPiece_[n] == inputEdgeOfPiece_[i] ? t0_[n] : 1.0;
-      globalEdge_[i] = inEdge_[inputEdgeOfPiece_[i]];
+      globalEdge_[i] = chain.kind == RingKind::Target
+                           ? targetOffsets_[chain.owner] + inRingEdge_[inputEdgeOfPiece_[i]]
+                           : kNone;
     }
   }
 }

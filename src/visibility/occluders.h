@@ -69,6 +69,14 @@ class Occluders {
   double t0(std::uint32_t piece) const { return t0_[piece]; }
   double t1(std::uint32_t piece) const { return t1_[piece]; }
 
+  // The ring a piece belongs to. O(log rings).
+  const Chain& chainOf(std::uint32_t piece) const;
+  // The edge of the World's ring the piece lies on: from vertex ringEdge(piece) of that ring
+  // (the chain's owner) to the next one.
+  std::uint32_t ringEdge(std::uint32_t piece) const {
+    return inRingEdge_[inputEdgeOfPiece_[piece]];
+  }
+
   // Target edges are numbered globally: edge e of target i is targetEdgeOffset(i) + e.
   std::uint32_t targetCount() const {
     return static_cast<std::uint32_t>(targetOffsets_.size()) - 1;
@@ -102,8 +110,7 @@ class Occluders {
     std::uint32_t first, count;
   };
 
-  void addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t owner,
-               std::uint32_t globalEdgeBase);
+  void addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t owner);
   void findSplits();
   void intersectRings(std::uint32_t ringA, std::uint32_t ringB);
   void intersectEdges(std::uint32_t e, std::uint32_t f);
@@ -116,7 +123,7 @@ class Occluders {
   // Input: the World's rings without repeated consecutive vertices.
   std::vector<geometry::Vec2> inVertices_;
   std::vector<std::uint32_t> inNext_;
-  std::vector<std::uint32_t> inEdge_;  // global target edge of the input edge, or kNone
+  std::vector<std::uint32_t> inRingEdge_;  // k of the input edge: vertex k to k + 1 of its ring
   std::vector<InputRing> inRings_;
   std::vector<Chain> inChains_;  // chain attributes per input ring (first/count set later)
   std::vector<std::uint32_t> ringOrder_;

@@ -4,7 +4,7 @@ namespace camcov::visibility {
 
 using EventKind = PolarEdges::EventKind;
 
-void PolarSweep::run(const PolarEdges& edges, SpanSink& sink) {
+void PolarSweep::run(const PolarEdges& edges, SpanSink& sink, SweepObserver* observer) {
   if (edges.blind()) return;
   active_.reset(edges.idCount(), edges.wedgeBase());
   for (const std::uint32_t id : edges.initiallyActive()) {
@@ -18,6 +18,7 @@ void PolarSweep::run(const PolarEdges& edges, SpanSink& sink) {
   const auto events = edges.events();
   std::uint32_t front = active_.front();
   bool inFov = edges.initiallyInFov();
+  if (observer != nullptr) observer->start(front, inFov);
   // Spans run from one change to the next; the last one closes on the first change, across
   // the +x axis, so no span is cut where the sweep happens to start.
   bool changed = false;
@@ -29,9 +30,11 @@ void PolarSweep::run(const PolarEdges& edges, SpanSink& sink) {
       ++end;
 
     bool enter = false, leave = false;
-    apply(edges, events.subspan(i, end - i), enter, leave);
+    const auto batch = events.subspan(i, end - i);
+    apply(edges, batch, enter, leave);
     const bool nextInFov = enter && leave ? edges.wideFov() : enter || (inFov && !leave);
     const std::uint32_t nextFront = active_.front();
+    if (observer != nullptr) observer->ray(batch, nextFront, nextInFov);
 
     if (nextFront != front || nextInFov != inFov) {
       const geometry::Vec2 ray = edges.pointOf(events[i]);

@@ -26,11 +26,24 @@ class SpanSink {
   ~SpanSink() = default;
 };
 
+// Watches the sweep ray by ray, for tracing (Sweep::trace); the sweep runs the same with or
+// without one.
+class SweepObserver {
+ public:
+  // On the start ray, before any event.
+  virtual void start(std::uint32_t front, bool inFov) = 0;
+  // The events of one ray have been applied; `front` and `inFov` hold just after it.
+  virtual void ray(std::span<const PolarEdges::Event> batch, std::uint32_t front, bool inFov) = 0;
+
+ protected:
+  ~SweepObserver() = default;
+};
+
 class PolarSweep {
  public:
   // O(n log n) for n events: the event sort in PolarEdges, and O(log n) per tree update; a
-  // vertex where one edge hands over to the next costs O(1).
-  void run(const PolarEdges& edges, SpanSink& sink);
+  // vertex where one edge hands over to the next costs O(1). `observer` may be null.
+  void run(const PolarEdges& edges, SpanSink& sink, SweepObserver* observer = nullptr);
 
  private:
   // Applies the events of one ray: removals, then insertions, so the order only ever compares

@@ -1,5 +1,6 @@
 #include "visibility/sweep.h"
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -71,6 +72,84 @@ class PolygonSink final : public SpanSink {
   geometry::Ring& out_;
 };
 
+// Records each ray of one camera's sweep (Sweep::trace).
+class TraceObserver final : public SweepObserver {
+ public:
+  TraceObserver(const PolarEdges& edges, SweepTrace& out) : edges_(edges), out_(out) {}
+
+  void start(std::uint32_t front, bool inFov) override {
+    out_.frontBefore = traced(front);
+    out_.inFovBefore = inFov;
+  }
+
+  void ray(std::span<const PolarEdges::Event> batch, std::uint32_t front, bool inFov) override {
+    using E = PolarEdges;
+    const TracedEdge frontAfter = traced(front);
+    for (const E::Event& e : batch) {
+      TracedEvent t;
+      t.kind = kindOf(e.kind);
+      t.ray = rays_;
+      // A field-of-view event's own point lies far beyond the scene, where nothing is drawn.
+      const Vec2 onRay = edges_.pointOf(e);
+      t.hitAfter = edges_.hit(front, onRay);
+      const bool fovRay = e.kind == E::EventKind::FovEnter || e.kind == E::EventKind::FovLeave;
+      t.point = fovRay ? t.hitAfter : onRay;
+      const Vec2 d = onRay - edges_.viewpoint();
+      t.angle = std::atan2(d.y, d.x);
+      if (t.angle < 0.0) t.angle += 2.0 * std::numbers::pi;
+      t.inserted = static_cast<std::uint8_t>(
+          std::popcount(static_cast<unsigned>(e.actions & (E::kInsertBefore | E::kInsertAfter))));
+      t.removed = static_cast<std::uint8_t>(
+          std::popcount(static_cast<unsigned>(e.actions & (E::kRemoveBefore | E::kRemoveAfter))));
+      t.frontAfter = frontAfter;
+      t.inFovAfter = inFov;
+      out_.events.push_back(t);
+    }
+    ++rays_;
+  }
+
+ private:
+  static TracedEvent::Kind kindOf(PolarEdges::EventKind kind) {
+    switch (kind) {
+      case PolarEdges::EventKind::Vertex:
+        return TracedEvent::Kind::Vertex;
+      case PolarEdges::EventKind::WedgeStart:
+        return TracedEvent::Kind::WedgeStart;
+      case PolarEdges::EventKind::WedgeEnd:
+        return TracedEvent::Kind::WedgeEnd;
+      case PolarEdges::EventKind::FovEnter:
+        return TracedEvent::Kind::FovEnter;
+      case PolarEdges::EventKind::FovLeave:
+        break;
+    }
+    return TracedEvent::Kind::FovLeave;
+  }
+
+  TracedEdge traced(std::uint32_t id) const {
+    TracedEdge t;
+    if (id == PolarEdges::kNone) return t;
+    if (id >= edges_.wedgeBase()) {
+      t.kind = TracedEdge::Kind::Wedge;
+      t.a = t.b = edges_.viewpoint();
+      return t;
+    }
+    const Occluders& occluders = edges_.occluders();
+    const Chain& chain = occluders.chainOf(id);
+    t.kind = TracedEdge::Kind::Edge;
+    t.piece = id;
+    t.ring = chain.kind;
+    t.owner = chain.owner;
+    t.edge = occluders.ringEdge(id);
+    t.a = occluders.vertices()[id];
+    t.b = occluders.vertices()[occluders.next(id)];
+    return t;
+  }
+
+  const PolarEdges& edges_;
+  SweepTrace& out_;
+  std::uint32_t rays_ = 0;
+};
+
 bool finite(Vec2 v) {
   return std::isfinite(v.x) && std::isfinite(v.y);
 }
@@ -91,6 +170,16 @@ struct Sweep::Impl {
   PolarEdges edges;
   PolarSweep sweep;
   Tessellation tessellation;
+
+  void fieldOfView(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+                   geometry::Ring& out, SweepObserver* observer) {
+    checkCamera(camera, halfFov);
+    const FieldOfView fov{camera.yaw, halfFov};
+    edges.build(occluders, camera.position(), &fov);
+    PolygonSink sink(edges, out);
+    sweep.run(edges, sink, observer);
+    sink.finish();
+  }
 };
 
 Sweep::Sweep() : impl_(std::make_unique<Impl>()) {}
@@ -126,12 +215,19 @@ void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::
 
 void Sweep::fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
                                double halfFov, geometry::Ring& out) {
-  checkCamera(camera, halfFov);
-  const FieldOfView fov{camera.yaw, halfFov};
-  impl_->edges.build(occluders, camera.position(), &fov);
-  PolygonSink sink(impl_->edges, out);
-  impl_->sweep.run(impl_->edges, sink);
-  sink.finish();
+  impl_->fieldOfView(occluders, camera, halfFov, out, nullptr);
+}
+
+void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+                  SweepTrace& out) {
+  out.camera = camera;
+  out.halfFov = halfFov;
+  out.frontBefore = {};
+  out.inFovBefore = false;
+  out.events.clear();
+  TraceObserver observer(impl_->edges, out);
+  impl_->fieldOfView(occluders, camera, halfFov, out.fieldOfView, &observer);
+  out.blind = impl_->edges.blind();
 }
 
 }  // namespace camcov::visibility

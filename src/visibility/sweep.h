@@ -26,6 +26,7 @@
 #include "geometry/vec2.h"
 #include "visibility/occluders.h"
 #include "visibility/segment.h"
+#include "visibility/sweep_trace.h"
 
 namespace camcov::visibility {
 
@@ -60,6 +61,12 @@ class Sweep {
   // itself and the event points inside the field of view" (section IV-B). For drawing.
   void fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
                           geometry::Ring& out);
+
+  // The sweep of one camera event by event, for debugging: fieldOfViewPolygon() with every ray
+  // recorded (see SweepTrace). Same sweep, same event order and same active edges as
+  // segments(); allocates while it records. Throws like fieldOfViewPolygon().
+  void trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+             SweepTrace& out);
 
  private:
   struct Impl;

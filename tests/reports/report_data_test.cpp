@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::countOf;
 
-results::JobOutcome job(std::string scene, std::string method, std::uint64_t seed, double c) {
-  results::JobOutcome o{std::move(scene), std::move(method), seed, false, "", {}};
+records::JobOutcome job(std::string scene, std::string method, std::uint64_t seed, double c) {
+  records::JobOutcome o{std::move(scene), std::move(method), seed, false, "", {}};
   o.summary.averageCoverage = c;
   o.summary.averageUtilization = c / 3;
   o.summary.minObjectDistance = 0.4 + c;
@@ -28,16 +28,16 @@ results::JobOutcome job(std::string scene, std::string method, std::uint64_t see
 }
 
 TEST(SummaryReader, ReadsBackWhatTheSummaryWrote) {
-  std::vector<results::JobOutcome> jobs;
+  std::vector<records::JobOutcome> jobs;
   for (std::uint64_t s = 1; s <= 4; ++s) {
     jobs.push_back(job("static2", "paper", s, 0.6 + 0.01 * s));
     jobs.push_back(job("static2", "local", s, 0.4));
     jobs.push_back(job("dynamic10", "paper", s, 0.3 * s));
   }
   jobs.push_back({"dynamic10", "local", 1, true, "it broke", {}});
-  const nlohmann::json written = results::summaryToJson(results::summarize(jobs));
-  const results::BatchSummary read = summaryFromJson(written, "summary.json");
-  EXPECT_EQ(results::summaryToJson(read), written);
+  const nlohmann::json written = records::summaryToJson(records::summarize(jobs));
+  const records::BatchSummary read = summaryFromJson(written, "summary.json");
+  EXPECT_EQ(records::summaryToJson(read), written);
   EXPECT_TRUE(std::isinf(read.methods[0].minCameraDistance)) << "null reads back as infinity";
   ASSERT_EQ(read.failures.size(), 1u);
   EXPECT_TRUE(read.failures[0].failed);

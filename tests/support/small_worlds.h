@@ -1,12 +1,30 @@
 #pragma once
 // Small worlds and scenes written by hand, shared by the tests of the upper stages.
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "geometry/ring.h"
 #include "kinematics/world.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 
 namespace camcov::testing {
+
+// The rectangle [x0, x1] x [y0, y1], counter-clockwise from (x0, y0).
+inline geometry::Ring box(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// A world of the given rings, as kinematics would place them at some instant.
+inline kinematics::World world(geometry::Ring boundary, std::vector<geometry::Ring> targets,
+                               std::vector<geometry::Ring> obstacles = {}) {
+  kinematics::World w;
+  w.boundary = std::move(boundary);
+  w.targets = std::move(targets);
+  w.obstacles = std::move(obstacles);
+  return w;
+}
 
 // A 40 m square room with a 1 m square target at the origin and a 2 x 1 obstacle at (6, 0).
 inline kinematics::World roomWithTargetAndObstacle() {

@@ -4,26 +4,16 @@
 #include <algorithm>
 #include <vector>
 
+#include "support/small_worlds.h"
 #include "visibility/occluders.h"
 
 namespace camcov::visibility {
 namespace {
 
+using camcov::testing::box;
+using camcov::testing::world;
 using geometry::Ring;
 using geometry::Vec2;
-
-Ring box(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-kinematics::World world(Ring boundary, std::vector<Ring> targets,
-                        std::vector<Ring> obstacles = {}) {
-  kinematics::World w;
-  w.boundary = std::move(boundary);
-  w.targets = std::move(targets);
-  w.obstacles = std::move(obstacles);
-  return w;
-}
 
 std::vector<Vec2> chainVertices(const Occluders& o, std::size_t chain) {
   const Chain& c = o.chains()[chain];
@@ -110,6 +100,34 @@ TEST(Occluders, RepeatedVerticesAreDroppedButEdgeNumbersKept) {
   for (std::uint32_t p = o.chains()[1].first; p < o.pieceCount(); ++p)
     edges.push_back(o.globalEdge(p));
   EXPECT_EQ(edges, (std::vector<std::uint32_t>{1, 2, 3, 4}));
+}
+
+TEST(Occluders, EveryPieceNamesItsRingAndTheRingEdgeItLiesOn) {
+  // The obstacle repeats its first vertex (its edge 0 has no length) and crosses the target
+  // at (3, 0) and (4, 1), so some pieces are parts of an edge.
+  const Ring obstacle{{3, -1}, {3, -1}, {5, -1}, {5, 1}, {3, 1}};
+  const auto w = world(box(-10, -10, 10, 10), {box(0, 0, 4, 2)}, {obstacle});
+  const Occluders o(w);
+  std::vector<std::uint32_t> obstacleEdges;
+  for (std::uint32_t p = 0; p < o.pieceCount(); ++p) {
+    const Chain& chain = o.chainOf(p);
+    EXPECT_EQ(&chain, &o.chains()[chain.kind == RingKind::Boundary   ? 0
+                                  : chain.kind == RingKind::Obstacle ? 1
+                                                                     : 2]);
+    const Ring& ring = chain.kind == RingKind::Boundary   ? w.boundary
+                       : chain.kind == RingKind::Obstacle ? w.obstacles[chain.owner]
+                                                          : w.targets[chain.owner];
+    const std::uint32_t k = o.ringEdge(p);
+    ASSERT_LT(k, ring.size());
+    const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+    for (const Vec2 end : {o.vertices()[p], o.vertices()[o.next(p)]}) {
+      EXPECT_EQ(orient(a, b, end), 0.0) << "piece " << p;
+      EXPECT_LE(dot(end - a, end - b), 0.0) << "piece " << p;  // between a and b
+    }
+    if (chain.kind == RingKind::Obstacle) obstacleEdges.push_back(k);
+  }
+  // Edges 1 and 2 (y = −1 and x = 5) are whole; 3 and 4 are split where the target crosses.
+  EXPECT_EQ(obstacleEdges, (std::vector<std::uint32_t>{1, 2, 3, 3, 4, 4}));
 }
 
 TEST(Occluders, ToleranceScalesWithTheWorld) {

@@ -7,30 +7,20 @@
 #include <stdexcept>
 #include <vector>
 
+#include "support/small_worlds.h"
 #include "visibility/sweep.h"
 
 namespace camcov::visibility {
 namespace {
 
+using camcov::testing::box;
+using camcov::testing::world;
 using geometry::Pose;
 using geometry::Ring;
 using geometry::Vec2;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kTight = 1e-12;
-
-Ring box(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-kinematics::World world(Ring boundary, std::vector<Ring> targets,
-                        std::vector<Ring> obstacles = {}) {
-  kinematics::World w;
-  w.boundary = std::move(boundary);
-  w.targets = std::move(targets);
-  w.obstacles = std::move(obstacles);
-  return w;
-}
 
 std::vector<Segment> segmentsOf(const kinematics::World& w, std::vector<Pose> cameras,
                                 double halfFov) {

@@ -9,28 +9,18 @@
 
 #include "random_scenes.h"
 #include "reference_visibility.h"
+#include "support/small_worlds.h"
 #include "visibility/sweep.h"
 
 namespace camcov::visibility {
 namespace {
 
+using camcov::testing::box;
+using camcov::testing::world;
 using geometry::Ring;
 using geometry::Vec2;
 
 constexpr double kPi = std::numbers::pi;
-
-Ring box(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-kinematics::World world(Ring boundary, std::vector<Ring> targets,
-                        std::vector<Ring> obstacles = {}) {
-  kinematics::World w;
-  w.boundary = std::move(boundary);
-  w.targets = std::move(targets);
-  w.obstacles = std::move(obstacles);
-  return w;
-}
 
 Ring polygonFrom(const kinematics::World& w, Vec2 point) {
   Sweep sweep;

@@ -1,9 +1,11 @@
-// End-to-end: camcov render, camcov video and camcov run --video as a user runs them.
+// End-to-end: camcov render, camcov video, camcov run --video and camcov inspect -o (the sweep
+// debugger) as a user runs them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/run_camcov.h"
 #include "viz_test_support.h"
@@ -115,6 +117,43 @@ TEST_F(RecordedRun, BadInputsExitTwo) {
                 .exitCode,
             2);
   EXPECT_FALSE(std::filesystem::exists(dir_ / "other"));
+}
+
+TEST(InspectCommand, OutOptionWritesTheSweepOfTheChosenCameraBesideTheUsualAnswer) {
+  ScratchDir dir;
+  const auto svg = dir / "debug.svg";
+  const auto r =
+      runCamcov("inspect " + quoted(tinyScene()) + " --time 0 --camera 0 --json -o " + quoted(svg));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // --json output stays pure JSON
+  EXPECT_EQ(j["cameras"].size(), 1u);
+  std::stringstream contents;
+  contents << std::ifstream(svg).rdbuf();
+  const std::string text = contents.str();
+  EXPECT_EQ(text.rfind("<?xml", 0), 0u);
+  EXPECT_NE(text.find("the sweep of camera 0"), std::string::npos);
+  EXPECT_NE(text.find(">e1 "), std::string::npos);   // the table's first row
+  EXPECT_NE(text.find(">{0}<"), std::string::npos);  // the seen edge's visibleBy set
+  // Written through a temporary file and renamed: nothing else is left in the folder.
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir / ""))
+    ++files;
+  EXPECT_EQ(files, 1u);
+}
+
+TEST(InspectCommand, BadOutOptionsExitTwoWithoutWriting) {
+  ScratchDir dir;
+  const std::string scene = "inspect " + quoted(tinyScene()) + " --time 0 ";
+  EXPECT_EQ(runCamcov(scene + "-o " + quoted(dir / "d.png")).exitCode, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "d.png"));
+  EXPECT_EQ(runCamcov(scene + "--camera 1 -o " + quoted(dir / "d.svg")).exitCode, 2);  // 1 camera
+  EXPECT_EQ(runCamcov(scene + "--camera -1 -o " + quoted(dir / "d.svg")).exitCode, 2);
+  EXPECT_EQ(runCamcov(scene + "--camera 0").exitCode, 2);  // nothing to draw it into
+  EXPECT_FALSE(std::filesystem::exists(dir / "d.svg"));
+  std::ofstream(dir / "file") << "not a folder";
+  const auto r = runCamcov(scene + "-o " + quoted(dir / "file" / "d.svg"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("file"), std::string::npos) << r.err;
 }
 
 }  // namespace

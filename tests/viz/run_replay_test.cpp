@@ -20,7 +20,7 @@ class TinyRun : public ::testing::Test {
     run_.metadata.method = "paper";
     run_.metadata.seed = 7;
     for (int i = 0; i <= 30; ++i) {
-      results::StepRow row;
+      records::StepRow row;
       row.time = i * 0.1;
       row.cameras = {Pose{-3.0, 0.1 * i, 0.0}};
       row.goals = {i >= 5 && i < 15 ? std::optional<Pose>(kGoal) : std::nullopt};
@@ -32,7 +32,7 @@ class TinyRun : public ::testing::Test {
 
   static constexpr Pose kGoal{0.0, 2.0, 1.0};
   scene::Scene scene_;
-  results::RunRecord run_;
+  records::RunRecord run_;
 };
 
 TEST_F(TinyRun, OneFramePerStepAtTheRecordedRate) {
@@ -80,7 +80,7 @@ TEST_F(TinyRun, RunWithAnotherCameraCountIsAnInputError) {
 }
 
 TEST(RunVideoSettings, ShowEachStepOnceAtOneOverDtFramesPerSecond) {
-  results::RunRecord run;
+  records::RunRecord run;
   run.metadata.parameters.sim.dt = 0.04;
   EXPECT_EQ(runVideoSettings(run).fps, 25);
   run.metadata.parameters.sim.dt = 3.0;
@@ -88,7 +88,7 @@ TEST(RunVideoSettings, ShowEachStepOnceAtOneOverDtFramesPerSecond) {
 }
 
 TEST(LoadRunScene, NoticesAChangedSceneFile) {
-  results::RunMetadata metadata;
+  records::RunMetadata metadata;
   metadata.sceneFile = "/nonexistent/scene.json";
   const RunScene moved = loadRunScene(metadata, testing::tinyScene());
   EXPECT_EQ(moved.scene.name, "tiny_scene");

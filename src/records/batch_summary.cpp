@@ -1,4 +1,4 @@
-#include "results/batch_summary.h"
+#include "records/batch_summary.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 
 #include "util/natural_order.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 namespace {
 
@@ -173,4 +173,4 @@ std::string summaryToCsv(const BatchSummary& summary) {
   return csv;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,4 +1,4 @@
-#include "results/statistics.h"
+#include "records/statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "util/natural_order.h"
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 TEST(Describe, MatchesHandComputedValues) {
@@ -79,4 +79,4 @@ TEST(NaturalLess, OrdersDigitRunsAsNumbers) {
 }
 
 }  // namespace
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <string_view>
 
-namespace camcov::results {
+namespace camcov::records {
 
 // Throws InputError if the folder cannot be created or written (a bad --out), and
 // std::runtime_error for failures while writing (e.g. the disk is full).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

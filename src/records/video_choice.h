@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "results/batch_summary.h"
+#include "records/batch_summary.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 enum class VideoChoice {
   None,    // no videos
@@ -33,4 +33,4 @@ struct VideoRun {
 std::vector<VideoRun> chooseVideoRuns(const BatchSummary& summary,
                                       std::span<const JobOutcome> outcomes, VideoChoice choice);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

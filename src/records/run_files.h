@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "results/run_record.h"
+#include "records/run_record.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 inline constexpr const char* kRunFormat = "camcov-run/1";
 
@@ -28,4 +28,4 @@ std::string runStem(const RunMetadata& metadata);
 // Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically; returns the JSON path.
 std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

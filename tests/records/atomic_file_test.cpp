@@ -1,4 +1,4 @@
-#include "results/atomic_file.h"
+#include "records/atomic_file.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "support/scratch.h"
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 namespace fs = std::filesystem;
@@ -47,4 +47,4 @@ TEST(WriteFileAtomically, FullDiskIsAnErrorAndKeepsTheOldFile) {
 }
 
 }  // namespace
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,4 +1,4 @@
-#include "results/atomic_file.h"
+#include "records/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 namespace {
 
@@ -54,4 +54,4 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view con
   }
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "results/batch_folder.h"
+#include "records/batch_folder.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 // The log text of one scene's runs (all methods, all seeds).
 std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunRecord>& runs,
@@ -21,4 +21,4 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
 std::vector<std::filesystem::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
                                                           const params::Parameters& parameters);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

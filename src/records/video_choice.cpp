@@ -1,10 +1,10 @@
-#include "results/video_choice.h"
+#include "records/video_choice.h"
 
 #include <algorithm>
 
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 VideoChoice parseVideoChoice(const std::string& text) {
   if (text == "none") return VideoChoice::None;
@@ -37,4 +37,4 @@ std::vector<VideoRun> chooseVideoRuns(const BatchSummary& summary,
   return chosen;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

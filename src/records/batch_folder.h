@@ -15,10 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "params/parameters.h"
-#include "results/batch_summary.h"
-#include "results/run_record.h"
+#include "records/batch_summary.h"
+#include "records/run_record.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 struct SceneEntry {
   std::string name;
@@ -79,4 +79,4 @@ class BatchFolder {
 nlohmann::json manifestToJson(const BatchManifest& m);
 BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& source);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,4 +1,4 @@
-#include "results/ompl_benchmark_log.h"
+#include "records/ompl_benchmark_log.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -6,10 +6,10 @@
 #include <map>
 
 #include "params/parameter_table.h"
-#include "results/atomic_file.h"
-#include "results/run_files.h"
+#include "records/atomic_file.h"
+#include "records/run_files.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 namespace fs = std::filesystem;
 
@@ -128,4 +128,4 @@ std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
   return written;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

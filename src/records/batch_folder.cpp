@@ -1,15 +1,15 @@
-#include "results/batch_folder.h"
+#include "records/batch_folder.h"
 
 #include <fmt/format.h>
 
 #include <fstream>
 
 #include "params/parameter_table.h"
-#include "results/atomic_file.h"
-#include "results/run_files.h"
+#include "records/atomic_file.h"
+#include "records/run_files.h"
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 namespace fs = std::filesystem;
 
@@ -164,4 +164,4 @@ void BatchFolder::writeSummary(const BatchSummary& summary) const {
   writeFileAtomically(root_ / "summary.csv", summaryToCsv(summary));
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

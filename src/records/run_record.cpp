@@ -1,6 +1,6 @@
-#include "results/run_record.h"
+#include "records/run_record.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 void RunRecorder::step(const sim::StepRecord& step) {
   StepRow row;
@@ -23,4 +23,4 @@ std::uint64_t fnv1a(std::string_view bytes) {
   return hash;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

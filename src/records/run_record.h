@@ -10,7 +10,7 @@
 #include "params/parameters.h"
 #include "sim/simulator.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 struct RunMetadata {
   std::string scene;            // scene name (file stem)
@@ -50,4 +50,4 @@ class RunRecorder final : public sim::Recorder {
 
 std::uint64_t fnv1a(std::string_view bytes);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

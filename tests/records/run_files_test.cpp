@@ -1,10 +1,10 @@
-#include "results/run_files.h"
+#include "records/run_files.h"
 
 #include <gtest/gtest.h>
 
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 RunRecord sampleRun() {
@@ -64,4 +64,4 @@ TEST(RunStem, NamesSceneMethodAndSeed) {
 }
 
 }  // namespace
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,8 +1,8 @@
-#include "results/batch_summary.h"
+#include "records/batch_summary.h"
 
 #include <gtest/gtest.h>
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 JobOutcome job(std::string scene, std::string method, std::uint64_t seed, double coverage) {
@@ -67,4 +67,4 @@ TEST(Summarize, OutputDoesNotDependOnInputOrder) {
 }
 
 }  // namespace
-}  // namespace camcov::results
+}  // namespace camcov::records

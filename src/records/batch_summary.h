@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "results/statistics.h"
+#include "records/statistics.h"
 #include "sim/simulator.h"
 
-namespace camcov::results {
+namespace camcov::records {
 
 // What the summary needs of one finished (or failed) job.
 struct JobOutcome {
@@ -64,4 +64,4 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes);
 nlohmann::json summaryToJson(const BatchSummary& summary);
 std::string summaryToCsv(const BatchSummary& summary);
 
-}  // namespace camcov::results
+}  // namespace camcov::records

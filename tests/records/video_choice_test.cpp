@@ -1,10 +1,10 @@
-#include "results/video_choice.h"
+#include "records/video_choice.h"
 
 #include <gtest/gtest.h>
 
 #include "util/input_error.h"
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 JobOutcome finished(std::string scene, std::string method, std::uint64_t seed, double coverage) {
@@ -61,4 +61,4 @@ TEST(VideoChoice, AllIsEveryFinishedRunAndNoneIsNothing) {
 }
 
 }  // namespace
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,11 +1,11 @@
-#include "results/statistics.h"
+#include "records/statistics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <vector>
 
-namespace camcov::results {
+namespace camcov::records {
 
 double quantileOfSorted(std::span<const double> sorted, double p) {
   if (sorted.empty()) return 0.0;
@@ -121,4 +121,4 @@ MannWhitney mannWhitneyU(std::span<const double> a, std::span<const double> b) {
   return result;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -3,7 +3,7 @@
 // methods per scene (our addition: the paper reports box plots only, section VI-B).
 #include <span>
 
-namespace camcov::results {
+namespace camcov::records {
 
 struct Description {
   int count = 0;
@@ -33,4 +33,4 @@ struct MannWhitney {
 MannWhitney mannWhitneyU(std::span<const double> a, std::span<const double> b);
 inline constexpr double kExactLimit = 200000;
 
-}  // namespace camcov::results
+}  // namespace camcov::records

@@ -1,4 +1,4 @@
-#include "results/run_files.h"
+#include "records/run_files.h"
 
 #include <fmt/format.h>
 
@@ -9,9 +9,9 @@
 #include "util/input_error.h"
 
 #include "params/parameter_table.h"
-#include "results/atomic_file.h"
+#include "records/atomic_file.h"
 
-namespace camcov::results {
+namespace camcov::records {
 namespace {
 
 nlohmann::json pose(const geometry::Pose& p) {
@@ -218,4 +218,4 @@ std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem:
   return json;
 }
 
-}  // namespace camcov::results
+}  // namespace camcov::records

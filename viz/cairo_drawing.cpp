@@ -1,0 +1,170 @@
+#include "viz/cairo_drawing.h"
+
+#include <cairo-svg.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#if defined(__SANITIZE_ADDRESS__)
+// Fontconfig keeps the font patterns Cairo's text matched in a cache that only FcFini()
+// frees, and nothing calls that before exit: LeakSanitizer would report the cache as a leak
+// of every program that draws a caption. Suppressed here, where the text is drawn.
+extern "C" const char* __lsan_default_suppressions() {
+  return "leak:libfontconfig.so\n";
+}
+extern "C" const char* __lsan_default_options() {
+  return "print_suppressions=0";
+}
+#endif
+
+namespace camcov::viz {
+
+using geometry::Vec2;
+
+void setColour(cairo_t* cr, Rgb c, double alpha) {
+  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
+}
+
+void text(cairo_t* cr, Vec2 at, const std::string& s, double size, Rgb colour, Align align,
+          bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, s.c_str(), &extents);
+  const double shift = align == Align::Left     ? 0.0
+                       : align == Align::Centre ? extents.x_advance / 2.0
+                                                : extents.x_advance;
+  cairo_move_to(cr, at.x - shift, at.y);
+  setColour(cr, colour);
+  cairo_show_text(cr, s.c_str());
+}
+
+void Painter::polylinePath(std::span<const Vec2> points) const {
+  if (points.empty()) return;
+  moveTo(points.front());
+  for (const Vec2& p : points.subspan(1))
+    lineTo(p);
+}
+
+void Painter::ringPath(std::span<const Vec2> ring) const {
+  polylinePath(ring);
+  cairo_close_path(cr_);
+}
+
+void Painter::linePath(Vec2 a, Vec2 b) const {
+  moveTo(a);
+  lineTo(b);
+}
+
+void Painter::fill(Rgb colour, double alpha) const {
+  setColour(cr_, colour, alpha);
+  cairo_fill(cr_);
+}
+
+void Painter::stroke(Rgb colour, double widthEm, double alpha) const {
+  setColour(cr_, colour, alpha);
+  cairo_set_line_width(cr_, widthEm * em_);
+  cairo_stroke(cr_);
+}
+
+void Painter::moveTo(Vec2 world) const {
+  const Vec2 p = image(world);
+  cairo_move_to(cr_, p.x, p.y);
+}
+
+void Painter::lineTo(Vec2 world) const {
+  const Vec2 p = image(world);
+  cairo_line_to(cr_, p.x, p.y);
+}
+
+Vec2 imageHeading(double yaw) {
+  return {std::cos(yaw), -std::sin(yaw)};
+}
+
+void drawArena(const Painter& p, const kinematics::World& world) {
+  p.ringPath(world.boundary);
+  cairo_t* cr = p.cr();
+  setColour(cr, kFloor);
+  cairo_fill_preserve(cr);
+  p.stroke(kWall, 0.14);
+}
+
+void drawObjects(const Painter& p, const kinematics::World& world) {
+  for (const auto& o : world.obstacles)
+    p.ringPath(o);
+  p.fill(kObstacle);
+  for (const auto& t : world.targets)
+    p.ringPath(t);
+  p.fill(kTarget);
+}
+
+// Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
+void drawSegments(const Painter& p, std::span<const visibility::Segment> segments) {
+  cairo_t* cr = p.cr();
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const bool seen : {false, true}) {
+    for (const auto& s : segments) {
+      if ((s.visibleBy != 0) == seen) p.linePath(s.a, s.b);
+    }
+    p.stroke(seen ? kSeen : kUnseen, kSegmentWidth);
+  }
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+}
+
+void drawView(const Painter& p, std::span<const Vec2> view, double alpha) {
+  if (view.size() < 3) return;
+  p.ringPath(view);
+  setColour(p.cr(), kView, alpha);
+  cairo_fill_preserve(p.cr());
+  p.stroke(kView, 0.07, 0.9);
+}
+
+void drawCameraMarker(cairo_t* cr, Vec2 at, double yaw, const std::string& label, double em) {
+  const Vec2 d = imageHeading(yaw), n{-d.y, d.x};
+  const Vec2 tip = at + d * (1.3 * em);
+  const Vec2 base = at + d * (0.3 * em);
+  cairo_move_to(cr, tip.x, tip.y);
+  cairo_line_to(cr, base.x + n.x * 0.5 * em, base.y + n.y * 0.5 * em);
+  cairo_line_to(cr, base.x - n.x * 0.5 * em, base.y - n.y * 0.5 * em);
+  cairo_close_path(cr);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, at.x, at.y, 0.6 * em, 0.0, 2.0 * std::numbers::pi);
+  // A pale halo first, the fill over it: one outline around disc and nose together.
+  setColour(cr, kFloor);
+  cairo_set_line_width(cr, 0.2 * em);
+  cairo_stroke_preserve(cr);
+  setColour(cr, kCamera);
+  cairo_fill(cr);
+  if (!label.empty()) {
+    text(cr, {at.x, at.y + 0.25 * em}, label, 0.68 * em, kFloor, Align::Centre, true);
+  }
+}
+
+std::string svgDocument(int width, int height, const std::function<void(cairo_t*)>& draw) {
+  std::string svg;
+  const cairo_write_func_t append = [](void* out, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(out)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+  };
+  Surface surface(cairo_svg_surface_create_for_stream(append, &svg, width, height));
+  // Pixels rather than Cairo's default points, so a browser shows the SVG as large as the PNG.
+  cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+  {
+    const Context cr(cairo_create(surface.get()));
+    draw(cr.get());
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
+      throw std::runtime_error(std::string("drawing an SVG failed: ") +
+                               cairo_status_to_string(cairo_status(cr.get())));
+    }
+  }
+  cairo_surface_finish(surface.get());
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("writing an SVG failed: ") +
+                             cairo_status_to_string(cairo_surface_status(surface.get())));
+  }
+  return svg;
+}
+
+}  // namespace camcov::viz

@@ -1,0 +1,103 @@
+#pragma once
+// Cairo drawing shared by the frames (frame_renderer) and the sweep debugger
+// (sweep_debug_svg): the palette, text, paths in world coordinates, the scene's pieces drawn
+// the same way in both, and SVG documents rendered in memory. Internal to viz/.
+#include <cairo.h>
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "geometry/vec2.h"
+#include "kinematics/world.h"
+#include "visibility/segment.h"
+#include "viz/world_to_image.h"
+
+namespace camcov::viz {
+
+struct Rgb {
+  double r, g, b;
+};
+
+// Green and red differ in lightness as well as hue, so the two stay apart for readers with
+// red-green colour blindness; the views are amber, which clashes with neither nor with blue.
+inline constexpr Rgb kPage{0.925, 0.929, 0.937};  // outside the boundary, and the panel
+inline constexpr Rgb kFloor{1.0, 1.0, 1.0};       // free space inside the boundary
+inline constexpr Rgb kWall{0.42, 0.45, 0.50};
+inline constexpr Rgb kObstacle{0.22, 0.24, 0.28};
+inline constexpr Rgb kTarget{0.78, 0.79, 0.81};
+inline constexpr Rgb kSeen{0.09, 0.60, 0.26};
+inline constexpr Rgb kUnseen{0.87, 0.18, 0.16};
+inline constexpr Rgb kView{0.96, 0.65, 0.14};
+inline constexpr Rgb kCamera{0.13, 0.15, 0.19};
+inline constexpr Rgb kPlan{0.15, 0.42, 0.82};
+inline constexpr Rgb kText{0.13, 0.15, 0.19};
+inline constexpr Rgb kMutedText{0.38, 0.41, 0.46};
+
+inline constexpr double kViewAlpha = 0.28;
+// Line widths in em, shared by the drawing and its legend sample.
+inline constexpr double kSegmentWidth = 0.3;
+inline constexpr const char* kFont = "sans-serif";
+
+struct CairoDeleter {
+  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
+  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, CairoDeleter>;
+using Context = std::unique_ptr<cairo_t, CairoDeleter>;
+
+void setColour(cairo_t* cr, Rgb c, double alpha = 1.0);
+
+enum class Align { Left, Centre, Right };
+
+// Text with its baseline at `at`. The toy text API is enough for one-line labels and needs
+// no layout library.
+void text(cairo_t* cr, geometry::Vec2 at, const std::string& s, double size, Rgb colour,
+          Align align = Align::Left, bool bold = false);
+
+// Draws in image pixels; world points go through the transform.
+class Painter {
+ public:
+  Painter(cairo_t* cr, const WorldToImage& toImage, double em)
+      : cr_(cr), toImage_(toImage), em_(em) {}
+
+  cairo_t* cr() const { return cr_; }
+  double em() const { return em_; }
+  geometry::Vec2 image(geometry::Vec2 world) const { return toImage_(world); }
+
+  void polylinePath(std::span<const geometry::Vec2> points) const;
+  void ringPath(std::span<const geometry::Vec2> ring) const;
+  void linePath(geometry::Vec2 a, geometry::Vec2 b) const;
+  void fill(Rgb colour, double alpha = 1.0) const;
+  void stroke(Rgb colour, double widthEm, double alpha = 1.0) const;
+
+ private:
+  void moveTo(geometry::Vec2 world) const;
+  void lineTo(geometry::Vec2 world) const;
+
+  cairo_t* cr_;
+  const WorldToImage& toImage_;
+  double em_;
+};
+
+// Image-space direction of a world heading (the image's y runs down).
+geometry::Vec2 imageHeading(double yaw);
+
+// The floor inside the boundary, and the wall.
+void drawArena(const Painter& p, const kinematics::World& world);
+// Obstacles dark, targets grey.
+void drawObjects(const Painter& p, const kinematics::World& world);
+// The targets' boundaries: seen by some camera green, by none red.
+void drawSegments(const Painter& p, std::span<const visibility::Segment> segments);
+// What a camera sees, translucent amber; `alpha` of the fill.
+void drawView(const Painter& p, std::span<const geometry::Vec2> view, double alpha = kViewAlpha);
+// A dark disc with the camera's number and a nose in its heading: the heading still shows
+// when the camera sees nothing and has no view to draw.
+void drawCameraMarker(cairo_t* cr, geometry::Vec2 at, double yaw, const std::string& label,
+                      double em);
+
+// An SVG document of width × height px, drawn by `draw`, as text.
+std::string svgDocument(int width, int height, const std::function<void(cairo_t*)>& draw);
+
+}  // namespace camcov::viz
