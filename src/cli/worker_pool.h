@@ -17,9 +17,10 @@ void forEachOnWorkers(std::size_t count, unsigned workers, const Task& task) {
     for (std::size_t i = next++; i < count; i = next++)
       task(i);
   };
+  // No more threads than items; the calling thread is one of them.
+  const std::size_t threadCount = std::min<std::size_t>(std::max(workers, 1u), count);
   std::vector<std::thread> threads;
-  const std::size_t extra = std::min<std::size_t>(std::max(workers, 1u), count) - (count > 0);
-  for (std::size_t w = 0; w < extra; ++w)
+  for (std::size_t w = 1; w < threadCount; ++w)
     threads.emplace_back(work);
   work();
   for (auto& t : threads)
