@@ -64,6 +64,7 @@ void Occluders::build(const kinematics::World& world) {
   grow(world.obstacles);
   grow(world.targets);
   // The floor also covers an empty World (a box of extent −inf).
+  box_ = all;
   extent_ = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-300});
   tolerance_ = kRelativeTolerance * extent_;
 

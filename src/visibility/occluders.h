@@ -91,6 +91,8 @@ class Occluders {
     return targetVertices_[targetNext_[globalEdge]];
   }
 
+  // The World's bounding box.
+  const geometry::Box& box() const { return box_; }
   // Side of the World's bounding box (at least 1e-300): the scale of every tolerance.
   double extent() const { return extent_; }
   // ε: two points closer than this are the same point. A camera within ε of an edge or vertex
@@ -148,6 +150,7 @@ class Occluders {
   std::vector<geometry::Vec2> targetVertices_;
   std::vector<std::uint32_t> targetNext_;
 
+  geometry::Box box_;
   double extent_ = 1.0;
   double tolerance_ = kRelativeTolerance;
 };

@@ -23,6 +23,10 @@ std::uint32_t quantizedAngle(Vec2 d) {
   return static_cast<std::uint32_t>(std::min(geometry::pseudoAngle(d) * 0x1p30, 4294967295.0));
 }
 
+bool disjoint(const geometry::Box& a, const geometry::Box& b) {
+  return a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y;
+}
+
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double u = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
@@ -31,7 +35,8 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
 
 }  // namespace
 
-void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
+void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov,
+                       const geometry::Box* window) {
   occluders_ = &occluders;
   p_ = viewpoint;
   eps2_ = occluders.tolerance() * occluders.tolerance();
@@ -41,6 +46,22 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
   wedges_.clear();
   events_.clear();
   initial_.clear();
+
+  initiallyInFov_ = true;
+  cullFrom_ = cullWidth_ = 0;
+  if (fov != nullptr) {
+    // Far points on the two rays, so that rounding p + r·u tilts them by about 2^-52 rad.
+    const double r = occluders.extent() + std::abs(p_.x) + std::abs(p_.y);
+    fovPoints_[0] = p_ + r * geometry::unitVector(fov->yaw - fov->halfAngle);
+    fovPoints_[1] = p_ + r * geometry::unitVector(fov->yaw + fov->halfAngle);
+    wideFov_ = fov->halfAngle > 0.5 * std::numbers::pi;
+    // In view on the start ray iff the wedge from the right ray to the left one wraps past +x.
+    const int order = geometry::compareAngle(p_, fovPoints_[0], fovPoints_[1]);
+    initiallyInFov_ = order > 0 || (order == 0 && wideFov_);
+    // Out of view: counter-clockwise from the left ray (FovLeave) to the right one (FovEnter).
+    cullFrom_ = quantizedAngle(fovPoints_[1] - p_);
+    cullWidth_ = quantizedAngle(fovPoints_[0] - p_) - cullFrom_;  // modulo 2^32, keys go round
+  }
 
   const double eps = occluders.tolerance();
   for (const Chain& chain : occluders.chains()) {
@@ -52,23 +73,16 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
       blind_ = true;
       return;
     }
+    // A far chain out of view or out of the window as a whole needs no look at its pieces:
+    // they stay inactive.
+    if (far && ((window != nullptr && disjoint(box, *window)) || boxOutOfView(box))) continue;
     addChainEvents(chain, far);
   }
   for (std::uint32_t w = 0; w < wedges_.size(); ++w) {
     addEvent(vertex(wedges_[w].start), w, EventKind::WedgeStart);
     addEvent(vertex(wedges_[w].end), w, EventKind::WedgeEnd);
   }
-
-  initiallyInFov_ = true;
   if (fov != nullptr) {
-    // Far points on the two rays, so that rounding p + r·u tilts them by about 2^-52 rad.
-    const double r = occluders.extent() + std::abs(p_.x) + std::abs(p_.y);
-    fovPoints_[0] = p_ + r * geometry::unitVector(fov->yaw - fov->halfAngle);
-    fovPoints_[1] = p_ + r * geometry::unitVector(fov->yaw + fov->halfAngle);
-    wideFov_ = fov->halfAngle > 0.5 * std::numbers::pi;
-    // In view on the start ray iff the wedge from the right ray to the left one wraps past +x.
-    const int order = geometry::compareAngle(p_, fovPoints_[0], fovPoints_[1]);
-    initiallyInFov_ = order > 0 || (order == 0 && wideFov_);
     addEvent(fovPoints_[0], 0, EventKind::FovEnter);
     addEvent(fovPoints_[1], 1, EventKind::FovLeave);
   }
@@ -82,15 +96,19 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
   const std::uint32_t first = chain.first, last = first + chain.count - 1;
   Vec2 a = vertex(first);
   const Vec2 lastVertex = vertex(last);
+  std::uint32_t key = quantizedAngle(a - p_);
+  const std::uint32_t firstKey = key;
   if (classify) state_[last] = pieceState(last, lastVertex, a);
+  state_[last] = cull(state_[last], quantizedAngle(lastVertex - p_), key);
   std::uint8_t before = state_[last];
   int beforeHalf = geometry::angleHalf(lastVertex - p_);
   for (std::uint32_t v = first; v <= last; ++v) {
     const Vec2 b = vertex(v == last ? first : v + 1);
+    const std::uint32_t nextKey = v == last ? firstKey : quantizedAngle(b - p_);
     if (classify && v != last) state_[v] = pieceState(v, a, b);
+    if (v != last) state_[v] = cull(state_[v], key, nextKey);
     const std::uint8_t after = state_[v];
-    const Vec2 d = a - p_;
-    const int half = geometry::angleHalf(d);
+    const int half = geometry::angleHalf(a - p_);
     // An active piece running with its chain is inserted at its chain start and removed at its
     // chain end; a reversed one the other way round.
     std::uint8_t actions = 0;
@@ -98,8 +116,7 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
     if (after & kActive) actions |= (after & kReversed) ? kRemoveAfter : kInsertAfter;
     if (actions != 0) {
       if (v == last) actions |= kAfterWraps;
-      events_.push_back(
-          {quantizedAngle(d), v, v == first ? last : v - 1, EventKind::Vertex, actions});
+      events_.push_back({key, v, v == first ? last : v - 1, EventKind::Vertex, actions});
     }
     // The piece before is active on the start ray iff it spans the +x axis: it starts below
     // and ends above.
@@ -109,9 +126,44 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
       initial_.push_back(v == first ? last : v - 1);
     }
     a = b;
+    key = nextKey;
     before = after;
     beforeHalf = half;
   }
+}
+
+bool PolarEdges::outOfView(std::uint32_t startKey, std::uint32_t endKey) const {
+  // Offsets counter-clockwise from the left field-of-view ray, modulo 2^32. An arc of less
+  // than π whose start and end both lie two quanta inside the out-of-view arc, start first,
+  // lies inside it: less() puts events at its ends strictly between the FovLeave and FovEnter
+  // events. (Start first is enough: an arc shorter than π cannot go the long way round.)
+  const std::uint32_t s = startKey - cullFrom_, e = endKey - cullFrom_;
+  return s >= 2 && s <= e && std::uint64_t{e} + 2 <= cullWidth_;
+}
+
+std::uint8_t PolarEdges::cull(std::uint8_t state, std::uint32_t startKey,
+                              std::uint32_t endKey) const {
+  // An active piece spans less than π from its start to its end; out of view on all of it,
+  // the sweep would never have it active on a ray in view.
+  if (!(state & kActive) || cullWidth_ == 0) return state;
+  if (state & kReversed) std::swap(startKey, endKey);
+  return outOfView(startKey, endKey) ? 0 : state;
+}
+
+bool PolarEdges::boxOutOfView(const geometry::Box& box) const {
+  if (cullWidth_ == 0) return false;
+  // Seen from outside, the box spans the arc between its extreme corners, less than π. In
+  // offsets from cullFrom_, the arc from the least to the greatest corner holds all four; if
+  // it is shorter than π it is that arc (two arcs holding all four and both shorter than π
+  // would leave two disjoint gaps longer than π). A pseudo-angle turns by 2 over π.
+  std::uint32_t lo = 0xffffffffu, hi = 0;
+  for (const Vec2 corner :
+       {box.min, Vec2{box.max.x, box.min.y}, box.max, Vec2{box.min.x, box.max.y}}) {
+    const std::uint32_t offset = quantizedAngle(corner - p_) - cullFrom_;
+    lo = std::min(lo, offset);
+    hi = std::max(hi, offset);
+  }
+  return hi - lo < 0x80000000u - 4 && outOfView(lo + cullFrom_, hi + cullFrom_);
 }
 
 bool PolarEdges::less(const Event& a, const Event& b) const {

@@ -10,6 +10,10 @@
 // by a blocked wedge: the ring's solid side around p, at distance zero, so the camera sees
 // only the free side. p strictly inside an object or strictly outside the boundary is blind.
 //
+// With a field of view, a piece out of view on every ray it spans is left out (inactive, no
+// events): what is out of view needs no front edge, and a narrow view sorts a fraction of the
+// events.
+//
 // Events are the chain vertices (one event per vertex: the edge ending there and the edge
 // starting there are handled together), the wedges' sides, and the two field-of-view rays.
 // They are sorted by polar angle from the +x axis: a radix sort on the pseudo-angle, then an
@@ -60,7 +64,11 @@ class PolarEdges {
   };
 
   // Prepares the sweep from `viewpoint`; `fov` is null for an omnidirectional viewpoint.
-  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov);
+  // With a `window` (a box around the viewpoint), chains whose boxes lie wholly outside it are
+  // left out: the sweep is then exact only where its front edge is met inside the window,
+  // which the caller checks (Sweep's windowed sweeps).
+  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov,
+             const geometry::Box* window = nullptr);
 
   bool blind() const { return blind_; }
   geometry::Vec2 viewpoint() const { return p_; }
@@ -97,6 +105,13 @@ class PolarEdges {
 
   bool classifyNearChain(const Chain& chain);
   std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
+  // Culling what is out of view (keys as in Event::key). The arc counter-clockwise from
+  // startKey to endKey, shorter than π, lies inside the out-of-view arc.
+  bool outOfView(std::uint32_t startKey, std::uint32_t endKey) const;
+  // `state`, or 0 when the piece is out of view on every ray from its ends' keys.
+  std::uint8_t cull(std::uint8_t state, std::uint32_t startKey, std::uint32_t endKey) const;
+  // The box, seen from a viewpoint outside it, is out of view as a whole.
+  bool boxOutOfView(const geometry::Box& box) const;
   void addChainEvents(const Chain& chain, bool classify);
   void addWedge(std::uint32_t start, std::uint32_t end);
   void addEvent(geometry::Vec2 point, std::uint32_t ref, EventKind kind);
@@ -112,6 +127,9 @@ class PolarEdges {
   bool initiallyInFov_ = true;
   bool wideFov_ = true;
   geometry::Vec2 fovPoints_[2];
+  // The out-of-view arc in keys: from cullFrom_ counter-clockwise over cullWidth_ quanta (0 for
+  // an omnidirectional viewpoint: nothing is culled).
+  std::uint32_t cullFrom_ = 0, cullWidth_ = 0;
 
   std::vector<std::uint8_t> state_;  // per piece: kActive, kReversed, kEdgeOn
   std::vector<Wedge> wedges_;

@@ -20,7 +20,10 @@ namespace {
 class TargetSink final : public SpanSink {
  public:
   TargetSink(const PolarEdges& edges, Tessellation& tessellation, unsigned camera)
-      : edges_(edges), tessellation_(tessellation), camera_(camera) {}
+      : edges_(edges), tessellation_(tessellation), camera_(camera), start_(tessellation.size()) {}
+
+  // Takes back this camera's intervals, for a sweep that starts over.
+  void restart() { tessellation_.truncate(start_); }
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     // Wedges (and kNone) are not pieces; an edge-on piece has no length to see.
@@ -40,6 +43,7 @@ class TargetSink final : public SpanSink {
   const PolarEdges& edges_;
   Tessellation& tessellation_;
   unsigned camera_;
+  std::size_t start_;
 };
 
 // Spans of the current edge → vertices of the visibility polygon; outside the field of view
@@ -47,8 +51,10 @@ class TargetSink final : public SpanSink {
 class PolygonSink final : public SpanSink {
  public:
   PolygonSink(const PolarEdges& edges, geometry::Ring& out) : edges_(edges), out_(out) {
-    out_.clear();
+    restart();
   }
+
+  void restart() { out_.clear(); }
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     if (!inFov) {
@@ -70,6 +76,37 @@ class PolygonSink final : public SpanSink {
 
   const PolarEdges& edges_;
   geometry::Ring& out_;
+};
+
+// Passes the spans of a windowed sweep on, and tells whether the window held everything in
+// view: on every ray in view the front edge is met inside `inside` (the window shrunk by ε, so
+// that rounding the hit cannot matter). Chains left out lie wholly outside the window, so
+// along such a ray they are farther than the front and the result is the whole scene's.
+class WindowCheck final : public SpanSink {
+ public:
+  WindowCheck(const PolarEdges& edges, SpanSink& next, const geometry::Box& inside)
+      : edges_(edges), next_(next), inside_(inside) {}
+
+  void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
+    next_.span(front, from, to, inFov);
+    if (!inFov || escaped_ || (front != PolarEdges::kNone && front >= edges_.wedgeBase())) return;
+    escaped_ = front == PolarEdges::kNone || !inside(edges_.hit(front, from)) ||
+               !inside(edges_.hit(front, to));
+  }
+
+  bool escaped() const { return escaped_; }
+  bool done() const override { return escaped_; }
+
+ private:
+  bool inside(Vec2 v) const {
+    return v.x >= inside_.min.x && v.x <= inside_.max.x && v.y >= inside_.min.y &&
+           v.y <= inside_.max.y;
+  }
+
+  const PolarEdges& edges_;
+  SpanSink& next_;
+  geometry::Box inside_;
+  bool escaped_ = false;
 };
 
 // Records each ray of one camera's sweep (Sweep::trace).
@@ -167,25 +204,56 @@ void checkCamera(const geometry::Pose& camera, double halfFov) {
 }  // namespace
 
 struct Sweep::Impl {
+  Windowing windowing;
+  WindowCounts counts;
   PolarEdges edges;
   PolarSweep sweep;
   Tessellation tessellation;
 
-  void fieldOfView(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
-                   geometry::Ring& out, SweepObserver* observer) {
-    checkCamera(camera, halfFov);
-    const FieldOfView fov{camera.yaw, halfFov};
-    edges.build(occluders, camera.position(), &fov);
-    PolygonSink sink(edges, out);
-    sweep.run(edges, sink, observer);
-    sink.finish();
+  // The sweep from `viewpoint` into `sink` (which can restart()), in windows when the scene is
+  // large (see Windowing): squares of doubling half-side around the viewpoint until one holds
+  // everything in view, and the whole scene once a square would cover it.
+  template <typename Sink>
+  void sweepFrom(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov, Sink& sink) {
+    if (occluders.pieceCount() >= windowing.fromPieces) {
+      const geometry::Box& all = occluders.box();
+      const Vec2 margin{occluders.tolerance(), occluders.tolerance()};
+      double half = 0.5 * occluders.extent() *
+                    std::sqrt(static_cast<double>(windowing.firstPieces) /
+                              static_cast<double>(occluders.pieceCount()));
+      for (;; half *= 2.0) {
+        const geometry::Box window{viewpoint - Vec2{half, half}, viewpoint + Vec2{half, half}};
+        if (window.min.x <= all.min.x && window.min.y <= all.min.y && window.max.x >= all.max.x &&
+            window.max.y >= all.max.y) {
+          break;
+        }
+        edges.build(occluders, viewpoint, fov, &window);
+        WindowCheck check(edges, sink, {window.min + margin, window.max - margin});
+        sweep.run(edges, check);
+        ++counts.windows;
+        if (!check.escaped()) {
+          ++counts.kept;
+          return;
+        }
+        sink.restart();
+      }
+    }
+    edges.build(occluders, viewpoint, fov);
+    sweep.run(edges, sink);
+    ++counts.whole;
   }
 };
 
-Sweep::Sweep() : impl_(std::make_unique<Impl>()) {}
+Sweep::Sweep(Windowing windowing) : impl_(std::make_unique<Impl>()) {
+  impl_->windowing = windowing;
+}
 Sweep::~Sweep() = default;
 Sweep::Sweep(Sweep&&) noexcept = default;
 Sweep& Sweep::operator=(Sweep&&) noexcept = default;
+
+const WindowCounts& Sweep::counts() const {
+  return impl_->counts;
+}
 
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
                      double halfFov, std::vector<Segment>& out) {
@@ -198,35 +266,43 @@ void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose>
   impl_->tessellation.clear();
   for (std::size_t j = 0; j < cameras.size(); ++j) {  // Algorithm 1, line 2
     const FieldOfView fov{cameras[j].yaw, halfFov};
-    impl_->edges.build(occluders, cameras[j].position(), &fov);
     TargetSink sink(impl_->edges, impl_->tessellation, static_cast<unsigned>(j));
-    impl_->sweep.run(impl_->edges, sink);
+    impl_->sweepFrom(occluders, cameras[j].position(), &fov, sink);
   }
   impl_->tessellation.build(occluders, out);
 }
 
 void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::Ring& out) {
   if (!finite(point)) throw std::invalid_argument("visibility: viewpoint must be finite");
-  impl_->edges.build(occluders, point, nullptr);
   PolygonSink sink(impl_->edges, out);
-  impl_->sweep.run(impl_->edges, sink);
+  impl_->sweepFrom(occluders, point, nullptr, sink);
   sink.finish();
 }
 
 void Sweep::fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
                                double halfFov, geometry::Ring& out) {
-  impl_->fieldOfView(occluders, camera, halfFov, out, nullptr);
+  checkCamera(camera, halfFov);
+  const FieldOfView fov{camera.yaw, halfFov};
+  PolygonSink sink(impl_->edges, out);
+  impl_->sweepFrom(occluders, camera.position(), &fov, sink);
+  sink.finish();
 }
 
 void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
                   SweepTrace& out) {
+  checkCamera(camera, halfFov);
   out.camera = camera;
   out.halfFov = halfFov;
   out.frontBefore = {};
   out.inFovBefore = false;
   out.events.clear();
+  // The whole scene at once, so that every event is recorded.
+  const FieldOfView fov{camera.yaw, halfFov};
+  impl_->edges.build(occluders, camera.position(), &fov);
   TraceObserver observer(impl_->edges, out);
-  impl_->fieldOfView(occluders, camera, halfFov, out.fieldOfView, &observer);
+  PolygonSink sink(impl_->edges, out.fieldOfView);
+  impl_->sweep.run(impl_->edges, sink, &observer);
+  sink.finish();
   out.blind = impl_->edges.blind();
 }
 

@@ -30,11 +30,28 @@
 
 namespace camcov::visibility {
 
+// Large scenes are swept in windows: a query first sweeps only the chains whose boxes meet a
+// square around the viewpoint, and keeps that result if every ray in view meets its front edge
+// inside the square (whatever lies wholly outside is farther along every ray); otherwise it
+// doubles the square, up to the whole scene. Where the visible region is local, as among many
+// obstacles, the cost follows what is seen rather than the whole scene. The windows depend on
+// the scene and the viewpoint only, so results do too (docs/visibility.md).
+struct Windowing {
+  std::uint32_t fromPieces = 4096;   // scenes with fewer pieces are swept whole at once
+  std::uint32_t firstPieces = 1024;  // the first square holds about this many, at even density
+};
+// How a Sweep's queries were answered so far (each camera of segments() is one query).
+struct WindowCounts {
+  std::uint64_t windows = 0;  // windowed sweeps run
+  std::uint64_t kept = 0;     // of them, those that held everything in view
+  std::uint64_t whole = 0;    // sweeps of the whole scene
+};
+
 class Sweep {
  public:
   static constexpr std::size_t kMaxCameras = 64;  // bits of Segment::visibleBy
 
-  Sweep();
+  explicit Sweep(Windowing windowing = {});
   ~Sweep();
   Sweep(Sweep&&) noexcept;
   Sweep& operator=(Sweep&&) noexcept;
@@ -47,6 +64,8 @@ class Sweep {
   // non-finite pose.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
                 std::vector<Segment>& out);
+
+  const WindowCounts& counts() const;
 
   // The omnidirectional visibility polygon of `point` (Algorithm 2, line 6; the motion
   // planner's sampler): the region seen from it, inside the boundary, among the objects.
@@ -64,7 +83,8 @@ class Sweep {
 
   // The sweep of one camera event by event, for debugging: fieldOfViewPolygon() with every ray
   // recorded (see SweepTrace). Same sweep, same event order and same active edges as
-  // segments(); allocates while it records. Throws like fieldOfViewPolygon().
+  // segments() in a scene swept whole; allocates while it records. Throws like
+  // fieldOfViewPolygon().
   void trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
              SweepTrace& out);
 
