@@ -4,8 +4,10 @@
 // jittered grid (n = 1024: 85 holes), alternately targets and obstacles; the viewpoint in the
 // middle of the room, in a cell left free.
 //  - Preprocess:  Occluders::build (Algorithm 1 line 1), once per World.
-//  - Sweep:       one camera, θ = 45°: S and visibleBy (Algorithm 1 lines 3–17).
-//  - Polygon:     the omnidirectional visibility polygon (Algorithm 2 line 6).
+//  - Sweep:       one camera, θ = 45°: S and visibleBy (Algorithm 1 lines 3–17), as the tool
+//                 runs it: from 4096 pieces on, in windows around the camera (Windowing).
+//  - Polygon:     the omnidirectional visibility polygon (Algorithm 2 line 6), likewise.
+//  - SweepWhole, PolygonWhole: the same, always over the whole scene (the sweep's own growth).
 //  - SortDoubles: std::sort of 2n random doubles, the floor any O(n log n) sweep is held to.
 //  - CGAL (when found): Triangular_expansion_visibility_2 and Rotational_sweep_visibility_2
 //    queries with the exact kernel Epeck; preprocessing (arrangement, triangulation) excluded.
@@ -113,10 +115,24 @@ void Preprocess(benchmark::State& state) {
 }
 BENCHMARK(Preprocess)->Apply(sizes);
 
+// The Sweep as the tool runs it (windows from 4096 pieces on), or the whole scene every time.
+vis::Windowing windowing(bool windowed) {
+  return windowed ? vis::Windowing{} : vis::Windowing{UINT32_MAX, 0};
+}
+
+// Windowed sweeps per query, and the share of queries a window answered.
+void countWindows(benchmark::State& state, const vis::Sweep& sweep) {
+  const vis::WindowCounts& n = sweep.counts();
+  const auto queries = static_cast<double>(n.kept + n.whole);
+  state.counters["windows"] = static_cast<double>(n.windows) / queries;
+  state.counters["kept"] = static_cast<double>(n.kept) / queries;
+}
+
+template <bool kWindowed>
 void Sweep(benchmark::State& state) {
   const Scene scene = roomWithHoles(static_cast<int>(state.range(0)));
   const vis::Occluders occluders(scene.world);
-  vis::Sweep sweep;
+  vis::Sweep sweep(windowing(kWindowed));
   std::vector<vis::Segment> segments;
   const camcov::geometry::Pose camera{scene.viewpoint.x, scene.viewpoint.y, 0.3};
   for (auto _ : state) {
@@ -124,21 +140,26 @@ void Sweep(benchmark::State& state) {
     benchmark::DoNotOptimize(segments.data());
   }
   state.counters["segments"] = static_cast<double>(segments.size());
+  countWindows(state, sweep);
 }
-BENCHMARK(Sweep)->Apply(sizes);
+BENCHMARK_TEMPLATE(Sweep, true)->Name("Sweep")->Apply(sizes);
+BENCHMARK_TEMPLATE(Sweep, false)->Name("SweepWhole")->Apply(sizes);
 
+template <bool kWindowed>
 void Polygon(benchmark::State& state) {
   const Scene scene = roomWithHoles(static_cast<int>(state.range(0)));
   const vis::Occluders occluders(scene.world);
-  vis::Sweep sweep;
+  vis::Sweep sweep(windowing(kWindowed));
   Ring polygon;
   for (auto _ : state) {
     sweep.visibilityPolygon(occluders, scene.viewpoint, polygon);
     benchmark::DoNotOptimize(polygon.data());
   }
   state.counters["vertices"] = static_cast<double>(polygon.size());
+  countWindows(state, sweep);
 }
-BENCHMARK(Polygon)->Apply(sizes);
+BENCHMARK_TEMPLATE(Polygon, true)->Name("Polygon")->Apply(sizes);
+BENCHMARK_TEMPLATE(Polygon, false)->Name("PolygonWhole")->Apply(sizes);
 
 void SortDoubles(benchmark::State& state) {
   Random random{42};

@@ -59,24 +59,30 @@ TEST(Allocations, SteadyStateQueriesAllocateNothing) {
         {random.uniform(-1.0, 21.0), random.uniform(-1.0, 21.0), random.uniform(-3.2, 3.2)});
     points.push_back(testing::randomViewpoint(random, c.world));
   }
-  Sweep sweep;
-  std::vector<Segment> segments;
-  geometry::Ring polygon;
-  const auto runAll = [&] {
-    for (std::size_t i = 0; i + 4 <= cameras.size(); i += 4) {
-      sweep.segments(occluders, std::span(cameras).subspan(i, 4), 1.0, segments);
+  // Swept whole (a small scene), and in windows forced down to a few pieces.
+  for (const Windowing windowing : {Windowing{}, Windowing{0, 4}}) {
+    Sweep sweep(windowing);
+    std::vector<Segment> segments;
+    geometry::Ring polygon;
+    const auto runAll = [&] {
+      for (std::size_t i = 0; i + 4 <= cameras.size(); i += 4) {
+        sweep.segments(occluders, std::span(cameras).subspan(i, 4), 1.0, segments);
+      }
+      for (const Vec2 p : points)
+        sweep.visibilityPolygon(occluders, p, polygon);
+      for (const Pose& pose : cameras)
+        sweep.fieldOfViewPolygon(occluders, pose, 2.5, polygon);
+    };
+    const long start = allocations.load();
+    runAll();  // warm up: buffers grow to their largest size
+    const long before = allocations.load();
+    EXPECT_GT(before - start, 0) << "the counting operator new is not in use";
+    runAll();
+    EXPECT_EQ(allocations.load() - before, 0) << "windowing from " << windowing.fromPieces;
+    if (windowing.fromPieces == 0) {
+      EXPECT_GT(sweep.counts().kept, 0u);
     }
-    for (const Vec2 p : points)
-      sweep.visibilityPolygon(occluders, p, polygon);
-    for (const Pose& pose : cameras)
-      sweep.fieldOfViewPolygon(occluders, pose, 2.5, polygon);
-  };
-  const long start = allocations.load();
-  runAll();  // warm up: buffers grow to their largest size
-  const long before = allocations.load();
-  EXPECT_GT(before - start, 0) << "the counting operator new is not in use";
-  runAll();
-  EXPECT_EQ(allocations.load() - before, 0);
+  }
 }
 
 TEST(Allocations, RebuildingOccludersInPlaceAllocatesNothing) {
