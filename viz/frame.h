@@ -33,6 +33,8 @@ struct ObjectPath {
   std::vector<geometry::Vec2> waypoints;  // one point: the object turns in place
   double velocity = 0.0;                  // m/s along the loop
   double angularVelocity = 0.0;           // rad/s, counter-clockwise
+
+  bool operator==(const ObjectPath&) const = default;
 };
 
 struct Caption {

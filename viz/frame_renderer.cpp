@@ -8,8 +8,10 @@
 #include <cstring>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "util/input_error.h"
 #include "viz/cairo_drawing.h"
@@ -27,7 +29,8 @@ constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
 constexpr double kPlanWidth = 0.14;
 constexpr double kObjectPathWidth = 0.09;
 
-// The caption's rows are drawPanel's; the legend has one row per entry.
+// The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
+// entry.
 enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
 constexpr PanelRows kPanelRows{5, 7};
 
@@ -246,58 +249,116 @@ constexpr const char* legendText(Legend entry) {
   return "";
 }
 
-void drawPanel(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+// Baseline of a panel row: text sits in the lower part of its 1.6 em.
+Vec2 rowBaseline(Vec2 rowTopLeft, double em) {
+  return rowTopLeft + Vec2{0.0, 1.15 * em};
+}
+
+// The panel's rows that stay the same through a video: title, subtitle and legend.
+void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
-  // Baseline of a row: text sits in the lower part of its 1.6 em.
-  const Vec2 toBaseline{0.0, 1.15 * em};
-  const auto line = [&](int row) { return layout.captionRow(row) + toBaseline; };
-  text(cr, line(0), caption.title, 1.25 * em, kText, Align::Left, true);
-  text(cr, line(1), caption.subtitle, 0.9 * em, kMutedText);
-  text(cr, line(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
-  drawMeter(cr, line(3), "coverage", caption.coverage, kSeen, em);
-  drawMeter(cr, line(4), "utilization", caption.utilization, kView, em);
+  text(cr, rowBaseline(layout.captionRow(0), em), caption.title, 1.25 * em, kText, Align::Left,
+       true);
+  text(cr, rowBaseline(layout.captionRow(1), em), caption.subtitle, 0.9 * em, kMutedText);
   for (int i = 0; i < kPanelRows.legend; ++i) {
     const auto entry = static_cast<Legend>(i);
     const Vec2 row = layout.legendRow(i);
     drawLegendSample(cr, entry, row + Vec2{0.0, 0.8 * em}, em);
-    text(cr, row + toBaseline + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
+    text(cr, rowBaseline(row, em) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
   }
+}
+
+// The rows that change every frame: time and the two meters.
+void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+  const double em = layout.em;
+  const auto line = [&](int row) { return rowBaseline(layout.captionRow(row), em); };
+  text(cr, line(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
+  drawMeter(cr, line(3), "coverage", caption.coverage, kSeen, em);
+  drawMeter(cr, line(4), "utilization", caption.utilization, kView, em);
 }
 
 FrameLayout layoutFor(const Frame& frame, int width, int height) {
   return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
 }
 
-// The one drawing routine behind every surface.
-void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
-  const FrameLayout layout = layoutFor(frame, width, height);
+// Runs `draw` clipped to `area`: the world never runs into the panel, nor the panel into it.
+template <typename Draw>
+void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
   cairo_save(cr);
-  setColour(cr, kPage);
-  cairo_paint(cr);
-
-  cairo_save(cr);  // the world is clipped to its area: it never runs into the panel
-  const PixelRect& area = layout.worldArea;
   cairo_rectangle(cr, area.x, area.y, area.width, area.height);
   cairo_clip(cr);
-  const Painter painter(cr, layout.toImage, layout.em);
-  drawArena(painter, frame.world);
-  drawObjectPaths(painter, frame.paths);
-  drawViews(painter, frame.cameras);
-  drawObjects(painter, frame.world);
-  drawSegments(painter, frame.segments);
-  drawPathLabels(painter, frame.paths);
-  drawPlans(painter, frame.cameras);
-  drawCameras(painter, frame.cameras);
+  draw();
   cairo_restore(cr);
+}
 
-  cairo_rectangle(cr, layout.panel.x, layout.panel.y, layout.panel.width, layout.panel.height);
-  cairo_clip(cr);
-  drawPanel(cr, layout, frame.caption);
-  cairo_restore(cr);
+// A frame is drawn in two parts. The still part is what a frame shares with every other
+// frame of its video: the page, floor and wall, the object paths (under the views), the
+// title, subtitle and legend. The raster keeps it and copies it under each frame (it costs
+// about a third of the drawing); a frame that differs in stillKeyOf() redraws it.
+void drawStill(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
+  setColour(cr, kPage);
+  cairo_paint(cr);
+  clippedTo(cr, layout.worldArea, [&] {
+    const Painter painter(cr, layout.toImage, layout.em);
+    drawArena(painter, frame.world);
+    drawObjectPaths(painter, frame.paths);
+  });
+  clippedTo(cr, layout.panel, [&] { drawPanelStill(cr, layout, frame.caption); });
+}
+
+// Everything else, over the still part.
+void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
+  clippedTo(cr, layout.worldArea, [&] {
+    const Painter painter(cr, layout.toImage, layout.em);
+    drawViews(painter, frame.cameras);
+    drawObjects(painter, frame.world);
+    drawSegments(painter, frame.segments);
+    drawPathLabels(painter, frame.paths);
+    drawPlans(painter, frame.cameras);
+    drawCameras(painter, frame.cameras);
+  });
+  clippedTo(cr, layout.panel, [&] { drawPanelMoving(cr, layout, frame.caption); });
+}
+
+// What the still part is drawn from (the layout follows from the boundary).
+struct StillKey {
+  geometry::Ring boundary;
+  std::vector<ObjectPath> paths;
+  std::string title;
+  std::string subtitle;
+
+  bool matches(const Frame& frame) const {
+    return boundary == frame.world.boundary && paths == frame.paths &&
+           title == frame.caption.title && subtitle == frame.caption.subtitle;
+  }
+};
+
+StillKey stillKeyOf(const Frame& frame) {
+  return {frame.world.boundary, frame.paths, frame.caption.title, frame.caption.subtitle};
+}
+
+void throwIfFailed(cairo_t* cr) {
   if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(std::string("drawing a frame failed: ") +
                              cairo_status_to_string(cairo_status(cr)));
   }
+}
+
+// The one drawing routine behind every surface.
+void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
+  const FrameLayout layout = layoutFor(frame, width, height);
+  drawStill(cr, frame, layout);
+  drawMoving(cr, frame, layout);
+  throwIfFailed(cr);
+}
+
+Surface imageSurface(int width, int height) {
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("cannot create a frame: ") +
+                             cairo_status_to_string(cairo_surface_status(surface.get())));
+  }
+  return surface;
 }
 
 void writeSvg(const Frame& frame, int width, int height, const std::filesystem::path& file) {
@@ -321,8 +382,17 @@ ImageFormat imageFormatOf(const std::filesystem::path& file) {
 }
 
 struct FrameRenderer::Raster {
+  Raster(int width, int height)
+      : surface(imageSurface(width, height)),
+        cr(cairo_create(surface.get())),
+        still(imageSurface(width, height)),
+        stillCr(cairo_create(still.get())) {}
+
   Surface surface;
   Context cr;
+  Surface still;  // the still part of the frames drawn from stillKey
+  Context stillCr;
+  std::optional<StillKey> stillKey;  // none until the first frame
 };
 
 FrameRenderer::FrameRenderer(int width, int height) : width_(width), height_(height) {
@@ -340,18 +410,25 @@ FrameLayout FrameRenderer::layoutOf(const Frame& frame) const {
 }
 
 RasterImage FrameRenderer::rasterize(const Frame& frame) {
-  if (!raster_) {
-    Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width_, height_));
-    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-      throw std::runtime_error(std::string("cannot create a frame: ") +
-                               cairo_status_to_string(cairo_surface_status(surface.get())));
-    }
-    Context cr(cairo_create(surface.get()));
-    raster_ = std::make_unique<Raster>(Raster{std::move(surface), std::move(cr)});
+  if (!raster_) raster_ = std::make_unique<Raster>(width_, height_);
+  Raster& r = *raster_;
+  const FrameLayout layout = layoutOf(frame);
+  if (!r.stillKey || !r.stillKey->matches(frame)) {
+    r.stillKey.reset();  // until drawn, in case drawing throws
+    drawStill(r.stillCr.get(), frame, layout);
+    throwIfFailed(r.stillCr.get());
+    r.stillKey = stillKeyOf(frame);
   }
-  drawFrame(raster_->cr.get(), frame, width_, height_);
-  cairo_surface_flush(raster_->surface.get());
-  cairo_surface_t* s = raster_->surface.get();
+  cairo_t* cr = r.cr.get();
+  // A copy, byte for byte: the same pixels as drawing the still part here.
+  cairo_set_source_surface(cr, r.still.get(), 0.0, 0.0);
+  cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+  cairo_paint(cr);
+  cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+  drawMoving(cr, frame, layout);
+  throwIfFailed(cr);
+  cairo_surface_t* s = r.surface.get();
+  cairo_surface_flush(s);
   return {cairo_image_surface_get_data(s), width_, height_, cairo_image_surface_get_stride(s)};
 }
 

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
@@ -123,6 +124,34 @@ TEST_F(TinyFrame, RasterIsReusedBetweenFrames) {
   EXPECT_EQ(second.width, 800);
   EXPECT_EQ(second.height, 600);
   EXPECT_GE(second.stride, 4 * 800);
+}
+
+std::vector<std::uint8_t> pixelsOf(const RasterImage& image) {
+  return {image.pixels, image.pixels + static_cast<std::ptrdiff_t>(image.stride) * image.height};
+}
+
+// The raster keeps the still part of a frame (page, floor, wall, object paths, title,
+// subtitle, legend) and draws only what moves over a copy of it: the pixels must be those of
+// a renderer that draws the frame from scratch.
+TEST_F(TinyFrame, FrameOverTheKeptStillPartEqualsOneDrawnFromScratch) {
+  Frame later;
+  FrameBuilder(scene_).build(3.0, std::vector<geometry::Pose>{{-2.0, 1.0, 0.4}}, later);
+  later.caption.subtitle = frame_.caption.subtitle;
+  const auto first = pixelsOf(renderer_.rasterize(frame_));
+  const auto kept = pixelsOf(renderer_.rasterize(later));
+  EXPECT_NE(kept, first);
+  FrameRenderer fresh(800, 600);
+  EXPECT_EQ(kept, pixelsOf(fresh.rasterize(later)));
+}
+
+TEST_F(TinyFrame, StillPartIsRedrawnWhenWhatItShowsChanges) {
+  renderer_.rasterize(frame_);
+  Frame other = frame_;
+  other.caption.subtitle = "another subtitle";
+  other.paths.clear();
+  const auto kept = pixelsOf(renderer_.rasterize(other));
+  FrameRenderer fresh(800, 600);
+  EXPECT_EQ(kept, pixelsOf(fresh.rasterize(other)));
 }
 
 TEST(ImageFormat, ComesFromTheExtensionInAnyCase) {
