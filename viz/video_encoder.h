@@ -23,12 +23,12 @@ struct VideoSettings {
   // libx264's speed/size trade-off, and options on top of it (x264 --help). Our frames are
   // flat drawings in which little moves, and the macroblock tree ("superfast" leaves it out)
   // is what spends few bits on what does not move: without it the files double. On top of
-  // that, full-pixel motion search (subme=0) and a fixed B-frame pattern (b-adapt=0) take
-  // about a third off libx264's time; weighted prediction and scene-cut search (weightp=0,
-  // scenecut=0) never fire on our videos, so skipping them changes no byte. Measured on 30 s
-  // runs (viz/README.md): files 10 % larger than with superfast + mbtree alone (dynamic9
-  // 3.0 MB against 2.7 MB; static7 28 %), at the same SSIM. "ultrafast" would be faster still
-  // but 3x larger (8.5 MB), for every video a batch writes.
+  // that, full-pixel motion search (subme=0) and a fixed B-frame pattern (b-adapt=0) take a
+  // quarter to a third off libx264's time. Weighted prediction and scene-cut search
+  // (weightp=0, scenecut=0) never fire on our videos: without them size and SSIM stay the
+  // same. Measured on 30 s runs (viz/README.md): files 10 % larger than with superfast and
+  // the tree alone (dynamic9 3.0 MB against 2.7 MB; static7 28 %), at the same SSIM.
+  // "ultrafast" would be faster still but 3x larger (8.5 MB), for every video a batch writes.
   std::string preset = "superfast";
   std::string x264Params = "mbtree=1:rc-lookahead=5:subme=0:b-adapt=0:weightp=0:scenecut=0";
   // Encoder threads; 1 by default because batches already run one job per core. 0: automatic.
