@@ -11,7 +11,7 @@ packages=(
   libeigen3-dev                     # Eigen (pulled by OMPL too)
   nlohmann-json3-dev                # JSON
   libcairo2-dev                     # frames (PNG, SVG)
-  libavcodec-dev libavformat-dev libavutil-dev  # videos
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev  # videos
   libx264-dev
   ffmpeg                            # ffprobe, used by tests to check videos
   libgtest-dev libgmock-dev         # tests

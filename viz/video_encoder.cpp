@@ -7,12 +7,12 @@
 
 #include "util/input_error.h"
 #include "viz/file_extension.h"
-#include "viz/yuv420.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/opt.h>
+#include <libswscale/swscale.h>
 }
 
 namespace camcov::viz {
@@ -44,6 +44,7 @@ struct AvDeleter {
   void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
   void operator()(AVFrame* f) const { av_frame_free(&f); }
   void operator()(AVPacket* p) const { av_packet_free(&p); }
+  void operator()(SwsContext* s) const { sws_freeContext(s); }
   void operator()(AVFormatContext* f) const {
     avio_closep(&f->pb);
     avformat_free_context(f);
@@ -76,6 +77,7 @@ struct VideoEncoder::Impl {
   AVStream* stream = nullptr;  // owned by `format`
   AvPtr<AVFrame> frame;
   AvPtr<AVPacket> packet;
+  AvPtr<SwsContext> convert;
   int frames = 0;
   bool finished = false;
 
@@ -131,13 +133,21 @@ struct VideoEncoder::Impl {
     check(written, "writing the MP4 header");
   }
 
-  void allocateBuffers() {
+  void prepareConversion() {
     frame = allocated(av_frame_alloc());
     frame->format = AV_PIX_FMT_YUV420P;
     frame->width = settings.width;
     frame->height = settings.height;
     check(av_frame_get_buffer(frame.get(), 0), "allocating a frame");
     packet = allocated(av_packet_alloc());
+    // AV_PIX_FMT_RGB32 is FFmpeg's name for Cairo's native-endian ARGB32 words.
+    convert = allocated(sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB32,
+                                       settings.width, settings.height, AV_PIX_FMT_YUV420P,
+                                       SWS_BILINEAR, nullptr, nullptr, nullptr));
+    // Full-range RGB to limited-range BT.709, the HD convention browsers assume.
+    check(sws_setColorspaceDetails(convert.get(), sws_getCoefficients(SWS_CS_DEFAULT), 1,
+                                   sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16),
+          "colour conversion");
   }
 
   // Sends a frame (nullptr: end of stream) and writes every packet the encoder has ready.
@@ -172,7 +182,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& file, const VideoSetting
   m.format.reset(format);
   m.openCodec();
   m.openFile();
-  m.allocateBuffers();
+  m.prepareConversion();
 }
 
 VideoEncoder::~VideoEncoder() = default;
@@ -187,8 +197,9 @@ void VideoEncoder::addFrame(const RasterImage& image) {
   }
   // The encoder may still hold the previous picture; this gives a buffer it does not use.
   check(av_frame_make_writable(m.frame.get()), "frame buffer");
-  AVFrame& f = *m.frame;
-  toYuv420(image, {f.data[0], f.data[1], f.data[2], f.linesize[0], f.linesize[1], f.linesize[2]});
+  const std::uint8_t* const planes[] = {image.pixels};
+  const int strides[] = {image.stride};
+  sws_scale(m.convert.get(), planes, strides, 0, image.height, m.frame->data, m.frame->linesize);
   m.frame->pts = m.frames++;
   m.encode(m.frame.get());
 }

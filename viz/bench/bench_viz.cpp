@@ -1,6 +1,6 @@
 // Frames per second of the video path at 1280x720 (issue 6 asks for at least 100 on one
-// core): FrameBuilder (world and visibility), FrameRenderer (Cairo), VideoEncoder (YUV
-// conversion and libx264 with one thread). Every published scene, the world moving on by
+// core): FrameBuilder (world and visibility), FrameRenderer (Cairo), VideoEncoder (swscale
+// and libx264 with one thread). Every published scene, the world moving on by
 // dt = 0.1 s per frame, its cameras turning so that their views sweep as in a run.
 // items_per_second is frames per CPU second of the whole process. Pin it to one core, and
 // repeat it on a shared machine:
