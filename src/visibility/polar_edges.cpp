@@ -20,6 +20,9 @@ constexpr std::uint8_t kTouching = 8;  // replaced by a blocked wedge
 // sort's digits for free. A quantum, 2^-30, dwarfs the pseudo-angle's rounding error (~1e-15),
 // so keys two quanta apart order their directions correctly; closer ones go to compareAngle().
 std::uint32_t quantizedAngle(Vec2 d) {
+  // A vertex at the viewpoint has no direction; the pieces at it are never active, so its key
+  // is never used, but it must not be 0/0 converted to an integer.
+  if (d == Vec2{}) return 0;
   return static_cast<std::uint32_t>(std::min(geometry::pseudoAngle(d) * 0x1p30, 4294967295.0));
 }
 
