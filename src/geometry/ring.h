@@ -58,5 +58,15 @@ struct Box {
   Vec2 max;
 };
 Box boundingBox(std::span<const Vec2> ring);
+// Closed boxes: sharing a side or a corner counts as overlapping, a point on a side as inside.
+inline bool overlaps(const Box& a, const Box& b) {
+  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+inline bool contains(const Box& box, Vec2 p) {
+  return box.min.x <= p.x && p.x <= box.max.x && box.min.y <= p.y && p.y <= box.max.y;
+}
+inline bool contains(const Box& outer, const Box& inner) {
+  return contains(outer, inner.min) && contains(outer, inner.max);
+}
 
 }  // namespace camcov::geometry

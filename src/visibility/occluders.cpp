@@ -13,10 +13,6 @@ namespace {
 
 constexpr std::uint32_t kNone = Occluders::kNoEdge;
 
-bool boxesOverlap(const Box& a, const Box& b) {
-  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
-}
-
 // Of two splits within ε of each other, the one both chains should use: an input vertex over
 // a computed crossing, then the lexicographically smaller point. A fixed rule, so every edge
 // that meets there picks the same point and their pieces match exactly.
@@ -130,7 +126,7 @@ void Occluders::findSplits() {
   for (std::uint32_t i = 0; i < rings; ++i) {
     const Box& a = inChains_[ringOrder_[i]].box;
     for (std::uint32_t j = i + 1; j < rings && inChains_[ringOrder_[j]].box.min.x <= a.max.x; ++j) {
-      if (boxesOverlap(a, inChains_[ringOrder_[j]].box))
+      if (geometry::overlaps(a, inChains_[ringOrder_[j]].box))
         intersectRings(ringOrder_[i], ringOrder_[j]);
     }
   }
@@ -142,7 +138,7 @@ void Occluders::intersectRings(std::uint32_t ringA, std::uint32_t ringB) {
     out.clear();
     const InputRing& r = inRings_[ring];
     for (std::uint32_t e = r.first; e < r.first + r.count; ++e) {
-      if (boxesOverlap(segmentBox(inVertices_[e], inVertices_[inNext_[e]]), other))
+      if (geometry::overlaps(segmentBox(inVertices_[e], inVertices_[inNext_[e]]), other))
         out.push_back(e);
     }
   };
@@ -151,7 +147,7 @@ void Occluders::intersectRings(std::uint32_t ringA, std::uint32_t ringB) {
   for (const std::uint32_t e : candidatesA_) {
     const Box be = segmentBox(inVertices_[e], inVertices_[inNext_[e]]);
     for (const std::uint32_t f : candidatesB_) {
-      if (boxesOverlap(be, segmentBox(inVertices_[f], inVertices_[inNext_[f]])))
+      if (geometry::overlaps(be, segmentBox(inVertices_[f], inVertices_[inNext_[f]])))
         intersectEdges(e, f);
     }
   }

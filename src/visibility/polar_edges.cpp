@@ -26,10 +26,6 @@ std::uint32_t quantizedAngle(Vec2 d) {
   return static_cast<std::uint32_t>(std::min(geometry::pseudoAngle(d) * 0x1p30, 4294967295.0));
 }
 
-bool disjoint(const geometry::Box& a, const geometry::Box& b) {
-  return a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y;
-}
-
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double u = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
@@ -78,7 +74,8 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
     }
     // A far chain out of view or out of the window as a whole needs no look at its pieces:
     // they stay inactive.
-    if (far && ((window != nullptr && disjoint(box, *window)) || boxOutOfView(box))) continue;
+    if (far && ((window != nullptr && !geometry::overlaps(box, *window)) || boxOutOfView(box)))
+      continue;
     addChainEvents(chain, far);
   }
   for (std::uint32_t w = 0; w < wedges_.size(); ++w) {

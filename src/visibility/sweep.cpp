@@ -89,20 +89,19 @@ class WindowCheck final : public SpanSink {
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     next_.span(front, from, to, inFov);
-    if (!inFov || escaped_ || (front != PolarEdges::kNone && front >= edges_.wedgeBase())) return;
-    escaped_ = front == PolarEdges::kNone || !inside(edges_.hit(front, from)) ||
-               !inside(edges_.hit(front, to));
+    if (!inFov || escaped_) return;
+    if (front == PolarEdges::kNone) {
+      escaped_ = true;                        // nothing in front: the ray leaves the window
+    } else if (front < edges_.wedgeBase()) {  // a wedge is at the viewpoint, inside
+      escaped_ =
+          !contains(inside_, edges_.hit(front, from)) || !contains(inside_, edges_.hit(front, to));
+    }
   }
 
   bool escaped() const { return escaped_; }
   bool done() const override { return escaped_; }
 
  private:
-  bool inside(Vec2 v) const {
-    return v.x >= inside_.min.x && v.x <= inside_.max.x && v.y >= inside_.min.y &&
-           v.y <= inside_.max.y;
-  }
-
   const PolarEdges& edges_;
   SpanSink& next_;
   geometry::Box inside_;
@@ -223,10 +222,7 @@ struct Sweep::Impl {
                               static_cast<double>(occluders.pieceCount()));
       for (;; half *= 2.0) {
         const geometry::Box window{viewpoint - Vec2{half, half}, viewpoint + Vec2{half, half}};
-        if (window.min.x <= all.min.x && window.min.y <= all.min.y && window.max.x >= all.max.x &&
-            window.max.y >= all.max.y) {
-          break;
-        }
+        if (contains(window, all)) break;
         edges.build(occluders, viewpoint, fov, &window);
         WindowCheck check(edges, sink, {window.min + margin, window.max - margin});
         sweep.run(edges, check);
