@@ -90,7 +90,7 @@ void drawArena(const Painter& p, const kinematics::World& world);
 void drawObjects(const Painter& p, const kinematics::World& world);
 // The targets' boundaries: seen by some camera green, by none red.
 void drawSegments(const Painter& p, std::span<const visibility::Segment> segments);
-// What a camera sees, translucent amber; `alpha` of the fill.
+// What a camera sees, a translucent amber fill of opacity `alpha`.
 void drawView(const Painter& p, std::span<const geometry::Vec2> view, double alpha = kViewAlpha);
 // A dark disc with the camera's number and a nose in its heading: the heading still shows
 // when the camera sees nothing and has no view to draw.

@@ -1,6 +1,7 @@
 #include "viz/frame_layout.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace camcov::viz {
 namespace {
@@ -29,12 +30,13 @@ FrameLayout panelRight(double width, double height, const geometry::Box& world, 
   l.legendStart = rows.caption + 1;
   l.rowsPerColumn = std::max(1, static_cast<int>((height - 2.0 * pad) / l.rowHeight()));
   l.columns = ceilDiv(l.legendStart + rows.legend, l.rowsPerColumn);
-  const double panelWidth = std::min(width, l.columns * l.columnWidth() + 2.0 * pad);
+  // Both areas are whole pixels (see FrameLayout).
+  const double panelWidth = std::min(width, std::ceil(l.columns * l.columnWidth() + 2.0 * pad));
   // The world and the panel side by side, centred together rather than the world alone, so
   // the panel sits next to the drawing instead of at the frame's far edge.
   const PixelRect available{0.0, 0.0, width - panelWidth, height};
-  const double used = std::min(available.width, worldSize(world, available, em).x);
-  const double left = 0.5 * (width - used - panelWidth);
+  const double used = std::floor(std::min(available.width, worldSize(world, available, em).x));
+  const double left = std::round(0.5 * (width - used - panelWidth));
   l.worldArea = {left, 0.0, used, height};
   l.panel = {left + used, 0.0, panelWidth, height};
   l.toImage = WorldToImage(world, l.worldArea, em);
@@ -56,10 +58,11 @@ FrameLayout panelBottom(double width, double height, const geometry::Box& world,
     l.legendStart = l.rowsPerColumn;
   }
   l.columns = ceilDiv(l.legendStart + rows.legend, l.rowsPerColumn);
-  const double panelHeight = std::min(height, l.rowsPerColumn * l.rowHeight() + 2.0 * pad);
+  const double panelHeight =
+      std::min(height, std::ceil(l.rowsPerColumn * l.rowHeight() + 2.0 * pad));
   const PixelRect available{0.0, 0.0, width, height - panelHeight};
-  const double used = std::min(available.height, worldSize(world, available, em).y);
-  const double top = 0.5 * (height - used - panelHeight);
+  const double used = std::floor(std::min(available.height, worldSize(world, available, em).y));
+  const double top = std::round(0.5 * (height - used - panelHeight));
   l.worldArea = {0.0, top, width, used};
   l.panel = {0.0, top + used, width, panelHeight};
   l.toImage = WorldToImage(world, l.worldArea, em);

@@ -140,10 +140,15 @@ struct VideoEncoder::Impl {
     frame->height = settings.height;
     check(av_frame_get_buffer(frame.get(), 0), "allocating a frame");
     packet = allocated(av_packet_alloc());
-    // AV_PIX_FMT_RGB32 is FFmpeg's name for Cairo's native-endian ARGB32 words.
+    // AV_PIX_FMT_RGB32 is FFmpeg's name for Cairo's native-endian ARGB32 words. With
+    // SWS_FULL_CHR_H_INP libswscale reads chroma at full width with its SIMD input code and
+    // halves it with the bilinear filter; without it, it averages pixel pairs in plain C
+    // first. The same luma, chroma within half a level RMS (a wider filter at sharp edges),
+    // in 1.4 ms a 720p frame instead of 2.5 (viz/README.md).
+    constexpr int kFlags = SWS_BILINEAR | SWS_FULL_CHR_H_INP;
     convert = allocated(sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB32,
-                                       settings.width, settings.height, AV_PIX_FMT_YUV420P,
-                                       SWS_BILINEAR, nullptr, nullptr, nullptr));
+                                       settings.width, settings.height, AV_PIX_FMT_YUV420P, kFlags,
+                                       nullptr, nullptr, nullptr));
     // Full-range RGB to limited-range BT.709, the HD convention browsers assume.
     check(sws_setColorspaceDetails(convert.get(), sws_getCoefficients(SWS_CS_DEFAULT), 1,
                                    sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16),

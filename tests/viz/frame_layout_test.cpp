@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 namespace camcov::viz {
 namespace {
 
@@ -48,6 +51,23 @@ TEST(FrameLayout, SquareFramePutsTheCaptionBelowWithTheLegendBesideIt) {
   const geometry::Vec2 last = l.legendRow(6);
   EXPECT_LE(last.x + l.columnWidth(), l.panel.x + l.panel.width);
   EXPECT_LE(last.y + l.rowHeight(), l.panel.y + l.panel.height);
+}
+
+// Cairo clips to a rectangle on pixel edges without a mask; the renderer clips to both areas.
+TEST(FrameLayout, WorldAreaAndPanelLieOnWholePixels) {
+  const geometry::Box wide{{0.0, 0.0}, {37.3, 11.9}}, tall{{0.0, 0.0}, {7.1, 23.7}};
+  for (const auto& [width, height] : {std::pair{1280, 720}, {720, 720}, {1000, 562}, {642, 998}}) {
+    for (const geometry::Box& world : {kSquareWorld, wide, tall}) {
+      const FrameLayout l = layoutFrame(width, height, world, kRows);
+      for (const PixelRect& r : {l.worldArea, l.panel}) {
+        SCOPED_TRACE(::testing::Message()
+                     << width << "x" << height << " world " << world.max.x << "x" << world.max.y);
+        for (const double edge : {r.x, r.y, r.width, r.height})
+          EXPECT_EQ(edge, std::round(edge));
+      }
+      EXPECT_FALSE(l.worldArea.overlaps(l.panel));
+    }
+  }
 }
 
 TEST(FrameLayout, TextScalesWithTheFrame) {
