@@ -4,15 +4,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "records/atomic_file.h"
 #include "util/input_error.h"
 #include "viz/cairo_drawing.h"
 #include "viz/file_extension.h"
@@ -361,14 +359,10 @@ Surface imageSurface(int width, int height) {
   return surface;
 }
 
-void writeSvg(const Frame& frame, int width, int height, const std::filesystem::path& file) {
-  const std::string svg =
-      svgDocument(width, height, [&](cairo_t* cr) { drawFrame(cr, frame, width, height); });
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw InputError(file.string() + ": cannot write: " + std::strerror(errno));
-  out << svg;
-  out.close();
-  if (!out) throw std::runtime_error(file.string() + ": writing failed");
+// Cairo hands a PNG over in pieces; they are collected to be written in one go.
+cairo_status_t appendTo(void* bytes, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(bytes)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
 }
 
 }  // namespace
@@ -433,15 +427,20 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
 }
 
 void FrameRenderer::write(const Frame& frame, const std::filesystem::path& file) {
+  std::string bytes;
   if (imageFormatOf(file) == ImageFormat::Svg) {
-    writeSvg(frame, width_, height_, file);
-    return;
+    bytes =
+        svgDocument(width_, height_, [&](cairo_t* cr) { drawFrame(cr, frame, width_, height_); });
+  } else {
+    rasterize(frame);
+    const cairo_status_t status =
+        cairo_surface_write_to_png_stream(raster_->surface.get(), appendTo, &bytes);
+    if (status != CAIRO_STATUS_SUCCESS) {
+      throw std::runtime_error(std::string("encoding a PNG: ") + cairo_status_to_string(status));
+    }
   }
-  rasterize(frame);
-  const cairo_status_t status = cairo_surface_write_to_png(raster_->surface.get(), file.c_str());
-  if (status != CAIRO_STATUS_SUCCESS) {
-    throw InputError(file.string() + ": cannot write: " + cairo_status_to_string(status));
-  }
+  // Like every file the tool writes: whole or not at all, its folder created if need be.
+  records::writeFileAtomically(file, bytes);
 }
 
 }  // namespace camcov::viz

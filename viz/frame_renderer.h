@@ -33,8 +33,8 @@ class FrameRenderer {
   // no allocation per frame).
   RasterImage rasterize(const Frame& frame);
 
-  // Writes a PNG or an SVG, chosen by imageFormatOf(file). InputError if the file cannot be
-  // written (e.g. its folder does not exist).
+  // Writes a PNG or an SVG, chosen by imageFormatOf(file), atomically, creating its folder
+  // if need be. InputError if it cannot be written (e.g. a parent is a file).
   void write(const Frame& frame, const std::filesystem::path& file);
 
  private:

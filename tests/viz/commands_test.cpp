@@ -38,6 +38,19 @@ TEST(RenderCommand, WritesPngOrSvgByExtension) {
   EXPECT_NE(head(dir / "f.svg", 200).find("<svg"), std::string::npos);
 }
 
+// As inspect -o and the results files: the folder is made, and the file appears whole.
+TEST(RenderCommand, CreatesTheFolderAndLeavesOnlyTheImage) {
+  ScratchDir dir;
+  const auto png = dir / "frames" / "t1" / "f.png";
+  const auto r = runCamcov("render " + quoted(tinyScene()) + " --time 1 -o " + quoted(png));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(head(png, 8), "\x89PNG\r\n\x1a\n");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(png.parent_path()))
+    ++files;
+  EXPECT_EQ(files, 1u);
+}
+
 // A 3 s run at dt = 0.1 s records 31 steps: 31 frames at 10 fps, 3.1 s.
 TEST(RunCommand, VideoOptionWritesBrowserPlayableMp4OfTheRun) {
   ScratchDir dir;
@@ -108,9 +121,10 @@ TEST_F(RecordedRun, BadInputsExitTwo) {
             2);  // a scene is not a results file
   EXPECT_EQ(runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "f.jpg")).exitCode,
             2);
-  EXPECT_EQ(
-      runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "no" / "f.png")).exitCode,
-      2);
+  std::ofstream(dir_ / "plain") << "not a folder";
+  EXPECT_EQ(runCamcov("render " + quoted(tinyScene()) + " -o " + quoted(dir_ / "plain" / "f.png"))
+                .exitCode,
+            2);
   // Rejected before the simulation runs: no results are written.
   EXPECT_EQ(runCamcov("run " + quoted(tinyScene()) + " --duration 1 --out " +
                       quoted(dir_ / "other") + " --video " + quoted(dir_ / "v.avi"))
