@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "records/atomic_file.h"
 #include "util/input_error.h"
 #include "viz/file_extension.h"
 
@@ -124,6 +125,7 @@ struct VideoEncoder::Impl {
     check(avcodec_parameters_from_context(stream->codecpar, codec.get()), "stream parameters");
     stream->time_base = codec->time_base;  // a wish: the muxer may pick a finer one
     stream->avg_frame_rate = codec->framerate;
+    records::createParentFolder(file);
     const int opened = avio_open(&format->pb, partial.c_str(), AVIO_FLAG_WRITE);
     if (opened < 0) throw InputError(file.string() + ": cannot create: " + avError(opened));
     AVDictionary* options = nullptr;

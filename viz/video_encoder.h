@@ -44,6 +44,7 @@ class VideoEncoder {
   // Starts `file` (written as "<file>.part" and renamed by finish(), so a crash never leaves a
   // truncated video under the final name). std::invalid_argument for bad settings,
   // std::runtime_error if libx264 is not available, InputError if the file cannot be created.
+  // Creates the file's folder if missing, as every output of the tool does.
   VideoEncoder(const std::filesystem::path& file, const VideoSettings& settings);
   // Without finish(), discards the partial file.
   ~VideoEncoder();

@@ -20,13 +20,16 @@ std::string systemError(const std::string& what, const std::filesystem::path& fi
 
 }  // namespace
 
-void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
+void createParentFolder(const std::filesystem::path& file) {
+  if (!file.has_parent_path()) return;
   std::error_code ec;
-  if (file.has_parent_path()) {
-    std::filesystem::create_directories(file.parent_path(), ec);
-    if (ec)
-      throw InputError("cannot create folder " + file.parent_path().string() + ": " + ec.message());
-  }
+  std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec)
+    throw InputError("cannot create folder " + file.parent_path().string() + ": " + ec.message());
+}
+
+void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
+  createParentFolder(file);
   const std::filesystem::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(systemError("cannot create", temporary));

@@ -7,6 +7,11 @@
 
 namespace camcov::records {
 
+// Creates the folder `file` goes in, and its parents, if missing. InputError if it cannot
+// (e.g. a parent is a file). Files written other than through writeFileAtomically (videos)
+// use it too, so every output of the tool gets its folder the same way.
+void createParentFolder(const std::filesystem::path& file);
+
 // Throws InputError if the folder cannot be created or written (a bad --out), and
 // std::runtime_error for failures while writing (e.g. the disk is full).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content);

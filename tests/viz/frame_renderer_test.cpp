@@ -161,9 +161,15 @@ TEST(ImageFormat, ComesFromTheExtensionInAnyCase) {
   EXPECT_THROW(imageFormatOf("png"), InputError);
 }
 
-TEST_F(TinyFrame, UnwritableFileIsAnInputError) {
-  EXPECT_THROW(renderer_.write(frame_, "/nonexistent-folder/f.png"), InputError);
-  EXPECT_THROW(renderer_.write(frame_, "/nonexistent-folder/f.svg"), InputError);
+TEST_F(TinyFrame, MissingFoldersAreMadeAndAFileInTheWayIsAnInputError) {
+  ScratchDir dir;
+  for (const char* name : {"f.png", "f.svg"}) {
+    renderer_.write(frame_, dir / "new" / "deeper" / name);
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "new" / "deeper" / name)) << name;
+  }
+  std::ofstream(dir / "plain") << "not a folder";
+  EXPECT_THROW(renderer_.write(frame_, dir / "plain" / "f.png"), InputError);
+  EXPECT_THROW(renderer_.write(frame_, dir / "plain" / "f.svg"), InputError);
 }
 
 TEST(FrameRenderer, RejectsSizesOutsideItsRange) {

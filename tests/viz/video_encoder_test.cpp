@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "util/input_error.h"
@@ -88,7 +90,19 @@ TEST(VideoEncoder, RejectsOddSizesAndFramesOfTheWrongSize) {
 TEST(VideoEncoder, OtherExtensionsAndUnwritablePlacesAreInputErrors) {
   EXPECT_THROW(requireMp4("run.avi"), InputError);
   EXPECT_NO_THROW(requireMp4("run.MP4"));
-  EXPECT_THROW(VideoEncoder("/nonexistent-folder/run.mp4", small(10)), InputError);
+  ScratchDir dir;
+  std::ofstream(dir / "plain") << "not a folder";
+  EXPECT_THROW(VideoEncoder(dir / "plain" / "run.mp4", small(10)), InputError);
+}
+
+TEST(VideoEncoder, MakesTheFoldersOfItsFile) {
+  ScratchDir dir;
+  const auto file = dir / "videos" / "new" / "run.mp4";
+  Frames frames(64, 48);
+  VideoEncoder encoder(file, small(10));
+  encoder.addFrame(frames.frame(0));
+  encoder.finish();
+  EXPECT_TRUE(std::filesystem::is_regular_file(file));
 }
 
 }  // namespace
