@@ -22,8 +22,7 @@ VideoBatch writeBenchVideos(const records::BatchFolder& folder,
                             std::span<const records::VideoRun> runs, unsigned workers) {
   VideoBatch batch;
   if (runs.empty()) return batch;
-  const fs::path dir = folder.root() / "videos";
-  fs::create_directories(dir);
+  const fs::path dir = folder.root() / "videos";  // made by the first video's encoder
 
   // A video is up to date if it is newer than its run's results file: a run done again
   // (other parameters, --force, a changed scene) gets a new video.
