@@ -1,13 +1,13 @@
 #include "cli/run_job.h"
 
 #include <memory>
+#include <utility>
 
 #include "camcov/version.h"
 #include "control/local_controller.h"
 #include "control/paper_controller.h"
 #include "scene/read_text.h"
 #include "scene/scene_loader.h"
-#include "sim/simulator.h"
 #include "util/input_error.h"
 
 namespace camcov::cli {
@@ -23,23 +23,20 @@ records::RunRecord runJob(const JobSpec& job) {
   const std::string text = scene::readText(job.sceneFile);
   const scene::Scene scene = scene::parseScene(text, job.sceneFile.string());
 
-  records::RunRecord run;
-  run.metadata = {scene.name,
-                  job.sceneFile.string(),
-                  records::fnv1a(text),
-                  job.method,
-                  job.seed,
-                  job.parameters,
-                  kVersion};
+  records::RunMetadata metadata{scene.name,
+                                job.sceneFile.string(),
+                                records::fnv1a(text),
+                                job.method,
+                                job.seed,
+                                job.parameters,
+                                kVersion};
   std::unique_ptr<control::Controller> controller;
   if (job.method == "paper") {
     controller = std::make_unique<control::PaperController>(scene, job.parameters, job.seed);
   } else {
     controller = std::make_unique<control::LocalController>(scene, job.parameters);
   }
-  records::RunRecorder recorder(run);
-  run.summary = sim::simulate(scene, job.parameters, *controller, recorder);
-  return run;
+  return records::recordRun(scene, std::move(metadata), *controller);
 }
 
 }  // namespace camcov::cli

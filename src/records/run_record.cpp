@@ -1,5 +1,7 @@
 #include "records/run_record.h"
 
+#include <utility>
+
 namespace camcov::records {
 
 void RunRecorder::step(const sim::StepRecord& step) {
@@ -12,6 +14,15 @@ void RunRecorder::step(const sim::StepRecord& step) {
   row.goals.assign(step.goals.begin(), step.goals.end());
   record_.steps.push_back(std::move(row));
   record_.events.insert(record_.events.end(), step.events.begin(), step.events.end());
+}
+
+RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
+                    control::Controller& controller) {
+  RunRecord run;
+  run.metadata = std::move(metadata);
+  RunRecorder recorder(run);
+  run.summary = sim::simulate(scene, run.metadata.parameters, controller, recorder);
+  return run;
 }
 
 std::uint64_t fnv1a(std::string_view bytes) {

@@ -8,6 +8,7 @@
 
 #include "control/controller.h"
 #include "params/parameters.h"
+#include "scene/scene.h"
 #include "sim/simulator.h"
 
 namespace camcov::records {
@@ -47,6 +48,11 @@ class RunRecorder final : public sim::Recorder {
  private:
   RunRecord& record_;
 };
+
+// Simulates `scene` with `controller` (made with metadata.parameters and metadata.seed) and
+// records every step: what `camcov run` and the video benchmark both do.
+RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
+                    control::Controller& controller);
 
 std::uint64_t fnv1a(std::string_view bytes);
 

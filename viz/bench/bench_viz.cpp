@@ -17,12 +17,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "control/paper_controller.h"
 #include "records/run_record.h"
 #include "scene/scene_loader.h"
-#include "sim/simulator.h"
 #include "viz/frame.h"
 #include "viz/frame_renderer.h"
 #include "viz/run_replay.h"
@@ -48,14 +48,12 @@ std::filesystem::path scratchVideo() {
 
 // The paper method's run of `scene`, as `camcov run` records it.
 records::RunRecord paperRun(const scene::Scene& scene) {
-  records::RunRecord run;
-  run.metadata.scene = scene.name;
-  run.metadata.method = "paper";
-  run.metadata.seed = 1;
-  control::PaperController controller(scene, run.metadata.parameters, run.metadata.seed);
-  records::RunRecorder recorder(run);
-  run.summary = sim::simulate(scene, run.metadata.parameters, controller, recorder);
-  return run;
+  records::RunMetadata metadata;
+  metadata.scene = scene.name;
+  metadata.method = "paper";
+  metadata.seed = 1;
+  control::PaperController controller(scene, metadata.parameters, metadata.seed);
+  return records::recordRun(scene, std::move(metadata), controller);
 }
 
 void replay(benchmark::State& state, const scene::Scene& scene) {
