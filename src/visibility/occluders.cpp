@@ -1,6 +1,7 @@
 #include "visibility/occluders.h"
 
 #include <algorithm>
+#include <atomic>
 
 #include "geometry/predicates.h"
 
@@ -28,6 +29,8 @@ Box segmentBox(Vec2 a, Vec2 b) {
 }  // namespace
 
 void Occluders::build(const kinematics::World& world) {
+  static std::atomic<std::uint64_t> builds{0};
+  buildId_ = ++builds;
   inVertices_.clear();
   inNext_.clear();
   inRingEdge_.clear();

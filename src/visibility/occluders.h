@@ -91,6 +91,10 @@ class Occluders {
     return targetVertices_[targetNext_[globalEdge]];
   }
 
+  // Different for every build() of every Occluders in the process: what a query's caches built
+  // from this arrangement (OcclusionCulling's grid) are keyed on.
+  std::uint64_t buildId() const { return buildId_; }
+
   // The World's bounding box.
   const geometry::Box& box() const { return box_; }
   // Side of the World's bounding box (at least 1e-300): the scale of every tolerance.
@@ -150,6 +154,7 @@ class Occluders {
   std::vector<geometry::Vec2> targetVertices_;
   std::vector<std::uint32_t> targetNext_;
 
+  std::uint64_t buildId_ = 0;
   geometry::Box box_;
   double extent_ = 1.0;
   double tolerance_ = kRelativeTolerance;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/predicates.h"
+#include "visibility/angle_keys.h"
 
 namespace camcov::visibility {
 
@@ -16,16 +17,6 @@ namespace {
 
 constexpr std::uint8_t kTouching = 8;  // replaced by a blocked wedge
 
-// The pseudo-angle in [0, 4] as a 32-bit fixed-point number: 16-byte events, and the radix
-// sort's digits for free. A quantum, 2^-30, dwarfs the pseudo-angle's rounding error (~1e-15),
-// so keys two quanta apart order their directions correctly; closer ones go to compareAngle().
-std::uint32_t quantizedAngle(Vec2 d) {
-  // A vertex at the viewpoint has no direction; the pieces at it are never active, so its key
-  // is never used, but it must not be 0/0 converted to an integer.
-  if (d == Vec2{}) return 0;
-  return static_cast<std::uint32_t>(std::min(geometry::pseudoAngle(d) * 0x1p30, 4294967295.0));
-}
-
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double u = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
@@ -34,8 +25,24 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
 
 }  // namespace
 
+void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
+  start(occluders, viewpoint, fov);
+  for (const Chain& chain : occluders.chains()) {
+    if (!addChain(chain)) return;
+  }
+  finish(fov);
+}
+
 void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov,
-                       const geometry::Box* window) {
+                       std::span<const std::uint32_t> chains) {
+  start(occluders, viewpoint, fov);
+  for (const std::uint32_t c : chains) {
+    if (!addChain(occluders.chains()[c])) return;
+  }
+  finish(fov);
+}
+
+void PolarEdges::start(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
   occluders_ = &occluders;
   p_ = viewpoint;
   eps2_ = occluders.tolerance() * occluders.tolerance();
@@ -61,23 +68,24 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
     cullFrom_ = quantizedAngle(fovPoints_[1] - p_);
     cullWidth_ = quantizedAngle(fovPoints_[0] - p_) - cullFrom_;  // modulo 2^32, keys go round
   }
+}
 
-  const double eps = occluders.tolerance();
-  for (const Chain& chain : occluders.chains()) {
-    const geometry::Box& box = chain.box;
-    const bool far = p_.x < box.min.x - eps || p_.x > box.max.x + eps || p_.y < box.min.y - eps ||
-                     p_.y > box.max.y + eps;
-    // Outside the boundary's box is outside the boundary; near a ring, look closer.
-    if (far ? chain.kind == RingKind::Boundary : !classifyNearChain(chain)) {
-      blind_ = true;
-      return;
-    }
-    // A far chain out of view or out of the window as a whole needs no look at its pieces:
-    // they stay inactive.
-    if (far && ((window != nullptr && !geometry::overlaps(box, *window)) || boxOutOfView(box)))
-      continue;
-    addChainEvents(chain, far);
+bool PolarEdges::addChain(const Chain& chain) {
+  const double eps = occluders_->tolerance();
+  const geometry::Box& box = chain.box;
+  const bool far = p_.x < box.min.x - eps || p_.x > box.max.x + eps || p_.y < box.min.y - eps ||
+                   p_.y > box.max.y + eps;
+  // Outside the boundary's box is outside the boundary; near a ring, look closer.
+  if (far ? chain.kind == RingKind::Boundary : !classifyNearChain(chain)) {
+    blind_ = true;
+    return false;
   }
+  // A far chain out of view as a whole needs no look at its pieces: they stay inactive.
+  if (!(far && boxOutOfView(box))) addChainEvents(chain, far);
+  return true;
+}
+
+void PolarEdges::finish(const FieldOfView* fov) {
   for (std::uint32_t w = 0; w < wedges_.size(); ++w) {
     addEvent(vertex(wedges_[w].start), w, EventKind::WedgeStart);
     addEvent(vertex(wedges_[w].end), w, EventKind::WedgeEnd);
@@ -152,18 +160,8 @@ std::uint8_t PolarEdges::cull(std::uint8_t state, std::uint32_t startKey,
 
 bool PolarEdges::boxOutOfView(const geometry::Box& box) const {
   if (cullWidth_ == 0) return false;
-  // Seen from outside, the box spans the arc between its extreme corners, less than π. In
-  // offsets from cullFrom_, the arc from the least to the greatest corner holds all four; if
-  // it is shorter than π it is that arc (two arcs holding all four and both shorter than π
-  // would leave two disjoint gaps longer than π). A pseudo-angle turns by 2 over π.
-  std::uint32_t lo = 0xffffffffu, hi = 0;
-  for (const Vec2 corner :
-       {box.min, Vec2{box.max.x, box.min.y}, box.max, Vec2{box.min.x, box.max.y}}) {
-    const std::uint32_t offset = quantizedAngle(corner - p_) - cullFrom_;
-    lo = std::min(lo, offset);
-    hi = std::max(hi, offset);
-  }
-  return hi - lo < 0x80000000u - 4 && outOfView(lo + cullFrom_, hi + cullFrom_);
+  const std::optional<KeyArc> arc = boxArc(box, p_);
+  return arc && outOfView(arc->start, arc->end());
 }
 
 bool PolarEdges::less(const Event& a, const Event& b) const {

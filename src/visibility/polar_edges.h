@@ -63,12 +63,14 @@ class PolarEdges {
     std::uint32_t start, end;
   };
 
-  // Prepares the sweep from `viewpoint`; `fov` is null for an omnidirectional viewpoint.
-  // With a `window` (a box around the viewpoint), chains whose boxes lie wholly outside it are
-  // left out: the sweep is then exact only where its front edge is met inside the window,
-  // which the caller checks (Sweep's windowed sweeps).
+  // Prepares the sweep from `viewpoint` over all chains; `fov` is null for an omnidirectional
+  // viewpoint.
+  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov);
+  // The same for the chains `chains` only (ascending indices). Every chain the viewpoint may
+  // see or lies near must be among them, and the boundary: then the front edge is the same on
+  // every ray as with all chains (OcclusionCulling::kept()).
   void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov,
-             const geometry::Box* window = nullptr);
+             std::span<const std::uint32_t> chains);
 
   bool blind() const { return blind_; }
   geometry::Vec2 viewpoint() const { return p_; }
@@ -103,6 +105,10 @@ class PolarEdges {
  private:
   static constexpr std::uint8_t kActive = 1, kReversed = 2, kEdgeOn = 4;
 
+  void start(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov);
+  // Adds chain's events; false when the viewpoint is found blind.
+  bool addChain(const Chain& chain);
+  void finish(const FieldOfView* fov);
   bool classifyNearChain(const Chain& chain);
   std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
   // Culling what is out of view (keys as in Event::key). The arc counter-clockwise from

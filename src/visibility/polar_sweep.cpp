@@ -40,7 +40,6 @@ void PolarSweep::run(const PolarEdges& edges, SpanSink& sink, SweepObserver* obs
       const geometry::Vec2 ray = edges.pointOf(events[i]);
       if (changed) {
         sink.span(front, lastRay, ray, inFov);
-        if (sink.done()) return;
       } else {
         changed = true;
         firstRay = ray;

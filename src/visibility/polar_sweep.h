@@ -21,8 +21,6 @@ class SpanSink {
   // Between the rays through `from` and `to` (counter-clockwise), `front` (an active id or
   // PolarEdges::kNone) is the closest edge and the field-of-view state is `inFov`.
   virtual void span(std::uint32_t front, geometry::Vec2 from, geometry::Vec2 to, bool inFov) = 0;
-  // True once the sink needs no more spans: the sweep stops early.
-  virtual bool done() const { return false; }
 
  protected:
   ~SpanSink() = default;

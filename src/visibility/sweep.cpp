@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "visibility/occlusion_culling.h"
 #include "visibility/polar_edges.h"
 #include "visibility/polar_sweep.h"
 #include "visibility/tessellation.h"
@@ -20,10 +21,7 @@ namespace {
 class TargetSink final : public SpanSink {
  public:
   TargetSink(const PolarEdges& edges, Tessellation& tessellation, unsigned camera)
-      : edges_(edges), tessellation_(tessellation), camera_(camera), start_(tessellation.size()) {}
-
-  // Takes back this camera's intervals, for a sweep that starts over.
-  void restart() { tessellation_.truncate(start_); }
+      : edges_(edges), tessellation_(tessellation), camera_(camera) {}
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     // Wedges (and kNone) are not pieces; an edge-on piece has no length to see.
@@ -43,7 +41,6 @@ class TargetSink final : public SpanSink {
   const PolarEdges& edges_;
   Tessellation& tessellation_;
   unsigned camera_;
-  std::size_t start_;
 };
 
 // Spans of the current edge → vertices of the visibility polygon; outside the field of view
@@ -51,10 +48,8 @@ class TargetSink final : public SpanSink {
 class PolygonSink final : public SpanSink {
  public:
   PolygonSink(const PolarEdges& edges, geometry::Ring& out) : edges_(edges), out_(out) {
-    restart();
+    out_.clear();
   }
-
-  void restart() { out_.clear(); }
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     if (!inFov) {
@@ -76,36 +71,6 @@ class PolygonSink final : public SpanSink {
 
   const PolarEdges& edges_;
   geometry::Ring& out_;
-};
-
-// Passes the spans of a windowed sweep on, and tells whether the window held everything in
-// view: on every ray in view the front edge is met inside `inside` (the window shrunk by ε, so
-// that rounding the hit cannot matter). Chains left out lie wholly outside the window, so
-// along such a ray they are farther than the front and the result is the whole scene's.
-class WindowCheck final : public SpanSink {
- public:
-  WindowCheck(const PolarEdges& edges, SpanSink& next, const geometry::Box& inside)
-      : edges_(edges), next_(next), inside_(inside) {}
-
-  void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
-    next_.span(front, from, to, inFov);
-    if (!inFov || escaped_) return;
-    if (front == PolarEdges::kNone) {
-      escaped_ = true;                        // nothing in front: the ray leaves the window
-    } else if (front < edges_.wedgeBase()) {  // a wedge is at the viewpoint, inside
-      escaped_ =
-          !contains(inside_, edges_.hit(front, from)) || !contains(inside_, edges_.hit(front, to));
-    }
-  }
-
-  bool escaped() const { return escaped_; }
-  bool done() const override { return escaped_; }
-
- private:
-  const PolarEdges& edges_;
-  SpanSink& next_;
-  geometry::Box inside_;
-  bool escaped_ = false;
 };
 
 // Records each ray of one camera's sweep (Sweep::trace).
@@ -203,51 +168,38 @@ void checkCamera(const geometry::Pose& camera, double halfFov) {
 }  // namespace
 
 struct Sweep::Impl {
-  Windowing windowing;
-  WindowCounts counts;
+  Culling culling;
+  CullingCounts counts;
+  OcclusionCulling occlusion;
   PolarEdges edges;
   PolarSweep sweep;
   Tessellation tessellation;
 
-  // The sweep from `viewpoint` into `sink` (which can restart()), in windows when the scene is
-  // large (see Windowing): squares of doubling half-side around the viewpoint until one holds
-  // everything in view, and the whole scene once a square would cover it.
-  template <typename Sink>
-  void sweepFrom(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov, Sink& sink) {
-    if (occluders.pieceCount() >= windowing.fromPieces) {
-      const geometry::Box& all = occluders.box();
-      const Vec2 margin{occluders.tolerance(), occluders.tolerance()};
-      double half = 0.5 * occluders.extent() *
-                    std::sqrt(static_cast<double>(windowing.firstPieces) /
-                              static_cast<double>(occluders.pieceCount()));
-      for (;; half *= 2.0) {
-        const geometry::Box window{viewpoint - Vec2{half, half}, viewpoint + Vec2{half, half}};
-        if (contains(window, all)) break;
-        edges.build(occluders, viewpoint, fov, &window);
-        WindowCheck check(edges, sink, {window.min + margin, window.max - margin});
-        sweep.run(edges, check);
-        ++counts.windows;
-        if (!check.escaped()) {
-          ++counts.kept;
-          return;
-        }
-        sink.restart();
-      }
+  // The sweep from `viewpoint` into `sink`; in a large scene only of the chains that
+  // OcclusionCulling cannot rule out.
+  void sweepFrom(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov,
+                 SpanSink& sink) {
+    if (occluders.pieceCount() >= culling.fromPieces) {
+      occlusion.run(occluders, viewpoint, fov, culling.cellsPerChain);
+      edges.build(occluders, viewpoint, fov, occlusion.kept());
+      ++counts.culled;
+      counts.chainsLeftOut += occlusion.hiddenCount();
+    } else {
+      edges.build(occluders, viewpoint, fov);
+      ++counts.whole;
     }
-    edges.build(occluders, viewpoint, fov);
     sweep.run(edges, sink);
-    ++counts.whole;
   }
 };
 
-Sweep::Sweep(Windowing windowing) : impl_(std::make_unique<Impl>()) {
-  impl_->windowing = windowing;
+Sweep::Sweep(Culling culling) : impl_(std::make_unique<Impl>()) {
+  impl_->culling = culling;
 }
 Sweep::~Sweep() = default;
 Sweep::Sweep(Sweep&&) noexcept = default;
 Sweep& Sweep::operator=(Sweep&&) noexcept = default;
 
-const WindowCounts& Sweep::counts() const {
+const CullingCounts& Sweep::counts() const {
   return impl_->counts;
 }
 

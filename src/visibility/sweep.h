@@ -30,28 +30,27 @@
 
 namespace camcov::visibility {
 
-// Large scenes are swept in windows: a query first sweeps only the chains whose boxes meet a
-// square around the viewpoint, and keeps that result if every ray in view meets its front edge
-// inside the square (whatever lies wholly outside is farther along every ray); otherwise it
-// doubles the square, up to the whole scene. Where the visible region is local, as among many
-// obstacles, the cost follows what is seen rather than the whole scene. The windows depend on
-// the scene and the viewpoint only, so results do too (docs/visibility.md).
-struct Windowing {
-  std::uint32_t fromPieces = 4096;   // scenes with fewer pieces are swept whole at once
-  std::uint32_t firstPieces = 1024;  // the first square holds about this many, at even density
+// Large scenes are culled first: from `fromPieces` pieces on, a query walks a grid of the
+// chains outwards from the viewpoint and leaves out every chain it can prove hidden behind
+// those nearer (OcclusionCulling, docs/visibility.md), then sweeps the rest. Where the view
+// is local, as among many obstacles, the cost follows what is seen rather than the whole
+// scene. What is left out depends on the scene and the viewpoint only, so results do too.
+struct Culling {
+  std::uint32_t fromPieces = 1024;  // scenes with fewer pieces are swept whole
+  double cellsPerChain = 1.0;       // fineness of the culling grid
 };
 // How a Sweep's queries were answered so far (each camera of segments() is one query).
-struct WindowCounts {
-  std::uint64_t windows = 0;  // windowed sweeps run
-  std::uint64_t kept = 0;     // of them, those that held everything in view
-  std::uint64_t whole = 0;    // sweeps of the whole scene
+struct CullingCounts {
+  std::uint64_t culled = 0;         // queries culled first
+  std::uint64_t whole = 0;          // queries swept over the whole scene
+  std::uint64_t chainsLeftOut = 0;  // chains left out, summed over the culled queries
 };
 
 class Sweep {
  public:
   static constexpr std::size_t kMaxCameras = 64;  // bits of Segment::visibleBy
 
-  explicit Sweep(Windowing windowing = {});
+  explicit Sweep(Culling culling = {});
   ~Sweep();
   Sweep(Sweep&&) noexcept;
   Sweep& operator=(Sweep&&) noexcept;
@@ -65,7 +64,7 @@ class Sweep {
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
                 std::vector<Segment>& out);
 
-  const WindowCounts& counts() const;
+  const CullingCounts& counts() const;
 
   // The omnidirectional visibility polygon of `point` (Algorithm 2, line 6; the motion
   // planner's sampler): the region seen from it, inside the boundary, among the objects.

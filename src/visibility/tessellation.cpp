@@ -12,11 +12,6 @@ void Tessellation::clear() {
   pending_.clear();
 }
 
-void Tessellation::truncate(std::size_t size) {
-  edgeOf_.resize(size);
-  pending_.resize(size);
-}
-
 void Tessellation::add(std::uint32_t globalEdge, double lo, double hi, unsigned camera) {
   if (lo > hi) std::swap(lo, hi);
   lo = std::max(lo, 0.0);

@@ -22,10 +22,6 @@ class Tessellation {
   void clear();
   // Camera `camera` (< 64) sees the target edge `globalEdge` for t in [lo, hi].
   void add(std::uint32_t globalEdge, double lo, double hi, unsigned camera);
-  // Intervals added so far, and forgetting those added since: a windowed sweep that has to
-  // start over takes back what it reported.
-  std::size_t size() const { return edgeOf_.size(); }
-  void truncate(std::size_t size);
   // Writes S, ordered by target, edge, and along the edge.
   void build(const Occluders& occluders, std::vector<Segment>& out);
 

@@ -5,9 +5,10 @@
 // middle of the room, in a cell left free.
 //  - Preprocess:  Occluders::build (Algorithm 1 line 1), once per World.
 //  - Sweep:       one camera, θ = 45°: S and visibleBy (Algorithm 1 lines 3–17), as the tool
-//                 runs it: from 4096 pieces on, in windows around the camera (Windowing).
+//                 runs it: from 1024 pieces on, culled first (Culling, OcclusionCulling).
 //  - Polygon:     the omnidirectional visibility polygon (Algorithm 2 line 6), likewise.
-//  - SweepWhole, PolygonWhole: the same, always over the whole scene (the sweep's own growth).
+//  - …Whole:      the same, always over the whole scene (the sweep's own growth).
+//  - …Culled:     the same, always culled first (what culling costs where it cannot pay).
 //  - SortDoubles: std::sort of 2n random doubles, the floor any O(n log n) sweep is held to.
 //  - CGAL (when found): Triangular_expansion_visibility_2 and Rotational_sweep_visibility_2
 //    queries with the exact kernel Epeck; preprocessing (arrangement, triangulation) excluded.
@@ -115,24 +116,34 @@ void Preprocess(benchmark::State& state) {
 }
 BENCHMARK(Preprocess)->Apply(sizes);
 
-// The Sweep as the tool runs it (windows from 4096 pieces on), or the whole scene every time.
-vis::Windowing windowing(bool windowed) {
-  return windowed ? vis::Windowing{} : vis::Windowing{UINT32_MAX, 0};
+// How a benchmark row sweeps: as the tool does (culling from Culling::fromPieces pieces on),
+// always over the whole scene, or always culled first.
+enum class Mode { AsTool, Whole, Culled };
+vis::Culling culling(Mode mode) {
+  switch (mode) {
+    case Mode::AsTool:
+      break;
+    case Mode::Whole:
+      return {UINT32_MAX};
+    case Mode::Culled:
+      return {0};
+  }
+  return {};
 }
 
-// Windowed sweeps per query, and the share of queries a window answered.
-void countWindows(benchmark::State& state, const vis::Sweep& sweep) {
-  const vis::WindowCounts& n = sweep.counts();
-  const auto queries = static_cast<double>(n.kept + n.whole);
-  state.counters["windows"] = static_cast<double>(n.windows) / queries;
-  state.counters["kept"] = static_cast<double>(n.kept) / queries;
+// The share of queries culled first, and the chains they left out, per query.
+void countCulling(benchmark::State& state, const vis::Sweep& sweep) {
+  const vis::CullingCounts& n = sweep.counts();
+  const auto queries = static_cast<double>(n.culled + n.whole);
+  state.counters["culled"] = static_cast<double>(n.culled) / queries;
+  state.counters["leftOut"] = static_cast<double>(n.chainsLeftOut) / queries;
 }
 
-template <bool kWindowed>
+template <Mode kMode>
 void Sweep(benchmark::State& state) {
   const Scene scene = roomWithHoles(static_cast<int>(state.range(0)));
   const vis::Occluders occluders(scene.world);
-  vis::Sweep sweep(windowing(kWindowed));
+  vis::Sweep sweep(culling(kMode));
   std::vector<vis::Segment> segments;
   const camcov::geometry::Pose camera{scene.viewpoint.x, scene.viewpoint.y, 0.3};
   for (auto _ : state) {
@@ -140,26 +151,30 @@ void Sweep(benchmark::State& state) {
     benchmark::DoNotOptimize(segments.data());
   }
   state.counters["segments"] = static_cast<double>(segments.size());
-  countWindows(state, sweep);
+  state.counters["chains"] = static_cast<double>(occluders.chains().size());
+  countCulling(state, sweep);
 }
-BENCHMARK_TEMPLATE(Sweep, true)->Name("Sweep")->Apply(sizes);
-BENCHMARK_TEMPLATE(Sweep, false)->Name("SweepWhole")->Apply(sizes);
+BENCHMARK_TEMPLATE(Sweep, Mode::AsTool)->Name("Sweep")->Apply(sizes);
+BENCHMARK_TEMPLATE(Sweep, Mode::Whole)->Name("SweepWhole")->Apply(sizes);
+BENCHMARK_TEMPLATE(Sweep, Mode::Culled)->Name("SweepCulled")->Apply(sizes);
 
-template <bool kWindowed>
+template <Mode kMode>
 void Polygon(benchmark::State& state) {
   const Scene scene = roomWithHoles(static_cast<int>(state.range(0)));
   const vis::Occluders occluders(scene.world);
-  vis::Sweep sweep(windowing(kWindowed));
+  vis::Sweep sweep(culling(kMode));
   Ring polygon;
   for (auto _ : state) {
     sweep.visibilityPolygon(occluders, scene.viewpoint, polygon);
     benchmark::DoNotOptimize(polygon.data());
   }
   state.counters["vertices"] = static_cast<double>(polygon.size());
-  countWindows(state, sweep);
+  state.counters["chains"] = static_cast<double>(occluders.chains().size());
+  countCulling(state, sweep);
 }
-BENCHMARK_TEMPLATE(Polygon, true)->Name("Polygon")->Apply(sizes);
-BENCHMARK_TEMPLATE(Polygon, false)->Name("PolygonWhole")->Apply(sizes);
+BENCHMARK_TEMPLATE(Polygon, Mode::AsTool)->Name("Polygon")->Apply(sizes);
+BENCHMARK_TEMPLATE(Polygon, Mode::Whole)->Name("PolygonWhole")->Apply(sizes);
+BENCHMARK_TEMPLATE(Polygon, Mode::Culled)->Name("PolygonCulled")->Apply(sizes);
 
 void SortDoubles(benchmark::State& state) {
   Random random{42};

@@ -84,8 +84,7 @@ Ring gridBoundary(Random& random, double w, double h) {
   }
 }
 
-void gridObjects(Random& random, kinematics::World& world, double w, double h) {
-  const int count = random.integer(1, 4);
+void gridObjects(Random& random, kinematics::World& world, double w, double h, int count) {
   std::vector<Ring> objects;
   for (int i = 0; i < count; ++i) {
     const double x = random.integer(0, static_cast<int>(w) - 2),
@@ -127,11 +126,12 @@ void gridObjects(Random& random, kinematics::World& world, double w, double h) {
   }
 }
 
-void generalObjects(Random& random, kinematics::World& world, double size) {
-  const int count = random.integer(1, 4);
+// `count` objects of radius between `smallest` and `largest` times `size`.
+void generalObjects(Random& random, kinematics::World& world, double size, int count,
+                    double smallest, double largest) {
   for (int i = 0; i < count; ++i) {
     const Vec2 c{random.uniform(0.1 * size, 0.9 * size), random.uniform(0.1 * size, 0.9 * size)};
-    const double r = random.uniform(0.03, 0.2) * size;
+    const double r = random.uniform(smallest, largest) * size;
     Ring ring = random.chance(0.5) ? starPolygon(random, c, random.integer(3, 9), 0.4 * r, r, false)
                                    : convexPolygon(random, c, random.integer(3, 8), r);
     (i == 0 || random.chance(0.6) ? world.targets : world.obstacles).push_back(ring);
@@ -219,17 +219,21 @@ int Random::integer(int lo, int hi) {
   return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1));
 }
 
-Case randomCase(std::uint64_t seed, std::uint64_t index) {
+Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd) {
   Random random(seed ^ (index * 0xd1342543de82ef95ull));
   Case c;
   const bool grid = random.chance(0.5);
+  const bool crowded = crowd == Crowd::Many;
+  // Drawn where the generators need them, so that a few objects gives the same cases as ever.
+  const auto objects = [&] { return crowded ? random.integer(20, 60) : random.integer(1, 4); };
   if (grid) {
-    const double w = random.integer(8, 16), h = random.integer(8, 16);
+    const double w = crowded ? random.integer(24, 40) : random.integer(8, 16);
+    const double h = crowded ? random.integer(24, 40) : random.integer(8, 16);
     c.world.boundary = gridBoundary(random, w, h);
     if (random.chance(0.3)) addCollinearVertices(random, c.world.boundary);
-    gridObjects(random, c.world, w, h);
+    gridObjects(random, c.world, w, h, objects());
   } else {
-    const double size = 20.0;
+    const double size = crowded ? 60.0 : 20.0;
     switch (random.integer(0, 2)) {
       case 0:
         c.world.boundary = rectangle(0, 0, size, size);
@@ -243,7 +247,11 @@ Case randomCase(std::uint64_t seed, std::uint64_t index) {
                                        0.35 * size, 0.75 * size, false);
         break;
     }
-    generalObjects(random, c.world, size);
+    if (crowded) {
+      generalObjects(random, c.world, size, objects(), 0.01, 0.05);
+    } else {
+      generalObjects(random, c.world, size, objects(), 0.03, 0.2);
+    }
   }
   const double fixedFov[] = {0.25 * kPi, 0.5 * kPi, 0.75 * kPi, kPi - 1e-3, 0.3};
   c.halfFov =

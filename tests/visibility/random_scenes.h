@@ -32,8 +32,12 @@ struct Case {
   double halfFov = 0.0;
 };
 
+// How many objects a case has: a few (1–4 placements), or many (20–60 placements in a room
+// about three times as wide), where most of the scene is hidden from most viewpoints.
+enum class Crowd { Few, Many };
+
 // The randomized configuration number `index` of the suite seeded with `seed`.
-Case randomCase(std::uint64_t seed, std::uint64_t index);
+Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd = Crowd::Few);
 
 // A point where Algorithm 2 would compute a visibility polygon: anywhere, on a target's
 // boundary, at a vertex, or on the boundary.

@@ -59,9 +59,9 @@ TEST(Allocations, SteadyStateQueriesAllocateNothing) {
         {random.uniform(-1.0, 21.0), random.uniform(-1.0, 21.0), random.uniform(-3.2, 3.2)});
     points.push_back(testing::randomViewpoint(random, c.world));
   }
-  // Swept whole (a small scene), and in windows forced down to a few pieces.
-  for (const Windowing windowing : {Windowing{}, Windowing{0, 4}}) {
-    Sweep sweep(windowing);
+  // Swept whole (a small scene), and culled first on a fine grid.
+  for (const Culling culling : {Culling{}, Culling{0, 16.0}}) {
+    Sweep sweep(culling);
     std::vector<Segment> segments;
     geometry::Ring polygon;
     const auto runAll = [&] {
@@ -78,9 +78,9 @@ TEST(Allocations, SteadyStateQueriesAllocateNothing) {
     const long before = allocations.load();
     EXPECT_GT(before - start, 0) << "the counting operator new is not in use";
     runAll();
-    EXPECT_EQ(allocations.load() - before, 0) << "windowing from " << windowing.fromPieces;
-    if (windowing.fromPieces == 0) {
-      EXPECT_GT(sweep.counts().kept, 0u);
+    EXPECT_EQ(allocations.load() - before, 0) << "culling from " << culling.fromPieces;
+    if (culling.fromPieces == 0) {
+      EXPECT_GT(sweep.counts().chainsLeftOut, 0u);
     }
   }
 }
