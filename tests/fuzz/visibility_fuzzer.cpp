@@ -7,6 +7,9 @@
 //    reference::visibleIntervals within the conditioning bound of docs/visibility.md;
 //  - the omnidirectional visibility polygon (Algorithm 2's sampler) of one more decoded
 //    point is finite and has the reference's area (the tolerance of test_visibility_polygon).
+// Four inputs in five sweep culled first (OcclusionCulling) however small the scene, on grids
+// of 0.25 to 16 cells per chain (chosen by the input's length, so decoding is unchanged); the
+// fifth sweeps whole.
 // Coordinates are mostly small integers times a power of two, so that collinear vertices,
 // shared edges, cameras on supporting lines and vertices on field-of-view rays come up all
 // the time and stay exact at every scale (2^-20 ≈ 1e-6 to 2^20 ≈ 1e6).
@@ -286,7 +289,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const visibility::testing::Case c = decoder.decode();
   const Vec2 viewpoint = decoder.viewpoint(c.world);
   const visibility::Occluders occluders(c.world);
-  visibility::Sweep sweep;
+  const double cellsPerChain[] = {0.25, 1.0, 4.0, 16.0};
+  visibility::Sweep sweep(size % 5 == 0 ? visibility::Culling{UINT32_MAX}
+                                        : visibility::Culling{0, cellsPerChain[size % 5 - 1]});
   std::vector<visibility::Segment> segments;
   sweep.segments(occluders, c.cameras, c.halfFov, segments);
   const std::uint64_t cameraBits =
