@@ -13,7 +13,8 @@
 
 namespace camcov::visibility {
 
-// The pseudo-angle of d as a 32-bit fixed-point number. A quantum, 2^-30, dwarfs the
+// The pseudo-angle of d as a 32-bit fixed-point number (16-byte events, and the radix sort's
+// digits for free). A quantum, 2^-30, dwarfs the
 // pseudo-angle's rounding error (~1e-15), so keys two quanta apart order their directions
 // correctly; closer ones need geometry::compareAngle().
 inline std::uint32_t quantizedAngle(geometry::Vec2 d) {
