@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "geometry/predicates.h"
 #include "geometry/ring.h"
@@ -34,22 +35,28 @@ struct KeyArc {
   std::uint32_t end() const { return start + width; }
 };
 
-// The arc a box spans seen from p outside it: between its extreme corners, less than π. In
-// offsets from the first corner's key taken as signed, the four corners lie within (−π, π), so
-// the least and the greatest bound the arc. Empty when p is so near the box that the arc comes
-// within a few quanta of π, where rounding could not tell the two ways round apart.
-inline std::optional<KeyArc> boxArc(const geometry::Box& box, geometry::Vec2 p) {
-  const geometry::Vec2 corners[4] = {
-      box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
-  const std::uint32_t reference = quantizedAngle(corners[0] - p);
+// The arc holding every direction from p to `points` when they lie within less than π of
+// each other (a box or a ring seen from outside its box): in offsets from the first point's
+// key taken as signed, they all lie within (−π, π), so the least and the greatest bound the
+// arc. Empty when the arc comes within a few quanta of π, where rounding could not tell the
+// two ways round apart.
+inline std::optional<KeyArc> pointsArc(std::span<const geometry::Vec2> points, geometry::Vec2 p) {
+  const std::uint32_t reference = quantizedAngle(points[0] - p);
   std::int64_t lo = 0, hi = 0;
-  for (int i = 1; i < 4; ++i) {
-    const auto offset = static_cast<std::int32_t>(quantizedAngle(corners[i] - p) - reference);
+  for (const geometry::Vec2 point : points.subspan(1)) {
+    const auto offset = static_cast<std::int32_t>(quantizedAngle(point - p) - reference);
     lo = std::min<std::int64_t>(lo, offset);
     hi = std::max<std::int64_t>(hi, offset);
   }
   if (hi - lo >= kHalfTurn - 8) return std::nullopt;
   return KeyArc{reference + static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi - lo)};
+}
+
+// The arc a box spans seen from p outside it: between its extreme corners, less than π.
+inline std::optional<KeyArc> boxArc(const geometry::Box& box, geometry::Vec2 p) {
+  const geometry::Vec2 corners[4] = {
+      box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  return pointsArc(corners, p);
 }
 
 }  // namespace camcov::visibility

@@ -155,21 +155,14 @@ void OcclusionCulling::keep(std::uint32_t c) {
 }
 
 void OcclusionCulling::lowerBySilhouette(const Chain& chain) {
-  // Seen from outside its box, the ring lies within an arc of less than π, so offsets from its
-  // first vertex's key taken as signed bound its directions.
+  // Seen from outside its box, the ring lies within an arc of less than π.
   const std::span<const Vec2> vertices = occluders_->vertices().subspan(chain.first, chain.count);
-  const std::uint32_t reference = quantizedAngle(vertices[0] - p_);
-  std::int64_t lo = 0, hi = 0;
+  const std::optional<KeyArc> arc = pointsArc(vertices, p_);
+  if (!arc) return lowerByPieces(chain);
   double farthest2 = 0.0;
-  for (const Vec2 v : vertices) {
-    const auto offset = static_cast<std::int32_t>(quantizedAngle(v - p_) - reference);
-    lo = std::min<std::int64_t>(lo, offset);
-    hi = std::max<std::int64_t>(hi, offset);
+  for (const Vec2 v : vertices)
     farthest2 = std::max(farthest2, norm2(v - p_));
-  }
-  if (hi - lo >= kHalfTurn - 8) return lowerByPieces(chain);
-  lower({reference + static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi - lo)},
-        farthest2);
+  lower(*arc, farthest2);
 }
 
 void OcclusionCulling::lowerByPieces(const Chain& chain) {
