@@ -37,11 +37,9 @@ double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   return distance(p, closestPointOnSegment(p, a, b));
 }
 
-namespace {
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   return norm2(p - closestPointOnSegment(p, a, b));
 }
-}  // namespace
 
 double distanceBetweenSegments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segmentsIntersect(a, b, c, d)) return 0.0;

@@ -22,6 +22,7 @@ enum class Containment { Outside, OnBoundary, Inside };
 Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance = 1e-9);
 
 double distanceToSegment(Vec2 p, Vec2 a, Vec2 b);
+double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b);
 Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b);
 // The point of the ring's boundary closest to p.
 Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p);
@@ -61,6 +62,10 @@ Box boundingBox(std::span<const Vec2> ring);
 // Closed boxes: sharing a side or a corner counts as overlapping, a point on a side as inside.
 inline bool overlaps(const Box& a, const Box& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+// The box grown by `margin` on every side.
+inline Box grown(const Box& box, double margin) {
+  return {{box.min.x - margin, box.min.y - margin}, {box.max.x + margin, box.max.y + margin}};
 }
 inline bool contains(const Box& box, Vec2 p) {
   return box.min.x <= p.x && p.x <= box.max.x && box.min.y <= p.y && p.y <= box.max.y;

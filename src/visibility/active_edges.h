@@ -34,8 +34,9 @@ class ActiveEdges {
   void insertWedge(std::uint32_t id);
   // Inserts an edge at its first vertex, edge.s.
   void insertAt(std::uint32_t id, const Edge& edge);
-  // Inserts an edge next to `sibling`, which starts at the same vertex: no other edge passes
-  // through that vertex, so nothing can lie between them and the search is skipped.
+  // Inserts an edge next to `sibling`, which starts at the same vertex. Only valid when no other
+  // edge passes through or starts at that vertex: then nothing can lie between them and the
+  // search is skipped.
   void insertBeside(std::uint32_t id, const Edge& edge, std::uint32_t sibling);
   void erase(std::uint32_t id);
   // Puts newId where oldId was, in O(1): valid when newId starts at the vertex where oldId

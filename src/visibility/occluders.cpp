@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 
 #include "geometry/predicates.h"
 
@@ -74,10 +75,10 @@ void Occluders::build(const kinematics::World& world) {
     addRing(world.targets[i], RingKind::Target, static_cast<std::uint32_t>(i));
 
   findSplits();
+  unifyCoincidentSplits();
   std::sort(splits_.begin(), splits_.end(), [](const Split& x, const Split& y) {
     return x.edge != y.edge ? x.edge < y.edge : x.t < y.t;
   });
-  unifyCollinearSplits();
   buildChains();
   findTwins();
 }
@@ -117,8 +118,8 @@ void Occluders::addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t
 }
 
 void Occluders::findSplits() {
-  // Sweep and prune on the rings' boxes: sorted by left side, each ring meets only the rings
-  // that start before it ends.
+  // Sweep and prune on the rings' boxes, grown by ε (a vertex within ε of an edge touches it):
+  // sorted by left side, each ring meets only the rings that start before it ends.
   const auto rings = static_cast<std::uint32_t>(inRings_.size());
   ringOrder_.resize(rings);
   for (std::uint32_t i = 0; i < rings; ++i)
@@ -127,7 +128,7 @@ void Occluders::findSplits() {
     return inChains_[a].box.min.x < inChains_[b].box.min.x;
   });
   for (std::uint32_t i = 0; i < rings; ++i) {
-    const Box& a = inChains_[ringOrder_[i]].box;
+    const Box a = geometry::grown(inChains_[ringOrder_[i]].box, tolerance_);
     for (std::uint32_t j = i + 1; j < rings && inChains_[ringOrder_[j]].box.min.x <= a.max.x; ++j) {
       if (geometry::overlaps(a, inChains_[ringOrder_[j]].box))
         intersectRings(ringOrder_[i], ringOrder_[j]);
@@ -145,10 +146,10 @@ void Occluders::intersectRings(std::uint32_t ringA, std::uint32_t ringB) {
         out.push_back(e);
     }
   };
-  collect(ringA, inChains_[ringB].box, candidatesA_);
-  collect(ringB, inChains_[ringA].box, candidatesB_);
+  collect(ringA, geometry::grown(inChains_[ringB].box, tolerance_), candidatesA_);
+  collect(ringB, geometry::grown(inChains_[ringA].box, tolerance_), candidatesB_);
   for (const std::uint32_t e : candidatesA_) {
-    const Box be = segmentBox(inVertices_[e], inVertices_[inNext_[e]]);
+    const Box be = geometry::grown(segmentBox(inVertices_[e], inVertices_[inNext_[e]]), tolerance_);
     for (const std::uint32_t f : candidatesB_) {
       if (geometry::overlaps(be, segmentBox(inVertices_[f], inVertices_[inNext_[f]])))
         intersectEdges(e, f);
@@ -159,40 +160,35 @@ void Occluders::intersectRings(std::uint32_t ringA, std::uint32_t ringB) {
 void Occluders::intersectEdges(std::uint32_t e, std::uint32_t f) {
   const Vec2 a = inVertices_[e], b = inVertices_[inNext_[e]];
   const Vec2 c = inVertices_[f], d = inVertices_[inNext_[f]];
-  const int oc = geometry::orientSign(a, b, c), od = geometry::orientSign(a, b, d);
-  if (oc == 0 && od == 0) {
-    // Collinear: each is split at the other's endpoints that fall inside it (addSplit ignores
-    // the rest), so the overlap becomes pieces with identical endpoints.
-    addSplit(e, c, true);
-    addSplit(e, d, true);
-    addSplit(f, a, true);
-    addSplit(f, b, true);
+  // An endpoint within ε of the other edge lies on it: the edge is split there, at the vertex
+  // itself. Exact orientation alone would let a vertex an ulp off an edge pass it by, and the
+  // sweep would then find the vertex's pieces and that edge crossing by a hair.
+  const double eps2 = tolerance_ * tolerance_;
+  const bool cOnE = geometry::squaredDistanceToSegment(c, a, b) <= eps2;
+  const bool dOnE = geometry::squaredDistanceToSegment(d, a, b) <= eps2;
+  const bool aOnF = geometry::squaredDistanceToSegment(a, c, d) <= eps2;
+  const bool bOnF = geometry::squaredDistanceToSegment(b, c, d) <= eps2;
+  if (cOnE) addSplit(e, c, true);
+  if (dOnE) addSplit(e, d, true);
+  if (aOnF) addSplit(f, a, true);
+  if (bOnF) addSplit(f, b, true);
+  if (cOnE + dOnE + aOnF + bOnF >= 2) {
+    // They run along each other between two such endpoints (or merely share one): the pieces
+    // there now have the same endpoints, and findTwins() looks for them.
     collinearPairs_.push_back(std::uint64_t{e} << 32 | f);
     return;
   }
-  const int oa = geometry::orientSign(c, d, a), ob = geometry::orientSign(c, d, b);
-  if (oc * od > 0 || oa * ob > 0) return;  // one lies strictly on one side of the other
-  // They touch or cross at one point. If an endpoint lies on the other edge, that endpoint is
-  // the point, exactly.
-  if (oc == 0) return addSplit(e, c, true);
-  if (od == 0) return addSplit(e, d, true);
-  if (oa == 0) return addSplit(f, a, true);
-  if (ob == 0) return addSplit(f, b, true);
-  // A proper crossing. The parameter as a ratio of distances to the other line stays in
-  // [0, 1] and well conditioned. A crossing within ε of an endpoint becomes that endpoint, so
-  // both chains share one exact vertex instead of two nearly equal ones.
+  // Otherwise they may still cross properly, even with one endpoint touching (a sliver at a
+  // tiny angle); a crossing within ε of that endpoint is dropped by addSplit on the edge it
+  // ends and merged into the endpoint's split on the other.
+  if (geometry::orientSign(a, b, c) * geometry::orientSign(a, b, d) >= 0) return;
+  if (geometry::orientSign(c, d, a) * geometry::orientSign(c, d, b) >= 0) return;
+  // The parameter as a ratio of distances to the other line stays in [0, 1] and well
+  // conditioned.
   const double da = geometry::orient(c, d, a), db = geometry::orient(c, d, b);
-  Vec2 x = lerp(a, b, std::clamp(da / (da - db), 0.0, 1.0));
-  bool exact = false;
-  for (const Vec2 v : {a, b, c, d}) {
-    if (norm2(x - v) <= tolerance_ * tolerance_) {
-      x = v;
-      exact = true;
-      break;
-    }
-  }
-  addSplit(e, x, exact);
-  addSplit(f, x, exact);
+  const Vec2 x = lerp(a, b, std::clamp(da / (da - db), 0.0, 1.0));
+  addSplit(e, x, false);
+  addSplit(f, x, false);
 }
 
 void Occluders::addSplit(std::uint32_t edge, Vec2 point, bool exact) {
@@ -204,32 +200,60 @@ void Occluders::addSplit(std::uint32_t edge, Vec2 point, bool exact) {
   splits_.push_back({edge, t, point, exact});
 }
 
-void Occluders::unifyCollinearSplits() {
-  // An edge crossing a family of collinear overlapping edges meets each at "the same" point,
-  // but computed from different endpoints, so the points differ by an ulp or so; unify them so
-  // the overlapping pieces come out identical. Unifying one pair can make another pair
-  // differ, hence the repetition; two or three passes settle any real configuration.
+void Occluders::unifyCoincidentSplits() {
+  // Where several edges cross at (nearly) one point, every pair computes its own crossing, and
+  // the results differ by an ulp or so. Every chain through that point must take one and the
+  // same vertex there: pieces meeting at points an ulp apart cross each other by a hair, and
+  // the sweep's order of active edges breaks at such a point (three rings crossing at one
+  // point hid a target behind an obstacle it is in front of). So splits closer than ε are
+  // grouped, transitively, over the whole arrangement, and each group takes the point that
+  // preferred() picks among its members. Neighbours are found in a grid of ε-cells: sorted
+  // by cell, each split looks into its own cell and the four after it.
+  const auto count = static_cast<std::uint32_t>(splits_.size());
   const double eps2 = tolerance_ * tolerance_;
-  auto range = [this](std::uint32_t edge) {
-    return std::equal_range(splits_.begin(), splits_.end(), Split{edge, 0.0, {}, false},
-                            [](const Split& x, const Split& y) { return x.edge < y.edge; });
+  splitCells_.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Vec2 q = (splits_[i].point - box_.min) / tolerance_;
+    splitCells_[i] = {static_cast<std::int64_t>(std::floor(q.x)),
+                      static_cast<std::int64_t>(std::floor(q.y)), i};
+  }
+  std::sort(splitCells_.begin(), splitCells_.end());
+  splitGroup_.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i)
+    splitGroup_[i] = i;
+  const auto root = [this](std::uint32_t x) {
+    while (splitGroup_[x] != x)
+      x = splitGroup_[x] = splitGroup_[splitGroup_[x]];
+    return x;
   };
-  bool changed = true;
-  for (int pass = 0; changed && pass < 8; ++pass) {
-    changed = false;
-    for (const std::uint64_t pair : collinearPairs_) {
-      const auto re = range(static_cast<std::uint32_t>(pair >> 32));
-      const auto rf = range(static_cast<std::uint32_t>(pair));
-      for (auto s = re.first; s != re.second; ++s) {
-        for (auto r = rf.first; r != rf.second; ++r) {
-          if (s->point == r->point || norm2(s->point - r->point) > eps2) continue;
-          const Split& keep = preferred(s->point, s->exact, r->point, r->exact) ? *s : *r;
-          s->point = r->point = keep.point;
-          s->exact = r->exact = keep.exact;
-          changed = true;
-        }
-      }
+  const auto joinWithin = [&](std::uint32_t i, std::int64_t cx, std::int64_t cy0, std::int64_t cy1,
+                              auto from) {
+    const SplitCell low{cx, cy0, 0};
+    for (auto it = std::lower_bound(from, splitCells_.end(), low);
+         it != splitCells_.end() && it->x == cx && it->y <= cy1; ++it) {
+      if (it->split == i || norm2(splits_[it->split].point - splits_[i].point) > eps2) continue;
+      splitGroup_[root(it->split)] = root(i);
     }
+  };
+  for (auto cell = splitCells_.begin(); cell != splitCells_.end(); ++cell) {
+    // Cells are ε wide, so a neighbour closer than ε is at most one cell away; the cells before
+    // this one in the order have already looked at it.
+    joinWithin(cell->split, cell->x, cell->y, cell->y + 1, cell + 1);
+    joinWithin(cell->split, cell->x + 1, cell->y - 1, cell->y + 1, cell + 1);
+  }
+  // Each group's point: the member preferred over all others, then copied to every member.
+  for (std::uint32_t i = 0; i < count; ++i) {
+    Split& best = splits_[root(i)];
+    const Split& s = splits_[i];
+    if (preferred(s.point, s.exact, best.point, best.exact)) {
+      best.point = s.point;
+      best.exact = s.exact;
+    }
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Split& best = splits_[root(i)];
+    splits_[i].point = best.point;
+    splits_[i].exact = best.exact;
   }
 }
 
@@ -251,7 +275,7 @@ void Occluders::buildChains() {
       bool lastExact = true;  // the input vertex itself
       for (; split != splits_.end() && split->edge == e; ++split) {
         // Several edges crossing at (nearly) one point give one vertex, chosen by the same
-        // rule as in unifyCollinearSplits().
+        // rule as in unifyCoincidentSplits().
         if (norm2(split->point - vertices_.back()) <= eps2) {
           if (t0_.back() > 0.0 &&
               preferred(split->point, split->exact, vertices_.back(), lastExact)) {

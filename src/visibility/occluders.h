@@ -10,6 +10,7 @@
 // become identical pieces; one of them stands for all ("twins"), so a target edge lying on an
 // obstacle's edge or on the boundary is seen as the definition says (the open segment from
 // the camera crosses no edge). Each ring is assumed simple, as the scene loader checks.
+#include <compare>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -115,13 +116,19 @@ class Occluders {
   struct InputRing {
     std::uint32_t first, count;
   };
+  // A split's cell in a grid of ε-squares over the World's box, for finding its neighbours.
+  struct SplitCell {
+    std::int64_t x, y;
+    std::uint32_t split;
+    auto operator<=>(const SplitCell&) const = default;
+  };
 
   void addRing(const geometry::Ring& ring, RingKind kind, std::uint32_t owner);
   void findSplits();
   void intersectRings(std::uint32_t ringA, std::uint32_t ringB);
   void intersectEdges(std::uint32_t e, std::uint32_t f);
   void addSplit(std::uint32_t edge, geometry::Vec2 point, bool exact);
-  void unifyCollinearSplits();
+  void unifyCoincidentSplits();
   void buildChains();
   void findTwins();
   std::uint32_t findTwinRoot(std::uint32_t piece);
@@ -136,6 +143,8 @@ class Occluders {
   std::vector<std::uint32_t> candidatesA_, candidatesB_;
   std::vector<Split> splits_;
   std::vector<std::uint64_t> collinearPairs_;  // input edges that overlap along a line
+  std::vector<SplitCell> splitCells_;
+  std::vector<std::uint32_t> splitGroup_;  // union-find over splits closer than ε
 
   // Output arrangement.
   std::vector<Chain> chains_;

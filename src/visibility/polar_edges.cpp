@@ -17,12 +17,6 @@ namespace {
 
 constexpr std::uint8_t kTouching = 8;  // replaced by a blocked wedge
 
-double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double u = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
-  return norm2(p - lerp(a, b, u));
-}
-
 }  // namespace
 
 void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
@@ -215,7 +209,7 @@ bool PolarEdges::classifyNearChain(const Chain& chain) {
   for (std::uint32_t k = 0; k < count; ++k) {
     const std::uint32_t kn = k + 1 == count ? 0 : k + 1;
     const Vec2 a = vertex(first + k), b = vertex(first + kn);
-    if (!near_[k] && !near_[kn] && squaredDistanceToSegment(p_, a, b) <= eps2_) {
+    if (!near_[k] && !near_[kn] && geometry::squaredDistanceToSegment(p_, a, b) <= eps2_) {
       // On the piece's interior: its solid side is a half-plane at distance zero.
       touching = true;
       state_[first + k] = kTouching;

@@ -88,14 +88,16 @@ void PolarSweep::apply(const PolarEdges& edges, std::span<const PolarEdges::Even
       leave = true;
     }
   }
+  // Both pieces of a vertex facing the viewpoint start there: the second goes beside the first
+  // without a search, unless other events share the ray. Rings touching at that vertex would
+  // start pieces there too, and those may belong between the two.
+  const bool alone = batch.size() == 1;
   for (const E::Event& e : batch) {
     if (e.kind == EventKind::Vertex) {
-      // Both pieces of a vertex facing the viewpoint start there: the second goes beside the
-      // first without a search.
       const bool before = (e.actions & E::kInsertBefore) != 0;
       if (before) active_.insertAt(e.before, beforeEdge(e));
       if (e.actions & E::kInsertAfter) {
-        if (before) {
+        if (before && alone) {
           active_.insertBeside(e.ref, afterEdge(e), e.before);
         } else {
           active_.insertAt(e.ref, afterEdge(e));

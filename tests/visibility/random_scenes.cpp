@@ -264,6 +264,66 @@ Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd) {
   return c;
 }
 
+Case concurrentCase(std::uint64_t seed, std::uint64_t index) {
+  Random random(seed ^ (index * 0x9fb21c651e98df25ull));
+  Case c;
+  const double size = 20.0;
+  c.world.boundary = random.chance(0.5) ? rectangle(0, 0, size, size)
+                                        : convexPolygon(random, {0.5 * size, 0.5 * size},
+                                                        random.integer(3, 8), 0.75 * size);
+  const int hubs = random.integer(1, 3);
+  std::vector<Vec2> hubPoints;
+  for (int h = 0; h < hubs; ++h) {
+    // Anywhere, or on a boundary edge so that the boundary passes through the hub as well.
+    const std::size_t i =
+        static_cast<std::size_t>(random.integer(0, static_cast<int>(c.world.boundary.size()) - 1));
+    const Vec2 x = random.chance(0.3) ? lerp(c.world.boundary[i],
+                                             c.world.boundary[(i + 1) % c.world.boundary.size()],
+                                             random.uniform(0.2, 0.8))
+                                      : Vec2{random.uniform(0.15 * size, 0.85 * size),
+                                             random.uniform(0.15 * size, 0.85 * size)};
+    hubPoints.push_back(x);
+    const int rings = random.integer(2, 4);
+    for (int r = 0; r < rings; ++r) {
+      // A triangle with its edge a → b through x (as far as rounding a and b allows) and its
+      // apex to one side; now and then with x itself as a vertex instead of b, exactly.
+      const Vec2 u = geometry::unitVector(random.uniform(0.0, 2.0 * kPi));
+      const Vec2 n{-u.y, u.x};
+      const Vec2 a = x - u * random.uniform(1.0, 6.0), b = x + u * random.uniform(1.0, 6.0);
+      const Vec2 apex = x + n * random.uniform(1.0, 5.0) + u * random.uniform(-3.0, 3.0);
+      Ring ring = random.chance(0.2) ? Ring{a, x, apex} : Ring{a, b, apex};
+      geometry::normalizeRing(ring);
+      (c.world.targets.empty() || random.chance(0.6) ? c.world.targets : c.world.obstacles)
+          .push_back(ring);
+    }
+  }
+  // Cameras at a hub (on every ring through it), near one, or anywhere. Cameras a hair beside
+  // an edge are randomCase()'s business: their angles are too ill-conditioned to compare where
+  // nearly parallel edges cross nearby.
+  c.halfFov = random.uniform(0.05, kPi - 0.05);
+  const int cameras = random.integer(1, 4);
+  const geometry::Box box = geometry::boundingBox(c.world.boundary);
+  for (int j = 0; j < cameras; ++j) {
+    const Vec2 x = hubPoints[static_cast<std::size_t>(random.integer(0, hubs - 1))];
+    Vec2 p;
+    switch (random.integer(0, 2)) {
+      case 0:
+        p = x;
+        break;
+      case 1:
+        p = x + geometry::unitVector(random.uniform(0.0, 2.0 * kPi)) * random.uniform(0.05, 3.0);
+        break;
+      default:
+        p = {random.uniform(box.min.x, box.max.x), random.uniform(box.min.y, box.max.y)};
+        break;
+    }
+    const double yaw = p == x ? random.uniform(-kPi, kPi)
+                              : std::atan2(x.y - p.y, x.x - p.x) + random.uniform(-0.5, 0.5);
+    c.cameras.push_back({p.x, p.y, yaw});
+  }
+  return c;
+}
+
 Vec2 randomViewpoint(Random& random, const kinematics::World& world) {
   const geometry::Box box = geometry::boundingBox(world.boundary);
   const auto& targets = world.targets;

@@ -39,6 +39,12 @@ enum class Crowd { Few, Many };
 // The randomized configuration number `index` of the suite seeded with `seed`.
 Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd = Crowd::Few);
 
+// Edges of several rings through one point, so that every pair computes its own crossing
+// there and the results differ by ulps: 1–3 such hubs, each with 2–4 triangles (targets and
+// obstacles) and now and then the boundary passing through it; cameras at the hubs, near them
+// or anywhere.
+Case concurrentCase(std::uint64_t seed, std::uint64_t index);
+
 // A point where Algorithm 2 would compute a visibility polygon: anywhere, on a target's
 // boundary, at a vertex, or on the boundary.
 geometry::Vec2 randomViewpoint(Random& random, const kinematics::World& world);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "geometry/predicates.h"
 #include "support/small_worlds.h"
 #include "visibility/occluders.h"
 
@@ -49,6 +50,44 @@ TEST(Occluders, VertexTouchingAnEdgeSplitsThatEdge) {
   const auto target = chainVertices(o, 2);
   EXPECT_NE(std::find(target.begin(), target.end(), Vec2{2, 2}), target.end());
   EXPECT_EQ(chainVertices(o, 1).size(), 3u);
+}
+
+// The triangle (8, −1), (18, 16), (−1, 2), the obstacle (1, 0), (4, 4.5), (7, 9), (17, 13),
+// (0, 7) and the wall x = 16 all cross at (16, 12.6): each pair computes its own crossing,
+// a few ulps from the others.
+const kinematics::World kThreeRingsThroughOnePoint =
+    world(box(0, 0, 16, 16), {{{8, -1}, {18, 16}, {-1, 2}}},
+          {{{1, 0}, {4, 4.5}, {7, 9}, {17, 13}, {0, 7}}});
+
+TEST(Occluders, EdgesCrossingAtOnePointShareOneVertexThere) {
+  const Occluders o(kThreeRingsThroughOnePoint);
+  std::vector<Vec2> near;
+  for (std::size_t chain = 0; chain < 3; ++chain) {
+    int found = 0;
+    for (const Vec2 v : chainVertices(o, chain)) {
+      if (distance(v, {16, 12.6}) > 1e-9) continue;
+      ++found;
+      near.push_back(v);
+    }
+    EXPECT_EQ(found, 1) << "chain " << chain;
+  }
+  ASSERT_EQ(near.size(), 3u);
+  EXPECT_EQ(near[0], near[1]);
+  EXPECT_EQ(near[1], near[2]);
+}
+
+TEST(Occluders, VertexAnUlpOffAnEdgeStillSplitsIt) {
+  // The triangle's apex is (10/3, 1) rounded: an ulp below the quadrilateral's side from
+  // (0, 0) to (10, 3), so the triangle does not cross it, but within ε, so it touches that
+  // side and splits it.
+  const Vec2 apex{10.0 / 3.0, 1.0};
+  ASSERT_NE(geometry::orientSign({0, 0}, {10, 3}, apex), 0);
+  const Ring side{{0, 0}, {10, 3}, {10, 10}, {0, 10}};
+  const Ring below{{2, -2}, {5, -2}, apex};
+  const Occluders o(world(box(-20, -20, 20, 20), {side}, {below}));
+  const auto target = chainVertices(o, 2);
+  EXPECT_NE(std::find(target.begin(), target.end(), apex), target.end());
+  EXPECT_EQ(target.size(), 5u);
 }
 
 TEST(Occluders, TargetPiecesCoverEveryEdgeOnceFromZeroToOne) {

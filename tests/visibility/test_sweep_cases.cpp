@@ -93,6 +93,28 @@ TEST(CameraSweep, RayThroughVerticesOfTwoObjectsHandsOverCleanly) {
   }
 }
 
+TEST(CameraSweep, ThreeRingsCrossingAtOnePointHandOverCleanly) {
+  // The target's side from (8, −1) to (18, 16), the obstacle's side from (7, 9) to (17, 13)
+  // and the wall x = 16 all cross at (16, 12.6), each pair's crossing computed apart. From
+  // (15, 4), looking over [0°, 240°], the side is seen from the floor y = 0 (at x = 8 + 1/1.7)
+  // to the wall: 12.6/17 of its length √389. The obstacle lies behind it.
+  const auto s = segmentsOf(world(box(0, 0, 16, 16), {{{8, -1}, {18, 16}, {-1, 2}}},
+                                  {{{1, 0}, {4, 4.5}, {7, 9}, {17, 13}, {0, 7}}}),
+                            {{15, 4, 2 * kPi / 3}}, 2 * kPi / 3);
+  EXPECT_NEAR(seenBy(s, 0), 12.6 / 17 * std::sqrt(389.0), kTight);
+}
+
+TEST(CameraSweep, VertexAnUlpOffAnEdgeTouchesIt) {
+  // The obstacle lies inside the target, its apex (30/7, 9/7) rounded an ulp off the target's
+  // side from (10, 3) to (0, 0), towards the camera. From (5, 6) above, looking over
+  // [220°, 340°], that side is seen whole, √109, and the obstacle behind it not at all.
+  const Ring target{{0, 0}, {5, -5}, {10, 3}};
+  const Ring inside{{3.5, -1}, {5, -1}, {30.0 / 7.0, 9.0 / 7.0}};
+  const auto s =
+      segmentsOf(world(box(-20, -20, 20, 20), {target}, {inside}), {{5, 6, -4 * kPi / 9}}, kPi / 3);
+  EXPECT_NEAR(seenOf(s, 0), std::sqrt(109.0), kTight);
+}
+
 TEST(CameraSweep, CollinearConsecutiveVerticesChangeNothing) {
   // The unit square with a vertex inserted in the middle of every side: as in the first test.
   const Ring square{{0, 0}, {0.5, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0.5, 1}, {0, 1}, {0, 0.5}};

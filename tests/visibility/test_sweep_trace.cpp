@@ -153,7 +153,7 @@ TEST_F(SweepTraceInARoom, FrontAfterEachTargetCornerIsTheTargetEdgeSeenNext) {
   const TracedEvent* last = eventAt(trace_, {-6, 2});
   ASSERT_TRUE(top && hidden && bottom && last);
   EXPECT_TRUE(isEdge(top->frontAfter, RingKind::Target, 0, 1));
-  EXPECT_EQ(top->hitAfter, Vec2(-4, 4));
+  EXPECT_EQ(top->hitAfter, (Vec2{-4, 4}));
   EXPECT_EQ(top->inserted, 2);  // the right and the top side start there
   EXPECT_EQ(top->removed, 0);
   EXPECT_TRUE(isEdge(hidden->frontAfter, RingKind::Target, 0, 1));  // behind the right side
@@ -218,7 +218,7 @@ TEST(SweepTrace, CameraOnACornerSeesWedgeEventsOnTheRaysOfItsWalls) {
   EXPECT_TRUE(isEdge(t.events[2].frontAfter, RingKind::Boundary, 0, 2));  // y = 10
   for (std::size_t i = 3; i < t.events.size(); ++i) {
     EXPECT_EQ(t.events[i].frontAfter.kind, TracedEdge::Kind::Wedge) << i;
-    EXPECT_EQ(t.events[i].hitAfter, Vec2(-10, -10)) << i;
+    EXPECT_EQ(t.events[i].hitAfter, (Vec2{-10, -10})) << i;
   }
 }
 
@@ -238,8 +238,8 @@ TEST(SweepTrace, RayThroughCornersOfTwoTargetsHandsOverToTheFarTarget) {
   EXPECT_EQ(far->inserted, 1);
   EXPECT_TRUE(isEdge(near->frontAfter, RingKind::Target, 1, 3));
   EXPECT_TRUE(isEdge(far->frontAfter, RingKind::Target, 1, 3));
-  EXPECT_EQ(far->frontAfter.a, Vec2(4, 3));
-  EXPECT_EQ(far->frontAfter.b, Vec2(4, 2));
+  EXPECT_EQ(far->frontAfter.a, (Vec2{4, 3}));
+  EXPECT_EQ(far->frontAfter.b, (Vec2{4, 2}));
 }
 
 TEST(SweepTrace, CameraInsideAnObstacleIsBlindAndHasNoEvents) {
