@@ -272,22 +272,13 @@ void Occluders::buildChains() {
       vertices_.push_back(inVertices_[e]);
       inputEdgeOfPiece_.push_back(e);
       t0_.push_back(0.0);
-      bool lastExact = true;  // the input vertex itself
       for (; split != splits_.end() && split->edge == e; ++split) {
-        // Several edges crossing at (nearly) one point give one vertex, chosen by the same
-        // rule as in unifyCoincidentSplits().
-        if (norm2(split->point - vertices_.back()) <= eps2) {
-          if (t0_.back() > 0.0 &&
-              preferred(split->point, split->exact, vertices_.back(), lastExact)) {
-            vertices_.back() = split->point;
-            lastExact = split->exact;
-          }
-          continue;
-        }
+        // Several edges crossing here: their splits are one group with one point, and one
+        // vertex. A group that ended up within ε of the input vertex gives way to it.
+        if (norm2(split->point - vertices_.back()) <= eps2) continue;
         vertices_.push_back(split->point);
         inputEdgeOfPiece_.push_back(e);
         t0_.push_back(split->t);
-        lastExact = split->exact;
       }
     }
     chain.count = static_cast<std::uint32_t>(vertices_.size()) - chain.first;
