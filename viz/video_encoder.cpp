@@ -7,13 +7,13 @@
 
 #include "records/atomic_file.h"
 #include "util/input_error.h"
+#include "viz/argb_to_yuv420.h"
 #include "viz/file_extension.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/opt.h>
-#include <libswscale/swscale.h>
 }
 
 namespace camcov::viz {
@@ -45,7 +45,6 @@ struct AvDeleter {
   void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
   void operator()(AVFrame* f) const { av_frame_free(&f); }
   void operator()(AVPacket* p) const { av_packet_free(&p); }
-  void operator()(SwsContext* s) const { sws_freeContext(s); }
   void operator()(AVFormatContext* f) const {
     avio_closep(&f->pb);
     avformat_free_context(f);
@@ -78,7 +77,6 @@ struct VideoEncoder::Impl {
   AVStream* stream = nullptr;  // owned by `format`
   AvPtr<AVFrame> frame;
   AvPtr<AVPacket> packet;
-  AvPtr<SwsContext> convert;
   int frames = 0;
   bool finished = false;
 
@@ -104,11 +102,12 @@ struct VideoEncoder::Impl {
     c.framerate = {settings.fps, 1};
     c.gop_size = 5 * settings.fps;  // a keyframe every 5 s keeps seeking in a browser quick
     c.thread_count = settings.threads;
-    // Tagged as what the conversion below produces, so players do not guess the colours.
+    // Tagged as what argbToYuv420 produces, so players do not guess the colours.
     c.color_range = AVCOL_RANGE_MPEG;
     c.colorspace = AVCOL_SPC_BT709;
     c.color_primaries = AVCOL_PRI_BT709;
     c.color_trc = AVCOL_TRC_BT709;
+    c.chroma_sample_location = AVCHROMA_LOC_CENTER;  // each U, V from a 2×2 block
     if (format->oformat->flags & AVFMT_GLOBALHEADER) c.flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     AVDictionary* options = nullptr;
     av_dict_set(&options, "preset", settings.preset.c_str(), 0);
@@ -135,26 +134,13 @@ struct VideoEncoder::Impl {
     check(written, "writing the MP4 header");
   }
 
-  void prepareConversion() {
+  void prepareFrame() {
     frame = allocated(av_frame_alloc());
     frame->format = AV_PIX_FMT_YUV420P;
     frame->width = settings.width;
     frame->height = settings.height;
     check(av_frame_get_buffer(frame.get(), 0), "allocating a frame");
     packet = allocated(av_packet_alloc());
-    // AV_PIX_FMT_RGB32 is FFmpeg's name for Cairo's native-endian ARGB32 words. With
-    // SWS_FULL_CHR_H_INP libswscale reads chroma at full width with its SIMD input code and
-    // halves it with the bilinear filter; without it, it averages pixel pairs in plain C
-    // first. The same luma, chroma within half a level RMS (a wider filter at sharp edges),
-    // in 1.4 ms a 720p frame instead of 2.5 (viz/README.md).
-    constexpr int kFlags = SWS_BILINEAR | SWS_FULL_CHR_H_INP;
-    convert = allocated(sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB32,
-                                       settings.width, settings.height, AV_PIX_FMT_YUV420P, kFlags,
-                                       nullptr, nullptr, nullptr));
-    // Full-range RGB to limited-range BT.709, the HD convention browsers assume.
-    check(sws_setColorspaceDetails(convert.get(), sws_getCoefficients(SWS_CS_DEFAULT), 1,
-                                   sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16),
-          "colour conversion");
   }
 
   // Sends a frame (nullptr: end of stream) and writes every packet the encoder has ready.
@@ -189,7 +175,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& file, const VideoSetting
   m.format.reset(format);
   m.openCodec();
   m.openFile();
-  m.prepareConversion();
+  m.prepareFrame();
 }
 
 VideoEncoder::~VideoEncoder() = default;
@@ -204,9 +190,9 @@ void VideoEncoder::addFrame(const RasterImage& image) {
   }
   // The encoder may still hold the previous picture; this gives a buffer it does not use.
   check(av_frame_make_writable(m.frame.get()), "frame buffer");
-  const std::uint8_t* const planes[] = {image.pixels};
-  const int strides[] = {image.stride};
-  sws_scale(m.convert.get(), planes, strides, 0, image.height, m.frame->data, m.frame->linesize);
+  AVFrame& f = *m.frame;
+  argbToYuv420(image,
+               {{f.data[0], f.data[1], f.data[2]}, {f.linesize[0], f.linesize[1], f.linesize[2]}});
   m.frame->pts = m.frames++;
   m.encode(m.frame.get());
 }

@@ -1,7 +1,7 @@
 #pragma once
-// H.264 in MP4 through libavcodec/libavformat/libswscale (SPEC section 6): yuv420p so every
-// browser plays it, the index written at the front (+faststart) so playback starts before the
-// whole file has arrived. The FFmpeg libraries stay behind this header.
+// H.264 in MP4 through libavcodec/libavformat (SPEC section 6): yuv420p (argb_to_yuv420.h) so
+// every browser plays it, the index written at the front (+faststart) so playback starts
+// before the whole file has arrived. The FFmpeg libraries stay behind this header.
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -65,6 +65,48 @@ TEST(VideoEncoder, WritesH264Yuv420pWithOneFramePerCallAndTheIndexFirst) {
   EXPECT_LT(moov, mdat);
 }
 
+// Red, green, blue and white quadrants come back from a decoder as their BT.709
+// limited-range values (published: red 63/102/240, green 173/42/26, blue 32/240/118, white
+// 235/128/128), give or take what the lossy coding moves in the middle of a flat area.
+TEST(VideoEncoder, DecodesToTheBt709ValuesOfTheColoursDrawn) {
+  constexpr int kWidth = 64, kHeight = 48;
+  struct Quadrant {
+    std::uint32_t argb;
+    int y, u, v;
+  };
+  const Quadrant quadrants[] = {{0xffff0000u, 63, 102, 240},  // top left
+                                {0xff00ff00u, 173, 42, 26},   // top right
+                                {0xff0000ffu, 32, 240, 118},  // bottom left
+                                {0xffffffffu, 235, 128, 128}};
+  const auto quadrantOf = [&](int x, int y) {
+    return quadrants[(y < kHeight / 2 ? 0 : 2) + (x < kWidth / 2 ? 0 : 1)];
+  };
+  std::vector<std::uint32_t> pixels(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x)
+      pixels[y * kWidth + x] = quadrantOf(x, y).argb;
+  }
+  ScratchDir dir;
+  VideoEncoder encoder(dir / "quadrants.mp4", small(10));
+  encoder.addFrame(
+      {reinterpret_cast<const std::uint8_t*>(pixels.data()), kWidth, kHeight, 4 * kWidth});
+  encoder.finish();
+
+  const std::string yuv = testing::firstFrameYuv420(dir / "quadrants.mp4");
+  ASSERT_EQ(yuv.size(), std::size_t{kWidth * kHeight * 3 / 2});
+  const auto sample = [&](std::size_t offset) { return static_cast<unsigned char>(yuv[offset]); };
+  constexpr std::size_t kU = kWidth * kHeight, kV = kU + kWidth * kHeight / 4;
+  for (const int y : {kHeight / 4, 3 * kHeight / 4}) {
+    for (const int x : {kWidth / 4, 3 * kWidth / 4}) {
+      const Quadrant& q = quadrantOf(x, y);
+      const std::size_t chroma = y / 2 * (kWidth / 2) + x / 2;
+      EXPECT_NEAR(sample(y * kWidth + x), q.y, 2) << x << "," << y;
+      EXPECT_NEAR(sample(kU + chroma), q.u, 2) << x << "," << y;
+      EXPECT_NEAR(sample(kV + chroma), q.v, 2) << x << "," << y;
+    }
+  }
+}
+
 TEST(VideoEncoder, AbandonedVideoLeavesNoFileBehind) {
   ScratchDir dir;
   Frames frames(64, 48);

@@ -59,6 +59,22 @@ inline VideoFacts probeVideo(const std::filesystem::path& file) {
   return facts;
 }
 
+// The first frame of a video as ffmpeg (Debian package ffmpeg) decodes it: the yuv420p
+// planes Y, U, V one after the other, without padding.
+inline std::string firstFrameYuv420(const std::filesystem::path& file) {
+  const std::string command = "ffmpeg -v error -i '" + file.string() +
+                              "' -frames:v 1 -f rawvideo -pix_fmt yuv420p - 2>/dev/null";
+  std::string out;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    std::array<char, 4096> buffer;
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+      out.append(buffer.data(), n);
+    EXPECT_EQ(::pclose(pipe), 0) << command;
+  }
+  return out;
+}
+
 // Types of the top-level MP4 boxes in file order ("ftyp", "moov", "mdat", ...).
 inline std::vector<std::string> topLevelBoxes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

@@ -1,10 +1,11 @@
 // Frames per second of the video path at 1280x720 (issue 6 asks for at least 100 on one
-// core): FrameBuilder (world and visibility), FrameRenderer (Cairo), VideoEncoder (swscale
-// and libx264 with one thread).
+// core): FrameBuilder (world and visibility), FrameRenderer (Cairo), VideoEncoder (colour
+// conversion and libx264 with one thread).
 // Replay/<scene> is what `camcov video` does per frame: the scene's paper-method run (seed 1,
 // the default parameters, 30 s, simulated before timing) replayed step after step, round and
 // round, each step built, drawn and encoded. Build/, Rasterize/ and Encode/dynamic9 are the
-// parts, on frames whose cameras turn in place (no run needed).
+// parts, on frames whose cameras turn in place (no run needed); Convert/dynamic9/* is the
+// colour conversion alone, ours and libswscale's.
 // items_per_second is frames per CPU second of the whole process. Pin it to one core, and
 // repeat it on a shared machine:
 //   taskset -c 0 build/viz/bench/bench_viz --benchmark_repetitions=3
@@ -23,10 +24,15 @@
 #include "control/paper_controller.h"
 #include "records/run_record.h"
 #include "scene/scene_loader.h"
+#include "viz/argb_to_yuv420.h"
 #include "viz/frame.h"
 #include "viz/frame_renderer.h"
 #include "viz/run_replay.h"
 #include "viz/video_encoder.h"
+
+extern "C" {
+#include <libswscale/swscale.h>
+}
 
 namespace camcov::viz {
 namespace {
@@ -95,25 +101,63 @@ void rasterize(benchmark::State& state, const scene::Scene& scene) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// Cycles through 100 distinct frames rendered beforehand: x264 codes repeated frames for free.
+// 100 distinct frames of `scene` rendered beforehand (its cameras turning in place).
+class RenderedFrames {
+ public:
+  RenderedFrames(const scene::Scene& scene, const VideoSettings& settings) {
+    FrameBuilder builder(scene);
+    FrameRenderer renderer(settings.width, settings.height);
+    Frame frame;
+    for (int k = 0; k < 100; ++k) {
+      builder.build(k * kDt, posesAt(scene, k * kDt), frame);
+      image_ = renderer.rasterize(frame);
+      frames_.emplace_back(image_.pixels, image_.pixels + image_.stride * image_.height);
+    }
+  }
+  // The next frame, round and round.
+  RasterImage next() {
+    image_.pixels = frames_[k_++ % frames_.size()].data();
+    return image_;
+  }
+
+ private:
+  std::vector<std::vector<std::uint8_t>> frames_;
+  RasterImage image_;
+  std::size_t k_ = 0;
+};
+
+// Colour conversion and libx264: x264 codes repeated frames for free, hence distinct frames.
 void encode(benchmark::State& state, const scene::Scene& scene) {
   const VideoSettings settings;
-  FrameBuilder builder(scene);
-  FrameRenderer renderer(settings.width, settings.height);
-  Frame frame;
-  std::vector<std::vector<std::uint8_t>> frames;
-  RasterImage image;
-  for (int k = 0; k < 100; ++k) {
-    builder.build(k * kDt, posesAt(scene, k * kDt), frame);
-    image = renderer.rasterize(frame);
-    frames.emplace_back(image.pixels, image.pixels + image.stride * image.height);
-  }
+  RenderedFrames frames(scene, settings);
   VideoEncoder encoder(scratchVideo(), settings);
-  std::size_t k = 0;
+  for (auto _ : state)
+    encoder.addFrame(frames.next());
+  state.SetItemsProcessed(state.iterations());
+}
+
+// The colour conversion alone: argbToYuv420, and libswscale's conversion to the same picture
+// (exact 2×2 chroma averaging, BT.709 limited range) that it replaced.
+void convert(benchmark::State& state, const scene::Scene& scene, bool libswscale) {
+  const VideoSettings settings;
+  RenderedFrames frames(scene, settings);
+  const int w = settings.width, h = settings.height;
+  std::vector<std::uint8_t> y(w * h), u(w * h / 4), v(w * h / 4);
+  const Yuv420Picture picture{{y.data(), u.data(), v.data()}, {w, w / 2, w / 2}};
+  SwsContext* sws = sws_getContext(w, h, AV_PIX_FMT_RGB32, w, h, AV_PIX_FMT_YUV420P,
+                                   SWS_AREA | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);
+  sws_setColorspaceDetails(sws, sws_getCoefficients(SWS_CS_DEFAULT), 1,
+                           sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);
   for (auto _ : state) {
-    image.pixels = frames[k++ % frames.size()].data();
-    encoder.addFrame(image);
+    const RasterImage image = frames.next();
+    if (libswscale) {
+      sws_scale(sws, &image.pixels, &image.stride, 0, h, picture.planes, picture.strides);
+    } else {
+      argbToYuv420(image, picture);
+    }
+    benchmark::DoNotOptimize(y.data());
   }
+  sws_freeContext(sws);
   state.SetItemsProcessed(state.iterations());
 }
 
@@ -146,6 +190,10 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark("Rasterize/dynamic9", viz::rasterize, s)
           ->MeasureProcessCPUTime();
       benchmark::RegisterBenchmark("Encode/dynamic9", viz::encode, s)->MeasureProcessCPUTime();
+      benchmark::RegisterBenchmark("Convert/dynamic9/argbToYuv420", viz::convert, s, false)
+          ->MeasureProcessCPUTime();
+      benchmark::RegisterBenchmark("Convert/dynamic9/libswscale", viz::convert, s, true)
+          ->MeasureProcessCPUTime();
     }
   }
   benchmark::Initialize(&argc, argv);
