@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -266,19 +267,6 @@ void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& capti
   }
 }
 
-// The rows that change every frame: time and the two meters.
-void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
-  const double em = layout.em;
-  const auto line = [&](int row) { return rowBaseline(layout.captionRow(row), em); };
-  text(cr, line(2), fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
-  drawMeter(cr, line(3), "coverage", caption.coverage, kSeen, em);
-  drawMeter(cr, line(4), "utilization", caption.utilization, kView, em);
-}
-
-FrameLayout layoutFor(const Frame& frame, int width, int height) {
-  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
-}
-
 // Runs `draw` clipped to `area`: the world never runs into the panel, nor the panel into it.
 template <typename Draw>
 void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
@@ -287,6 +275,55 @@ void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
   cairo_clip(cr);
   draw();
   cairo_restore(cr);
+}
+
+// The caption rows that change every frame: time, coverage, utilization.
+enum MovingRow { kTimeRow = 2, kCoverageRow = 3, kUtilizationRow = 4 };
+constexpr MovingRow kMovingRows[] = {kTimeRow, kCoverageRow, kUtilizationRow};
+
+// A moving row's whole pixels (half an em to the left of its text, for overhanging glyphs),
+// inside the panel.
+PixelRect movingRowArea(const FrameLayout& layout, MovingRow row) {
+  const Vec2 topLeft = layout.captionRow(row) - Vec2{0.5 * layout.em, 0.0};
+  const PixelRect& panel = layout.panel;
+  const double left = std::max(std::floor(topLeft.x), panel.x);
+  const double top = std::max(std::floor(topLeft.y), panel.y);
+  const double right = std::min(std::ceil(topLeft.x + layout.columnWidth()), panel.x + panel.width);
+  const double bottom = std::min(std::ceil(topLeft.y + layout.rowHeight()), panel.y + panel.height);
+  return {left, top, std::max(right - left, 0.0), std::max(bottom - top, 0.0)};
+}
+
+// Each moving row clipped to its area, so that nothing of it lands outside movingAreas().
+void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+  const double em = layout.em;
+  for (const MovingRow row : kMovingRows) {
+    clippedTo(cr, movingRowArea(layout, row), [&] {
+      const Vec2 baseline = rowBaseline(layout.captionRow(row), em);
+      switch (row) {
+        case kTimeRow:
+          text(cr, baseline, fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
+          break;
+        case kCoverageRow:
+          drawMeter(cr, baseline, "coverage", caption.coverage, kSeen, em);
+          break;
+        case kUtilizationRow:
+          drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
+          break;
+      }
+    });
+  }
+}
+
+// Everything drawMoving() may touch: outside these a frame is its still part.
+std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
+  std::vector<PixelRect> areas{layout.worldArea};
+  for (const MovingRow row : kMovingRows)
+    areas.push_back(movingRowArea(layout, row));
+  return areas;
+}
+
+FrameLayout layoutFor(const Frame& frame, int width, int height) {
+  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
 }
 
 // A frame is drawn in two parts. The still part is what a frame shares with every other
@@ -407,17 +444,25 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
   if (!raster_) raster_ = std::make_unique<Raster>(width_, height_);
   Raster& r = *raster_;
   const FrameLayout layout = layoutOf(frame);
-  if (!r.stillKey || !r.stillKey->matches(frame)) {
+  const bool stillRedrawn = !r.stillKey || !r.stillKey->matches(frame);
+  if (stillRedrawn) {
     r.stillKey.reset();  // until drawn, in case drawing throws
     drawStill(r.stillCr.get(), frame, layout);
     throwIfFailed(r.stillCr.get());
     r.stillKey = stillKeyOf(frame);
   }
   cairo_t* cr = r.cr.get();
-  // A copy, byte for byte: the same pixels as drawing the still part here.
+  // A copy, byte for byte: the same pixels as drawing the still part here. Over the previous
+  // frame on the same still part only the moving areas need it (half the frame's pixels).
   cairo_set_source_surface(cr, r.still.get(), 0.0, 0.0);
   cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
-  cairo_paint(cr);
+  if (stillRedrawn) {
+    cairo_paint(cr);
+  } else {
+    for (const PixelRect& area : movingAreas(layout))
+      cairo_rectangle(cr, area.x, area.y, area.width, area.height);
+    cairo_fill(cr);
+  }
   cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
   drawMoving(cr, frame, layout);
   throwIfFailed(cr);

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "scene/scene_loader.h"
@@ -131,17 +132,26 @@ std::vector<std::uint8_t> pixelsOf(const RasterImage& image) {
 }
 
 // The raster keeps the still part of a frame (page, floor, wall, object paths, title,
-// subtitle, legend) and draws only what moves over a copy of it: the pixels must be those of
-// a renderer that draws the frame from scratch.
+// subtitle, legend) and, over the previous frame, restores only the areas where things move
+// before drawing them: the pixels must be those of a renderer that draws the frame from
+// scratch. Also with the panel at the bottom, where the caption's rows fill more columns.
 TEST_F(TinyFrame, FrameOverTheKeptStillPartEqualsOneDrawnFromScratch) {
   Frame later;
   FrameBuilder(scene_).build(3.0, std::vector<geometry::Pose>{{-2.0, 1.0, 0.4}}, later);
   later.caption.subtitle = frame_.caption.subtitle;
-  const auto first = pixelsOf(renderer_.rasterize(frame_));
-  const auto kept = pixelsOf(renderer_.rasterize(later));
-  EXPECT_NE(kept, first);
-  FrameRenderer fresh(800, 600);
-  EXPECT_EQ(kept, pixelsOf(fresh.rasterize(later)));
+  later.caption.coverage = 0.93;  // a longer meter than the first frame's, then a shorter one
+  Frame last = later;
+  last.caption.coverage = 0.05;
+  last.caption.time = 12.5;
+  for (const auto& [width, height] : {std::pair{800, 600}, {400, 700}, {300, 300}}) {
+    FrameRenderer kept(width, height), fresh(width, height);
+    const auto first = pixelsOf(kept.rasterize(frame_));
+    const auto second = pixelsOf(kept.rasterize(later));
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second, pixelsOf(fresh.rasterize(later))) << width << "x" << height;
+    EXPECT_EQ(pixelsOf(kept.rasterize(last)), pixelsOf(fresh.rasterize(last)))
+        << width << "x" << height;
+  }
 }
 
 TEST_F(TinyFrame, StillPartIsRedrawnWhenWhatItShowsChanges) {
