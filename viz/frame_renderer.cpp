@@ -119,9 +119,13 @@ void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
   }
 }
 
-void drawViews(const Painter& p, std::span<const CameraView> cameras) {
+void drawViews(const Painter& p, std::span<const CameraView> cameras, FrameUse use) {
+  cairo_t* cr = p.cr();
+  cairo_save(cr);
+  if (use == FrameUse::Video) cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // see FrameUse
   for (const CameraView& c : cameras)
     drawView(p, c.view);
+  cairo_restore(cr);
 }
 
 // A ring with a tick in the goal's heading, as a path for the caller to stroke.
@@ -342,10 +346,10 @@ void drawStill(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
 }
 
 // Everything else, over the still part.
-void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
+void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, FrameUse use) {
   clippedTo(cr, layout.worldArea, [&] {
     const Painter painter(cr, layout.toImage, layout.em);
-    drawViews(painter, frame.cameras);
+    drawViews(painter, frame.cameras, use);
     drawObjects(painter, frame.world);
     drawSegments(painter, frame.segments);
     drawPathLabels(painter, frame.paths);
@@ -383,7 +387,7 @@ void throwIfFailed(cairo_t* cr) {
 void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
   const FrameLayout layout = layoutFor(frame, width, height);
   drawStill(cr, frame, layout);
-  drawMoving(cr, frame, layout);
+  drawMoving(cr, frame, layout, FrameUse::Still);
   throwIfFailed(cr);
 }
 
@@ -426,7 +430,8 @@ struct FrameRenderer::Raster {
   std::optional<StillKey> stillKey;  // none until the first frame
 };
 
-FrameRenderer::FrameRenderer(int width, int height) : width_(width), height_(height) {
+FrameRenderer::FrameRenderer(int width, int height, FrameUse use)
+    : width_(width), height_(height), use_(use) {
   constexpr int kMin = 16, kMax = 8192;
   if (width < kMin || width > kMax || height < kMin || height > kMax) {
     throw std::invalid_argument(
@@ -464,7 +469,7 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
     cairo_fill(cr);
   }
   cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
-  drawMoving(cr, frame, layout);
+  drawMoving(cr, frame, layout, use_);
   throwIfFailed(cr);
   cairo_surface_t* s = r.surface.get();
   cairo_surface_flush(s);

@@ -16,10 +16,18 @@ enum class ImageFormat { Png, Svg };
 // From the file's extension, .png or .svg in any case; InputError for anything else.
 ImageFormat imageFormatOf(const std::filesystem::path& file);
 
+// What the frames are for. Video frames draw the views' amber tint with aliased edges: the
+// tint is light (28 % amber on white), its edge steps are faint and hard to see once H.264
+// has coded them, and Cairo 1.16 composites an antialiased translucent fill a span at a
+// time, about three pixman calls per row of each view. That was 42 % of the instructions of
+// drawing a dynamic9 frame (viz/README.md). Everything else, and every edge of a still,
+// stays antialiased.
+enum class FrameUse { Still, Video };
+
 class FrameRenderer {
  public:
   // Frames of width × height px, each in [16, 8192]; std::invalid_argument otherwise.
-  FrameRenderer(int width, int height);
+  FrameRenderer(int width, int height, FrameUse use = FrameUse::Still);
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
@@ -41,6 +49,7 @@ class FrameRenderer {
   struct Raster;
   int width_;
   int height_;
+  FrameUse use_;
   std::unique_ptr<Raster> raster_;  // created on first use
 };
 

@@ -121,7 +121,7 @@ void RunReplay::build(std::size_t step, Frame& out) {
 std::size_t writeRunVideo(const records::RunRecord& run, const scene::Scene& scene,
                           const std::filesystem::path& file, const VideoSettings& settings) {
   RunReplay replay(run, scene);
-  FrameRenderer renderer(settings.width, settings.height);
+  FrameRenderer renderer(settings.width, settings.height, FrameUse::Video);
   VideoEncoder encoder(file, settings);
   Frame frame;
   RasterImage image;

@@ -26,8 +26,10 @@ struct VideoSettings {
   // quarter to a third off libx264's time. Weighted prediction and scene-cut search
   // (weightp=0, scenecut=0) never fire on our videos: without them size and SSIM stay the
   // same. Measured on 30 s runs (viz/README.md): files 10 % larger than with superfast and
-  // the tree alone (dynamic9 3.0 MB against 2.7 MB; static7 28 %), at the same SSIM. Since
-  // the views lost their outlines, dynamic9's video is 1.7 MB, dynamic5's 0.51, static7's 0.22.
+  // the tree alone (dynamic9 3.0 MB against 2.7 MB; static7 28 %), at the same SSIM. Now
+  // (views without outlines, aliased tint edges, exact chroma) dynamic9's video is 1.9 MB,
+  // dynamic5's 0.57, static7's 0.27. At the same size, a shorter lookahead (rc-lookahead=2,
+  // crf 22) or CAVLC (cabac=0, crf 25) gives a lower SSIM (0.9947, 0.9945 against 0.9952).
   // "ultrafast" would be faster still but 3x larger (8.5 MB), for every video a batch writes.
   std::string preset = "superfast";
   std::string x264Params = "mbtree=1:rc-lookahead=5:subme=0:b-adapt=0:weightp=0:scenecut=0";

@@ -144,7 +144,7 @@ TEST_F(TinyFrame, FrameOverTheKeptStillPartEqualsOneDrawnFromScratch) {
   last.caption.coverage = 0.05;
   last.caption.time = 12.5;
   for (const auto& [width, height] : {std::pair{800, 600}, {400, 700}, {300, 300}}) {
-    FrameRenderer kept(width, height), fresh(width, height);
+    FrameRenderer kept(width, height, FrameUse::Video), fresh(width, height, FrameUse::Video);
     const auto first = pixelsOf(kept.rasterize(frame_));
     const auto second = pixelsOf(kept.rasterize(later));
     EXPECT_NE(second, first);
@@ -162,6 +162,33 @@ TEST_F(TinyFrame, StillPartIsRedrawnWhenWhatItShowsChanges) {
   const auto kept = pixelsOf(renderer_.rasterize(other));
   FrameRenderer fresh(800, 600);
   EXPECT_EQ(kept, pixelsOf(fresh.rasterize(other)));
+}
+
+// Video frames draw the views' tint with aliased edges (FrameUse::Video): the same pixels as
+// a still but along the tint's outline, where an edge of L px touches at most about 2 L
+// pixels partly.
+TEST_F(TinyFrame, VideoFramesDifferFromStillsOnlyAlongTheViewsOutline) {
+  const auto still = pixelsOf(renderer_.rasterize(frame_));
+  FrameRenderer video(800, 600, FrameUse::Video);
+  const RasterImage image = video.rasterize(frame_);
+  const auto moving = pixelsOf(image);
+  ASSERT_EQ(moving.size(), still.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < still.size(); i += 4)
+    differing += std::memcmp(&still[i], &moving[i], 4) != 0;
+  const auto& view = frame_.cameras[0].view;
+  const FrameLayout layout = renderer_.layoutOf(frame_);
+  double outline = 0.0;  // px
+  for (std::size_t i = 0; i < view.size(); ++i)
+    outline +=
+        geometry::distance(layout.toImage(view[i]), layout.toImage(view[(i + 1) % view.size()]));
+  EXPECT_GT(differing, 0u);
+  EXPECT_LT(static_cast<double>(differing), 2.0 * outline);
+  // Well inside the tint nothing changes.
+  const Vec2 inside = layout.toImage({-1.0, 0.3});
+  const std::size_t at =
+      static_cast<std::size_t>(inside.y) * image.stride + 4 * static_cast<std::size_t>(inside.x);
+  EXPECT_EQ(std::memcmp(&still[at], &moving[at], 4), 0);
 }
 
 TEST(ImageFormat, ComesFromTheExtensionInAnyCase) {

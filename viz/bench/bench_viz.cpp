@@ -66,7 +66,7 @@ void replay(benchmark::State& state, const scene::Scene& scene) {
   const records::RunRecord run = paperRun(scene);
   const VideoSettings settings = runVideoSettings(run);
   RunReplay replay(run, scene);
-  FrameRenderer renderer(settings.width, settings.height);
+  FrameRenderer renderer(settings.width, settings.height, FrameUse::Video);
   VideoEncoder encoder(scratchVideo(), settings);
   Frame frame;
   const std::size_t frames = replay.frameCount(settings.fps);
@@ -93,7 +93,7 @@ void build(benchmark::State& state, const scene::Scene& scene) {
 
 void rasterize(benchmark::State& state, const scene::Scene& scene) {
   FrameBuilder builder(scene);
-  FrameRenderer renderer(1280, 720);
+  FrameRenderer renderer(1280, 720, FrameUse::Video);
   Frame frame;
   builder.build(10.0, posesAt(scene, 10.0), frame);
   for (auto _ : state)
@@ -106,7 +106,7 @@ class RenderedFrames {
  public:
   RenderedFrames(const scene::Scene& scene, const VideoSettings& settings) {
     FrameBuilder builder(scene);
-    FrameRenderer renderer(settings.width, settings.height);
+    FrameRenderer renderer(settings.width, settings.height, FrameUse::Video);
     Frame frame;
     for (int k = 0; k < 100; ++k) {
       builder.build(k * kDt, posesAt(scene, k * kDt), frame);
