@@ -29,20 +29,25 @@ struct VideoFacts {
   double duration = 0.0;  // s
 };
 
-// What ffprobe (Debian package ffmpeg) reports for the first video stream.
-inline VideoFacts probeVideo(const std::filesystem::path& file) {
-  const std::string command =
-      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-      "stream=codec_name,pix_fmt,width,height,nb_read_frames:format=duration -of json '" +
-      file.string() + "' 2>&1";
+// What a shell command writes to its standard output; a test failure unless it exits 0.
+inline std::string outputOf(const std::string& command) {
   std::string out;
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
     std::array<char, 4096> buffer;
     std::size_t n;
     while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
       out.append(buffer.data(), n);
-    EXPECT_EQ(::pclose(pipe), 0) << command << "\n" << out;
+    EXPECT_EQ(::pclose(pipe), 0) << command << "\n" << out.substr(0, 2000);
   }
+  return out;
+}
+
+// What ffprobe (Debian package ffmpeg) reports for the first video stream.
+inline VideoFacts probeVideo(const std::filesystem::path& file) {
+  const std::string out = outputOf(
+      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+      "stream=codec_name,pix_fmt,width,height,nb_read_frames:format=duration -of json '" +
+      file.string() + "' 2>&1");
   VideoFacts facts;
   const auto j = nlohmann::json::parse(out, nullptr, false);
   if (j.is_discarded() || !j.contains("streams") || j["streams"].empty()) {
@@ -62,17 +67,8 @@ inline VideoFacts probeVideo(const std::filesystem::path& file) {
 // The first frame of a video as ffmpeg (Debian package ffmpeg) decodes it: the yuv420p
 // planes Y, U, V one after the other, without padding.
 inline std::string firstFrameYuv420(const std::filesystem::path& file) {
-  const std::string command = "ffmpeg -v error -i '" + file.string() +
-                              "' -frames:v 1 -f rawvideo -pix_fmt yuv420p - 2>/dev/null";
-  std::string out;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    std::array<char, 4096> buffer;
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-      out.append(buffer.data(), n);
-    EXPECT_EQ(::pclose(pipe), 0) << command;
-  }
-  return out;
+  return outputOf("ffmpeg -v error -i '" + file.string() +
+                  "' -frames:v 1 -f rawvideo -pix_fmt yuv420p - 2>/dev/null");
 }
 
 // Types of the top-level MP4 boxes in file order ("ftyp", "moov", "mdat", ...).
