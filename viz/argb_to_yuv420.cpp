@@ -1,5 +1,6 @@
 #include "viz/argb_to_yuv420.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #if defined(__SSE2__)
@@ -84,9 +85,9 @@ void convertPlain(const RowPair& rows, int from, int to) {
 // SSE2 means x86, so a pixel's bytes in memory are B, G, R, A.
 class Sse2Converter {
  public:
-  int convert(const RowPair& rows, int width) const {
-    int x = 0;
-    for (; x + 8 <= width; x += 8) {
+  int convert(const RowPair& rows, int from, int to) const {
+    int x = from;
+    for (; x + 8 <= to; x += 8) {
       const __m128i top0 = load(rows.top + x), top1 = load(rows.top + x + 4);
       const __m128i bottom0 = load(rows.bottom + x), bottom1 = load(rows.bottom + x + 4);
       storeBytes8(rows.yTop + x, luma(top0), luma(top1));
@@ -156,13 +157,24 @@ class Sse2Converter {
 }  // namespace
 
 void argbToYuv420(const RasterImage& image, const Yuv420Picture& out) {
+  argbToYuv420(image, out, {0, 0, image.width, image.height});
+}
+
+void argbToYuv420(const RasterImage& image, const Yuv420Picture& out, const PixelBox& area) {
   if (image.width % 2 != 0 || image.height % 2 != 0) {
     throw std::invalid_argument("argbToYuv420: width and height must be even");
   }
+  // Out to whole 2×2 blocks: a chroma sample needs all four of its pixels.
+  const auto down = [](int v) { return v & ~1; };
+  const auto up = [](int v) { return (v + 1) & ~1; };
+  const int left = std::max(down(area.x), 0);
+  const int top = std::max(down(area.y), 0);
+  const int right = std::min(up(area.x + std::max(area.width, 0)), image.width);
+  const int bottom = std::min(up(area.y + std::max(area.height, 0)), image.height);
 #if defined(__SSE2__)
   const Sse2Converter sse2;
 #endif
-  for (int y = 0; y < image.height; y += 2) {
+  for (int y = top; y < bottom; y += 2) {
     const auto rowAt = [&](int k) {
       return reinterpret_cast<const std::uint32_t*>(image.pixels + k * image.stride);
     };
@@ -172,11 +184,11 @@ void argbToYuv420(const RasterImage& image, const Yuv420Picture& out) {
                        out.planes[0] + (y + 1) * out.strides[0],
                        out.planes[1] + y / 2 * out.strides[1],
                        out.planes[2] + y / 2 * out.strides[2]};
-    int done = 0;
+    int done = left;
 #if defined(__SSE2__)
-    done = sse2.convert(rows, image.width);
+    done = sse2.convert(rows, left, right);
 #endif
-    convertPlain(rows, done, image.width);
+    convertPlain(rows, done, right);
   }
 }
 

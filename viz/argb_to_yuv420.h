@@ -20,7 +20,12 @@ struct Yuv420Picture {
   int strides[3];           // bytes from one row to the next, per plane
 };
 
-// `image` must have an even width and height. Alpha is ignored: frames are opaque.
+// `image` must have an even width and height (std::invalid_argument otherwise). Alpha is
+// ignored: frames are opaque.
 void argbToYuv420(const RasterImage& image, const Yuv420Picture& out);
+// Only the 2×2 blocks that `area` touches (clipped to the image); every other sample of `out`
+// keeps its value. With the samples of an image that differs from this one only inside
+// `area`, the result is the whole conversion of this one.
+void argbToYuv420(const RasterImage& image, const Yuv420Picture& out, const PixelBox& area);
 
 }  // namespace camcov::viz

@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -326,6 +328,20 @@ std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
   return areas;
 }
 
+// The whole pixels `area` touches.
+PixelBox boxAround(const PixelRect& area) {
+  const int left = static_cast<int>(std::floor(area.x));
+  const int top = static_cast<int>(std::floor(area.y));
+  return {left, top, static_cast<int>(std::ceil(area.x + area.width)) - left,
+          static_cast<int>(std::ceil(area.y + area.height)) - top};
+}
+
+// Names for the images renderers return (RasterImage::serial), unique within the process.
+std::uint64_t nextSerial() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 FrameLayout layoutFor(const Frame& frame, int width, int height) {
   return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
 }
@@ -428,6 +444,8 @@ struct FrameRenderer::Raster {
   Surface still;  // the still part of the frames drawn from stillKey
   Context stillCr;
   std::optional<StillKey> stillKey;  // none until the first frame
+  std::uint64_t serial = 0;          // of the image in `surface`; 0: none, or half drawn
+  std::vector<PixelBox> changed;     // where it differs from the image before it
 };
 
 FrameRenderer::FrameRenderer(int width, int height, FrameUse use)
@@ -458,14 +476,21 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
   }
   cairo_t* cr = r.cr.get();
   // A copy, byte for byte: the same pixels as drawing the still part here. Over the previous
-  // frame on the same still part only the moving areas need it (half the frame's pixels).
+  // frame on the same still part only the moving areas need it (half the frame's pixels),
+  // and only they can differ from that frame.
+  const std::uint64_t changedSince = stillRedrawn ? 0 : r.serial;
+  r.serial = 0;  // until drawn, in case drawing throws
+  r.changed.clear();
   cairo_set_source_surface(cr, r.still.get(), 0.0, 0.0);
   cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
   if (stillRedrawn) {
     cairo_paint(cr);
+    r.changed.push_back({0, 0, width_, height_});
   } else {
-    for (const PixelRect& area : movingAreas(layout))
+    for (const PixelRect& area : movingAreas(layout)) {
       cairo_rectangle(cr, area.x, area.y, area.width, area.height);
+      r.changed.push_back(boxAround(area));
+    }
     cairo_fill(cr);
   }
   cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
@@ -473,7 +498,13 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
   throwIfFailed(cr);
   cairo_surface_t* s = r.surface.get();
   cairo_surface_flush(s);
-  return {cairo_image_surface_get_data(s), width_, height_, cairo_image_surface_get_stride(s)};
+  r.serial = nextSerial();
+  RasterImage image(cairo_image_surface_get_data(s), width_, height_,
+                    cairo_image_surface_get_stride(s));
+  image.serial = r.serial;
+  image.changedSince = changedSince;
+  image.changed = r.changed;
+  return image;
 }
 
 void FrameRenderer::write(const Frame& frame, const std::filesystem::path& file) {

@@ -38,7 +38,9 @@ class FrameRenderer {
   FrameLayout layoutOf(const Frame& frame) const;
 
   // Draws into the renderer's own raster, which is reused by the next call (the video path:
-  // no allocation per frame).
+  // no allocation per frame). Over a frame on the same still part (same scene, paths, title)
+  // the image says that only the world and the changing caption rows differ from the image
+  // before it (RasterImage::changedSince), which spares the encoder converting the rest.
   RasterImage rasterize(const Frame& frame);
 
   // Writes a PNG or an SVG, chosen by imageFormatOf(file), atomically, creating its folder

@@ -76,6 +76,9 @@ struct VideoEncoder::Impl {
   AvPtr<AVCodecContext> codec;
   AVStream* stream = nullptr;  // owned by `format`
   AvPtr<AVFrame> frame;
+  // RasterImage::serial of the image in `frame`, 0 for none: the next image, if it changed
+  // only in places since that one, is converted only there.
+  std::uint64_t converted = 0;
   AvPtr<AVPacket> packet;
   int frames = 0;
   bool finished = false;
@@ -188,11 +191,23 @@ void VideoEncoder::addFrame(const RasterImage& image) {
     throw std::invalid_argument(fmt::format("frame of {}x{} for a {}x{} video", image.width,
                                             image.height, m.settings.width, m.settings.height));
   }
-  // The encoder may still hold the previous picture; this gives a buffer it does not use.
+  // The encoder may still hold the previous picture; this gives a buffer it does not use,
+  // with the previous picture copied in.
   check(av_frame_make_writable(m.frame.get()), "frame buffer");
   AVFrame& f = *m.frame;
-  argbToYuv420(image,
-               {{f.data[0], f.data[1], f.data[2]}, {f.linesize[0], f.linesize[1], f.linesize[2]}});
+  const Yuv420Picture picture{{f.data[0], f.data[1], f.data[2]},
+                              {f.linesize[0], f.linesize[1], f.linesize[2]}};
+  if (image.serial == 0 || image.serial != m.converted) {  // else a frame held: converted
+    const bool onlyChanged = image.changedSince != 0 && image.changedSince == m.converted;
+    m.converted = 0;  // until converted, in case converting throws
+    if (onlyChanged) {
+      for (const PixelBox& area : image.changed)
+        argbToYuv420(image, picture, area);
+    } else {
+      argbToYuv420(image, picture);
+    }
+    m.converted = image.serial;
+  }
   m.frame->pts = m.frames++;
   m.encode(m.frame.get());
 }

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -202,6 +203,48 @@ TEST(ArgbToYuv420, AgreesWithLibswscaleWithinOneLevel) {
     }
   }
   sws_freeContext(sws);
+}
+
+// The encoder converts only what changed since the previous frame: over the conversion of
+// the old image, converting the new one inside `area` must give the whole conversion of the
+// new one. Areas with odd edges need the 2×2 blocks they cut into redone too, areas reaching
+// past the image are clipped, and empty ones change nothing.
+TEST(ArgbToYuv420, ConvertingAnAreaOverThePreviousImageEqualsConvertingTheWholeImage) {
+  std::mt19937 random(5);
+  constexpr int kWidth = 38, kHeight = 20;
+  const Image before = randomImage(kWidth, kHeight, random, 8);
+  for (const PixelBox area :
+       {PixelBox{3, 5, 17, 9}, PixelBox{0, 0, kWidth, kHeight}, PixelBox{21, 1, 1, 1},
+        PixelBox{-4, 13, 10, 40}, PixelBox{30, -3, 20, 6}, PixelBox{9, 9, 0, 5}}) {
+    Image after = before;
+    std::uniform_int_distribution<int> level(0, 255);
+    const int right = std::min(area.x + area.width, kWidth);
+    const int bottom = std::min(area.y + area.height, kHeight);
+    for (int y = std::max(area.y, 0); y < bottom; ++y) {
+      for (int x = std::max(area.x, 0); x < right; ++x)
+        after.set(x, y, level(random), level(random), level(random));
+    }
+    Planes updated = converted(before, 3);
+    argbToYuv420(after.raster(), updated.picture(), area);
+    const Planes whole = converted(after, 3);
+    EXPECT_EQ(updated.y, whole.y) << area.x << "," << area.y;
+    EXPECT_EQ(updated.u, whole.u) << area.x << "," << area.y;
+    EXPECT_EQ(updated.v, whole.v) << area.x << "," << area.y;
+  }
+  // Nothing outside the area's blocks is written.
+  Planes untouched(kWidth, kHeight);
+  argbToYuv420(before.raster(), untouched.picture(), {10, 4, 6, 2});
+  for (int row = 0; row < kHeight; ++row) {
+    for (int x = 0; x < kWidth; ++x) {
+      const bool inside = x >= 10 && x < 16 && row >= 4 && row < 6;
+      EXPECT_EQ(untouched.lumaAt(x, row) != 0, inside) << x << "," << row;
+      if (x < kWidth / 2 && row < kHeight / 2) {
+        const bool block = x >= 5 && x < 8 && row == 2;
+        EXPECT_EQ(untouched.uAt(x, row) != 0, block) << x << "," << row;
+        EXPECT_EQ(untouched.vAt(x, row) != 0, block) << x << "," << row;
+      }
+    }
+  }
 }
 
 TEST(ArgbToYuv420, RejectsOddSizes) {

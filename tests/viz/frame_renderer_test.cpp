@@ -154,6 +154,44 @@ TEST_F(TinyFrame, FrameOverTheKeptStillPartEqualsOneDrawnFromScratch) {
   }
 }
 
+// An image says where it may differ from the one before it (what spares the encoder a
+// conversion): checked pixel by pixel against the previous image, for the frame shapes of
+// the test above. A changed still part makes no promise.
+TEST_F(TinyFrame, ImagesDifferFromThePreviousOneOnlyWhereTheySay) {
+  Frame later;
+  FrameBuilder(scene_).build(3.0, std::vector<geometry::Pose>{{-2.0, 1.0, 0.4}}, later);
+  later.caption.subtitle = frame_.caption.subtitle;
+  later.caption.coverage = 0.93;
+  for (const auto& [width, height] : {std::pair{800, 600}, {400, 700}, {300, 300}}) {
+    FrameRenderer renderer(width, height, FrameUse::Video);
+    const RasterImage first = renderer.rasterize(frame_);
+    EXPECT_NE(first.serial, 0u);
+    EXPECT_EQ(first.changedSince, 0u);
+    const auto before = pixelsOf(first);
+    const RasterImage second = renderer.rasterize(later);
+    EXPECT_NE(second.serial, first.serial);
+    EXPECT_EQ(second.changedSince, first.serial);
+    const auto after = pixelsOf(second);
+    std::size_t differing = 0;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t at = static_cast<std::size_t>(y) * second.stride + 4 * x;
+        if (std::memcmp(&before[at], &after[at], 4) == 0) continue;
+        ++differing;
+        const bool inChanged =
+            std::any_of(second.changed.begin(), second.changed.end(), [&](const PixelBox& box) {
+              return x >= box.x && x < box.x + box.width && y >= box.y && y < box.y + box.height;
+            });
+        ASSERT_TRUE(inChanged) << "pixel " << x << "," << y << " of " << width << "x" << height;
+      }
+    }
+    EXPECT_GT(differing, 0u);
+    Frame retitled = later;
+    retitled.caption.subtitle = "another subtitle";
+    EXPECT_EQ(renderer.rasterize(retitled).changedSince, 0u);
+  }
+}
+
 TEST_F(TinyFrame, StillPartIsRedrawnWhenWhatItShowsChanges) {
   renderer_.rasterize(frame_);
   Frame other = frame_;

@@ -104,25 +104,24 @@ void rasterize(benchmark::State& state, const scene::Scene& scene) {
 // 100 distinct frames of `scene` rendered beforehand (its cameras turning in place).
 class RenderedFrames {
  public:
-  RenderedFrames(const scene::Scene& scene, const VideoSettings& settings) {
+  RenderedFrames(const scene::Scene& scene, const VideoSettings& settings)
+      : width_(settings.width), height_(settings.height) {
     FrameBuilder builder(scene);
     FrameRenderer renderer(settings.width, settings.height, FrameUse::Video);
     Frame frame;
     for (int k = 0; k < 100; ++k) {
       builder.build(k * kDt, posesAt(scene, k * kDt), frame);
-      image_ = renderer.rasterize(frame);
-      frames_.emplace_back(image_.pixels, image_.pixels + image_.stride * image_.height);
+      const RasterImage image = renderer.rasterize(frame);
+      frames_.emplace_back(image.pixels, image.pixels + image.stride * image.height);
+      stride_ = image.stride;
     }
   }
-  // The next frame, round and round.
-  RasterImage next() {
-    image_.pixels = frames_[k_++ % frames_.size()].data();
-    return image_;
-  }
+  // The next frame, round and round, as an image without history: all of it is converted.
+  RasterImage next() { return {frames_[k_++ % frames_.size()].data(), width_, height_, stride_}; }
 
  private:
   std::vector<std::vector<std::uint8_t>> frames_;
-  RasterImage image_;
+  int width_, height_, stride_ = 0;
   std::size_t k_ = 0;
 };
 
