@@ -69,12 +69,12 @@ class Painter {
   void polylinePath(std::span<const geometry::Vec2> points) const;
   void ringPath(std::span<const geometry::Vec2> ring) const;
   void linePath(geometry::Vec2 a, geometry::Vec2 b) const;
+  void lineTo(geometry::Vec2 world) const;  // continues the path
   void fill(Rgb colour, double alpha = 1.0) const;
   void stroke(Rgb colour, double widthEm, double alpha = 1.0) const;
 
  private:
   void moveTo(geometry::Vec2 world) const;
-  void lineTo(geometry::Vec2 world) const;
 
   cairo_t* cr_;
   const WorldToImage& toImage_;
