@@ -27,9 +27,10 @@ struct VideoSettings {
   // (weightp=0, scenecut=0) never fire on our videos: without them size and SSIM stay the
   // same. Measured on 30 s runs (viz/README.md): files 10 % larger than with superfast and
   // the tree alone (dynamic9 3.0 MB against 2.7 MB; static7 28 %), at the same SSIM. Now
-  // (views without outlines, aliased tint edges, exact chroma) dynamic9's video is 1.9 MB,
-  // dynamic5's 0.57, static7's 0.27. At the same size, a shorter lookahead (rc-lookahead=2,
-  // crf 22) or CAVLC (cabac=0, crf 25) gives a lower SSIM (0.9947, 0.9945 against 0.9952).
+  // (views without outlines, aliased tint edges, exact chroma, a keyframe every 10 s)
+  // dynamic9's video is 1.81 MB, dynamic5's 0.50, static7's 0.19. At the same size, a shorter
+  // lookahead (rc-lookahead=2, crf 22) or CAVLC (cabac=0, crf 25) gives a lower SSIM (0.9947,
+  // 0.9945 against 0.9952, measured with a keyframe every 5 s).
   // "ultrafast" would be faster still but 3x larger (8.5 MB), for every video a batch writes.
   std::string preset = "superfast";
   std::string x264Params = "mbtree=1:rc-lookahead=5:subme=0:b-adapt=0:weightp=0:scenecut=0";
