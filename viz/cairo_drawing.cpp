@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/ring.h"
+
 #if defined(__SANITIZE_ADDRESS__)
 // Fontconfig keeps the font patterns Cairo's text matched in a cache that only FcFini()
 // frees, and nothing calls that before exit: LeakSanitizer would report the cache as a leak
@@ -143,10 +145,7 @@ namespace {
 // 2 × by with mitred corners (Cairo's default join).
 template <std::size_t N>
 std::array<Vec2, N> grown(const std::array<Vec2, N>& polygon, double by) {
-  double twiceArea = 0.0;
-  for (std::size_t i = 0; i < N; ++i)
-    twiceArea += geometry::cross(polygon[i], polygon[(i + 1) % N]);
-  const double out = twiceArea > 0.0 ? 1.0 : -1.0;  // which side of a side is outside
+  const double out = geometry::signedArea(polygon) > 0.0 ? 1.0 : -1.0;  // outside's side
   const auto side = [&](std::size_t i) { return polygon[(i + 1) % N] - polygon[i]; };
   const auto shifted = [&](std::size_t i) {  // a point of side i moved out
     const Vec2 e = side(i);
