@@ -111,12 +111,9 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const bool seen : {false, true}) {
-    const visibility::Segment* last = nullptr;  // the one drawn before, if next to this one
+    const visibility::Segment* last = nullptr;  // the one of this colour drawn before
     for (const auto& s : segments) {
-      if ((s.visibleBy != 0) != seen) {
-        last = nullptr;
-        continue;
-      }
+      if ((s.visibleBy != 0) != seen) continue;
       if (last != nullptr && last->target == s.target && last->b == s.a) {
         p.lineTo(s.b);
       } else {
