@@ -18,10 +18,12 @@ const char* groupOf(std::string_view key) {
   if (group == "planner") return "Motion planning";
   if (group == "potential") return "Artificial potentials";
   if (group == "sim") return "Simulation";
+  if (group == "safety") return "Safety layer";
   return "Other";
 }
 
 std::string value(const params::ParamField& f, double v) {
+  if (f.boolean) return v != 0.0 ? "true" : "false";
   return f.integer ? fmt::format("{:.0f}", v) : fmt::format("{:g}", v);
 }
 

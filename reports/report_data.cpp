@@ -35,6 +35,10 @@ void foldRange(SeriesBand& band, const std::vector<double>& values, bool first) 
   }
 }
 
+bool isContact(const control::ControlEvent& e) {
+  return e.kind == "avoidable-contact" || e.kind == "unavoidable-contact";
+}
+
 MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string& scene,
                           const std::string& method, std::uint64_t seeds,
                           std::uint64_t medianSeed) {
@@ -54,6 +58,9 @@ MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string&
     for (const auto& step : run.steps) {
       coverage.push_back(step.terms.coverage);
       utilization.push_back(step.terms.utilization);
+    }
+    for (const auto& e : run.events) {
+      if (isContact(e)) runs.contacts.emplace_back(seed, e);
     }
     const bool first = runs.averageCoverage.size() == 1;
     foldRange(runs.coverage, coverage, first);

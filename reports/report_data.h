@@ -33,6 +33,9 @@ struct MethodRuns {
   SeriesBand coverage;
   SeriesBand utilization;
   std::vector<control::ControlEvent> events;  // of the median-seed run, paths dropped
+  // The start of every contact closer than δ in any seed ("avoidable-contact" and
+  // "unavoidable-contact" events), with its seed: rare, and each one worth seeing.
+  std::vector<std::pair<std::uint64_t, control::ControlEvent>> contacts;
 };
 
 enum class SceneGroup { Static, Dynamic, Other };

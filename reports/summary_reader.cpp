@@ -23,8 +23,8 @@ double numberOrInfinity(const nlohmann::json& v) {
 
 records::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source) {
   try {
-    if (j.at("format") != "camcov-summary/1") {
-      throw InputError(source + ": not a camcov summary (format camcov-summary/1)");
+    if (j.at("format") != "camcov-summary/2") {
+      throw InputError(source + ": not a camcov summary (format camcov-summary/2)");
     }
     records::BatchSummary s;
     for (const auto& m : j.at("methods")) {
@@ -38,6 +38,10 @@ records::BatchSummary summaryFromJson(const nlohmann::json& j, const std::string
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
       ms.runsWithCollision = m.at("runsWithCollision").get<int>();
+      ms.meanAvoidableContactTime = m.at("meanAvoidableContactTime").get<double>();
+      ms.meanUnavoidableContactTime = m.at("meanUnavoidableContactTime").get<double>();
+      ms.runsWithAvoidableContact = m.at("runsWithAvoidableContact").get<int>();
+      ms.runsWithUnavoidableContact = m.at("runsWithUnavoidableContact").get<int>();
       ms.minObjectDistance = numberOrInfinity(m.at("minObjectDistance"));
       ms.minCameraDistance = numberOrInfinity(m.at("minCameraDistance"));
       ms.medianSeed = m.at("medianSeed").get<std::uint64_t>();

@@ -38,13 +38,16 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
       "<td><span class=\"method-dot\" style=\"--c:{}\"></span>{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
-      "<td class=\"num\" title=\"{} of {} runs had some time below δ\">{} / {}</td>"
+      "<td class=\"num\" title=\"of which {} s near objects, {} s between cameras\">{} / {}</td>"
+      "<td class=\"num\" title=\"{} runs had an unavoidable contact\">{} / {}</td>"
       "<td class=\"num\">{} / {}</td>",
       style.color, escapeXml(m.method),
       m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
       meanSd(m.coverage, bestCoverage), number(m.coverage.median, 3),
-      meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3), m.runsWithCollision,
-      m.runs, number(m.meanObjectCollisionTime, 2), number(m.meanCameraCollisionTime, 2),
+      meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3),
+      number(m.meanObjectCollisionTime, 2), number(m.meanCameraCollisionTime, 2),
+      number(m.meanAvoidableContactTime, 2), number(m.meanUnavoidableContactTime, 2),
+      m.runsWithUnavoidableContact, m.runsWithAvoidableContact, m.runs,
       number(m.minObjectDistance, 2), number(m.minCameraDistance, 2));
 }
 
@@ -129,11 +132,13 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
       "<thead><tr>{}<th scope=\"col\" rowspan=\"2\">Method</th><th scope=\"col\" "
       "rowspan=\"2\">Runs</th><th scope=\"colgroup\" colspan=\"2\">Average coverage</th>"
       "<th scope=\"colgroup\" colspan=\"2\">Average utilization</th><th scope=\"colgroup\" "
-      "colspan=\"2\">Safety (object / camera)</th>{}{}{}</tr>\n"
+      "colspan=\"3\">Safety</th>{}{}{}</tr>\n"
       "<tr><th scope=\"col\">mean ± sd</th><th scope=\"col\">median</th><th scope=\"col\">mean ± "
       "sd</th><th scope=\"col\">median</th><th scope=\"col\" title=\"mean seconds per run closer "
-      "than δ\">time &lt; δ, s</th><th scope=\"col\" title=\"minimum over all runs\">min "
-      "distance, m</th></tr></thead>\n",
+      "than δ, measured in continuous time\">time &lt; δ, s<br>avoidable / unavoidable</th>"
+      "<th scope=\"col\" title=\"runs with time below δ that the safety layer judged "
+      "avoidable\">runs with avoidable contact</th><th scope=\"col\" title=\"minimum over all "
+      "runs, continuous time\">min distance, m<br>object / camera</th></tr></thead>\n",
       groupTitle(group), scenes, paperWins, ties, localWins, groupName(group),
       sortable("scene", "Scene"), sortable("delta", "Δ coverage"), sortable("p", "p"),
       sortable("winner", "Winner"));
@@ -147,7 +152,9 @@ std::string summarySection(const ReportData& data) {
       "<section id=\"summary\">\n<h2>Summary</h2>\n<p>Per scene and method over {} seeds: "
       "average coverage (eq. 4) and average utilization, mean ± sample standard deviation and "
       "median; safety as the mean time per run a camera spent closer than δ = {} m to an object "
-      "or to another camera, and the smallest such distance in any run. Δ is the paper's mean "
+      "or to another camera, measured in continuous time and split by the safety layer's "
+      "verdict when the contact began (unavoidable: no admissible velocity kept δ), the runs "
+      "with an avoidable contact, and the smallest distances in any run. Δ is the paper's mean "
       "coverage minus local's; p is the two-sided Mann-Whitney U test of the two samples; the "
       "winner is the better mean when p &lt; {}, else a tie. Click a column title to sort.</p>\n",
       data.manifest.seeds, data.manifest.parameters.sim.delta, records::kSignificance);

@@ -74,6 +74,11 @@ std::string trianglePoints(double cx, double baseY, double r) {
                      px(baseY - 1.6 * r));
 }
 
+std::string diamondPoints(double cx, double cy, double r) {
+  return fmt::format("{},{} {},{} {},{} {},{}", px(cx), px(cy - r), px(cx + r), px(cy), px(cx),
+                     px(cy + r), px(cx - r), px(cy));
+}
+
 std::string titleElement(std::string_view title) {
   return title.empty() ? std::string() : "<title>" + escapeXml(title) + "</title>";
 }
@@ -261,6 +266,9 @@ void Chart::addAxisMark(double value, Swatch shape, std::string_view color,
   if (shape == Swatch::Cross) {
     g += fmt::format("<path stroke=\"{}\" stroke-width=\"1.6\" d=\"{}\"/>", color,
                      crossPath(mx, bottom_ - 5.0, 4.0));
+  } else if (shape == Swatch::Diamond) {  // at the top: contacts, apart from the plan marks
+    g += fmt::format("<polygon fill=\"{}\" points=\"{}\"/>", color,
+                     diamondPoints(mx, top_ + 5.0, 4.5));
   } else {
     g += fmt::format("<polygon fill=\"{}\" points=\"{}\"/>", color,
                      trianglePoints(mx, bottom_, 4.5));
@@ -357,6 +365,10 @@ void Chart::drawLegend(std::string& out) const {
       case Swatch::Triangle:
         out += fmt::format("<polygon fill=\"{}\" points=\"{}\"/>", e.color,
                            trianglePoints(mid, ly + 4, 4.5));
+        break;
+      case Swatch::Diamond:
+        out += fmt::format("<polygon fill=\"{}\" points=\"{}\"/>", e.color,
+                           diamondPoints(mid, ly, 4.5));
         break;
       case Swatch::Plus:
       case Swatch::Cross:

@@ -52,7 +52,7 @@ struct BoxStats {
 BoxStats boxStats(std::span<const double> values);
 
 // Legend swatches and mark shapes; Plus is the paper's outlier symbol, Cross an x.
-enum class Swatch { Line, DashedLine, Band, Box, Triangle, Plus, Cross };
+enum class Swatch { Line, DashedLine, Band, Box, Triangle, Plus, Cross, Diamond };
 
 struct LegendEntry {
   std::string label;

@@ -51,6 +51,31 @@ std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const
   return out;
 }
 
+// Colours of contacts closer than δ: avoidable ones are failures of the method, in red;
+// unavoidable ones (no admissible velocity kept δ) in slate.
+constexpr std::string_view kAvoidableContact = "#d62728";
+constexpr std::string_view kUnavoidableContact = "#5b6472";
+
+// Every seed's contacts, merged per (instant, kind), as diamonds along the top.
+std::vector<std::pair<double, Mark>> contactMarks(const std::string& method,
+                                                  const MethodRuns& runs) {
+  std::map<std::pair<double, bool>, Mark> marks;  // (time, unavoidable)
+  for (const auto& [seed, e] : runs.contacts) {
+    const bool unavoidable = e.kind == "unavoidable-contact";
+    Mark& m = marks[{e.time, unavoidable}];
+    if (m.tooltip.empty()) {
+      m = {Swatch::Diamond, std::string(unavoidable ? kUnavoidableContact : kAvoidableContact),
+           fmt::format("t = {} s, {}", fixed(e.time, 2), method)};
+    }
+    m.tooltip += fmt::format("\nseed {}, {} camera {}{}: {}", seed, e.kind, e.camera + 1,
+                             e.reason.empty() ? "" : " (" + e.reason + ")", e.detail);
+  }
+  std::vector<std::pair<double, Mark>> out;
+  for (auto& [key, mark] : marks)
+    out.emplace_back(key.first, std::move(mark));
+  return out;
+}
+
 std::string chart(const SceneData& scene, const std::vector<std::string>& methods,
                   SeriesBand MethodRuns::*series, const char* label, double duration) {
   ChartSpec spec;
@@ -69,6 +94,8 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
                            std::string(methodStyle(method).color), Swatch::Line});
     for (auto& mark : eventMarks(method, it->second))
       marks.push_back(std::move(mark));
+    for (auto& mark : contactMarks(method, it->second))
+      marks.push_back(std::move(mark));
   }
   // One legend entry per mark shape, in the colour of the first method that has it.
   for (const auto& [shape, text] :
@@ -77,6 +104,12 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
       return m.second.shape == shape;
     });
     if (it != marks.end()) spec.legend.push_back({text, it->second.color, shape});
+  }
+  for (const auto& [color, text] : {std::pair{kAvoidableContact, "avoidable contact < δ"},
+                                    std::pair{kUnavoidableContact, "unavoidable contact < δ"}}) {
+    if (std::any_of(marks.begin(), marks.end(),
+                    [color = color](const auto& m) { return m.second.color == color; }))
+      spec.legend.push_back({text, std::string(color), Swatch::Diamond});
   }
   Chart c(spec);
   // Guides under the bands, bands under the lines, the first method's line on top.
@@ -127,7 +160,9 @@ std::string timeSeriesSection(const ReportData& data) {
       "average coverage is the median), and the shaded band is the range, at each step, of all "
       "seeds. Triangles on the time axis mark the median run's replans (global optimization "
       "found a pose set better by the factor τ, and paths were planned), crosses mark aborted "
-      "plans. Hover a mark for its details.</p>\n";
+      "plans. Diamonds along the top mark where a camera of any seed came closer than δ to an "
+      "object or camera (continuous time): red when the safety layer could have avoided it, "
+      "slate when no admissible velocity could. Hover a mark for its details.</p>\n";
   for (const auto& scene : data.scenes) {
     if (!scene.methods.empty()) out += sceneFigure(scene, methods, duration);
   }

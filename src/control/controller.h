@@ -24,13 +24,15 @@ struct CameraCommand {
 };
 
 // Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",
-// "plan-completed", ... (see docs of each controller).
+// "plan-completed", ... (see docs of each controller), and the simulator's
+// "unavoidable-contact" and "avoidable-contact" (the safety layer's accounting).
 struct ControlEvent {
   double time = 0.0;
   std::string kind;
   int camera = -1;                   // -1: the whole team
   std::string detail;                // human-readable
   std::vector<geometry::Pose> path;  // the planned path, for "plan" events
+  std::string reason;                // a machine-readable cause, e.g. "cornered"; may be empty
 };
 
 class Controller {

@@ -40,7 +40,7 @@ void PaperController::takeEvents(std::vector<ControlEvent>& out) {
 
 void PaperController::raise(double t, std::string kind, int camera, std::string detail,
                             std::vector<geometry::Pose> path) {
-  events_.push_back({t, std::move(kind), camera, std::move(detail), std::move(path)});
+  events_.push_back({t, std::move(kind), camera, std::move(detail), std::move(path), {}});
 }
 
 std::vector<geometry::Pose> PaperController::committedTeam(

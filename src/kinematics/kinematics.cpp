@@ -1,5 +1,8 @@
 #include "kinematics/kinematics.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "scene/deformation.h"
 
 namespace camcov::kinematics {
@@ -29,6 +32,51 @@ void Kinematics::place(const scene::MovingObject& object, const PathMotion& moti
   const ObjectPose p = pose(object, motion, t);
   scene::localShapeAt(object, t, out);
   geometry::transformRing(out, p.angle, p.reference);
+}
+
+void Kinematics::placeTarget(std::size_t i, double t, geometry::Ring& out) const {
+  place(scene_.targets.at(i), targetMotion_.at(i), t, out);
+}
+
+void Kinematics::placeObstacle(std::size_t i, double t, geometry::Ring& out) const {
+  place(scene_.obstacles.at(i), obstacleMotion_.at(i), t, out);
+}
+
+double Kinematics::speedBound(const scene::MovingObject& object) {
+  // A world point is r(t) + R(ωt)·q(t): its velocity r' + ω R'(ωt) q + R q' is bounded by
+  // v + |ω|·|q| + |q'|. Interpolated shapes are convex combinations of the keyframes, so
+  // |q| is at most the largest keyframe radius and |q'| the fastest keyframe-to-keyframe step.
+  const bool moves = object.path.size() > 1;
+  double radius = 0.0, deformationSpeed = 0.0;
+  for (const auto& v : object.shape)
+    radius = std::max(radius, geometry::norm(v));
+  if (object.deformation) {
+    const auto& d = *object.deformation;
+    const geometry::Ring* from = &object.shape;
+    double t0 = 0.0;
+    auto step = [&](const geometry::Ring& to, double t1) {
+      for (std::size_t k = 0; k < to.size(); ++k) {
+        radius = std::max(radius, geometry::norm(to[k]));
+        deformationSpeed =
+            std::max(deformationSpeed, geometry::distance((*from)[k], to[k]) / (t1 - t0));
+      }
+      from = &to;
+      t0 = t1;
+    };
+    for (const auto& frame : d.keyframes)
+      step(frame.shape, frame.time);
+    step(object.shape, d.period);
+  }
+  return (moves ? object.velocity : 0.0) + std::abs(object.angularVelocity) * radius +
+         deformationSpeed;
+}
+
+double Kinematics::targetSpeedBound(std::size_t i) const {
+  return speedBound(scene_.targets.at(i));
+}
+
+double Kinematics::obstacleSpeedBound(std::size_t i) const {
+  return speedBound(scene_.obstacles.at(i));
 }
 
 void Kinematics::worldAt(double t, World& out) const {

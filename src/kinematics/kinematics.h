@@ -25,10 +25,20 @@ class Kinematics {
 
   ObjectPose targetPose(std::size_t i, double t) const;
   ObjectPose obstaclePose(std::size_t i, double t) const;
+  // One object at time t into `out` (as worldAt places it), for callers that look between
+  // two instants of the world (the safety layer's continuous-time accounting).
+  void placeTarget(std::size_t i, double t, geometry::Ring& out) const;
+  void placeObstacle(std::size_t i, double t, geometry::Ring& out) const;
+  // No point of the object ever moves faster than this, m/s: path speed + |ω|·(largest
+  // radius of any shape it takes) + the fastest vertex of its deformation. A Lipschitz
+  // constant for distances to the object, not something a controller may know.
+  double targetSpeedBound(std::size_t i) const;
+  double obstacleSpeedBound(std::size_t i) const;
   const scene::Scene& scene() const { return scene_; }
 
  private:
   static ObjectPose pose(const scene::MovingObject& object, const PathMotion& motion, double t);
+  static double speedBound(const scene::MovingObject& object);
   static void place(const scene::MovingObject& object, const PathMotion& motion, double t,
                     geometry::Ring& out);
 

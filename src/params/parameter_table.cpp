@@ -28,6 +28,7 @@ constexpr ParamField row(const char* key, const char* symbol, const char* unit,
           min,
           max,
           std::is_integral_v<Value>,
+          std::is_same_v<Value, bool>,
           [](const Parameters& p) { return static_cast<double>(p.*Group.*Field); },
           [](Parameters& p, double v) { p.*Group.*Field = static_cast<Value>(v); }};
 }
@@ -88,6 +89,23 @@ constexpr std::array kTable{
                                     "a camera closer than this to an object or another camera "
                                     "is in collision (a measured metric)",
                                     0, kInf),
+    row<&P::safety, &SafetyParams::enabled>(
+        "safety.enabled", "", "",
+        "our extension: filter every command through the safety layer so no camera comes "
+        "closer than δ to an object or camera when some admissible velocity avoids it "
+        "(false: the paper's behaviour, commands unchanged; the layer still judges contacts)",
+        0, 1),
+    row<&P::safety, &SafetyParams::margin>(
+        "safety.margin", "", "m",
+        "distance the layer keeps beyond δ when it can; covers the error of estimating "
+        "objects' speeds from past states. Larger: safer, cameras stand off farther",
+        0, 10),
+    row<&P::safety, &SafetyParams::horizon>(
+        "safety.horizon", "", "s",
+        "look-ahead of the layer: a velocity is admissible if, held this long, it keeps "
+        "δ + margin against objects at their observed speeds; values below dt mean dt. "
+        "Longer: earlier, gentler braking and a wider stand-off from fast objects",
+        0, 10),
 };
 
 void checkValue(const ParamField& f, double v, const std::string& where) {
@@ -124,7 +142,9 @@ nlohmann::json toJson(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& f : kTable) {
     auto& slot = j[std::string(groupOf(f.key))][std::string(nameOf(f.key))];
-    if (f.integer) {
+    if (f.boolean) {
+      slot = f.get(p) != 0.0;
+    } else if (f.integer) {
       slot = static_cast<long long>(f.get(p));
     } else {
       slot = f.get(p);
@@ -143,8 +163,11 @@ Parameters fromJson(const nlohmann::json& j, const std::string& source, Paramete
       const std::string key = group + "." + name;
       const ParamField* f = findParameter(key);
       if (f == nullptr) throw InputError(source + ": " + key + ": unknown parameter");
-      if (!value.is_number()) throw InputError(source + ": " + key + ": expected a number");
-      const double v = value.get<double>();
+      if (f->boolean ? !value.is_boolean() : !value.is_number()) {
+        throw InputError(source + ": " + key + ": expected " +
+                         (f->boolean ? "true or false" : "a number"));
+      }
+      const double v = value.is_boolean() ? (value.get<bool>() ? 1.0 : 0.0) : value.get<double>();
       checkValue(*f, v, source);
       f->set(base, v);
     }
@@ -176,6 +199,13 @@ void applyAssignment(Parameters& p, std::string_view assignment) {
     for (const auto& field : kTable)
       known += std::string(known.empty() ? "" : ", ") + field.key;
     throw InputError(where + ": unknown parameter '" + key + "' (known: " + known + ")");
+  }
+  if (f->boolean) {
+    if (text != "true" && text != "false" && text != "1" && text != "0") {
+      throw InputError(where + ": '" + text + "' is not true, false, 1 or 0");
+    }
+    f->set(p, text == "true" || text == "1" ? 1.0 : 0.0);
+    return;
   }
   char* end = nullptr;
   errno = 0;

@@ -20,6 +20,7 @@ struct ParamField {
   double min;               // valid range, inclusive
   double max;
   bool integer;  // value must be a whole number
+  bool boolean;  // an on/off switch: JSON true/false, --set true|false|1|0 (range [0, 1])
   double (*get)(const Parameters&);
   void (*set)(Parameters&, double);
 };

@@ -54,6 +54,16 @@ struct SimParams {
   double delta = 0.5;      // δ, m, distance below which a camera is in collision
 };
 
+// The safety layer between every controller and the simulator (our extension; src/safety/):
+// constraints 1 and 2 of Problems 2.2/2.3 (keep δ from every object and camera) enforced on
+// the commanded velocities instead of only discouraged by the reward's repulsion, eq. (9).
+struct SafetyParams {
+  bool enabled = true;   // off: commands reach the simulator unchanged (the paper's behaviour)
+  double margin = 0.1;   // m, kept beyond δ when the layer can (absorbs speed-estimate error)
+  double horizon = 0.1;  // s, how far ahead a velocity held constant must keep δ + margin
+                         // against objects moving at their observed speeds; at least dt
+};
+
 struct Parameters {
   RewardParams reward;
   GlobalParams global;
@@ -61,6 +71,7 @@ struct Parameters {
   PlannerParams planner;
   PotentialParams potential;
   SimParams sim;
+  SafetyParams safety;
 };
 
 }  // namespace camcov::params

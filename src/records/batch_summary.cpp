@@ -68,12 +68,18 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes) {
       m.meanObjectCollisionTime += s.objectCollisionTime;
       m.meanCameraCollisionTime += s.cameraCollisionTime;
       if (s.objectCollisionTime > 0.0 || s.cameraCollisionTime > 0.0) ++m.runsWithCollision;
+      m.meanAvoidableContactTime += s.avoidableContactTime;
+      m.meanUnavoidableContactTime += s.unavoidableContactTime;
+      if (s.avoidableContactTime > 0.0) ++m.runsWithAvoidableContact;
+      if (s.unavoidableContactTime > 0.0) ++m.runsWithUnavoidableContact;
       m.minObjectDistance = std::min(m.minObjectDistance, s.minObjectDistance);
       m.minCameraDistance = std::min(m.minCameraDistance, s.minCameraDistance);
     }
     if (m.runs > 0) {
       m.meanObjectCollisionTime /= m.runs;
       m.meanCameraCollisionTime /= m.runs;
+      m.meanAvoidableContactTime /= m.runs;
+      m.meanUnavoidableContactTime /= m.runs;
       std::sort(bySeed.begin(), bySeed.end());
       m.medianSeed = bySeed[(bySeed.size() - 1) / 2].second;
       m.bestSeed = std::find_if(bySeed.begin(), bySeed.end(), [&](const auto& run) {
@@ -113,7 +119,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes) {
 
 nlohmann::json summaryToJson(const BatchSummary& summary) {
   nlohmann::json j;
-  j["format"] = "camcov-summary/1";
+  j["format"] = "camcov-summary/2";
   j["significance"] = kSignificance;
   j["methods"] = nlohmann::json::array();
   for (const auto& m : summary.methods) {
@@ -126,6 +132,10 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"meanObjectCollisionTime", m.meanObjectCollisionTime},
                             {"meanCameraCollisionTime", m.meanCameraCollisionTime},
                             {"runsWithCollision", m.runsWithCollision},
+                            {"meanAvoidableContactTime", m.meanAvoidableContactTime},
+                            {"meanUnavoidableContactTime", m.meanUnavoidableContactTime},
+                            {"runsWithAvoidableContact", m.runsWithAvoidableContact},
+                            {"runsWithUnavoidableContact", m.runsWithUnavoidableContact},
                             {"minObjectDistance", finiteOrNull(m.minObjectDistance)},
                             {"minCameraDistance", finiteOrNull(m.minCameraDistance)},
                             {"medianSeed", m.medianSeed},
@@ -157,18 +167,21 @@ std::string summaryToCsv(const BatchSummary& summary) {
       "scene,method,runs,failed,coverage_mean,coverage_sd,coverage_min,coverage_q1,coverage_median,"
       "coverage_q3,coverage_max,utilization_mean,utilization_sd,utilization_min,utilization_q1,"
       "utilization_median,utilization_q3,utilization_max,mean_object_collision_time,"
-      "mean_camera_collision_time,runs_with_collision,min_object_distance,min_camera_distance,"
-      "median_seed,best_seed,winner,p_value\n";
+      "mean_camera_collision_time,runs_with_collision,mean_avoidable_contact_time,"
+      "mean_unavoidable_contact_time,runs_with_avoidable_contact,runs_with_unavoidable_contact,"
+      "min_object_distance,min_camera_distance,median_seed,best_seed,winner,p_value\n";
   for (const auto& m : summary.methods) {
     const SceneComparison& c = *comparison.at(m.scene);
     const auto& cv = m.coverage;
     const auto& ut = m.utilization;
     csv += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},"
+        "{}\n",
         m.scene, m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3,
         cv.max, ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
-        m.meanCameraCollisionTime, m.runsWithCollision, m.minObjectDistance, m.minCameraDistance,
-        m.medianSeed, m.bestSeed, c.winner, c.pValue);
+        m.meanCameraCollisionTime, m.runsWithCollision, m.meanAvoidableContactTime,
+        m.meanUnavoidableContactTime, m.runsWithAvoidableContact, m.runsWithUnavoidableContact,
+        m.minObjectDistance, m.minCameraDistance, m.medianSeed, m.bestSeed, c.winner, c.pValue);
   }
   return csv;
 }

@@ -34,7 +34,13 @@ struct MethodSummary {
   Description utilization;               // of the runs' average utilization
   double meanObjectCollisionTime = 0.0;  // s below δ, mean over runs
   double meanCameraCollisionTime = 0.0;
-  int runsWithCollision = 0;       // runs with any time below δ
+  int runsWithCollision = 0;  // runs with any time below δ
+  // The time below δ split by the safety layer's verdict (sim::RunSummary), mean over runs,
+  // and the runs with any of each kind.
+  double meanAvoidableContactTime = 0.0;
+  double meanUnavoidableContactTime = 0.0;
+  int runsWithAvoidableContact = 0;
+  int runsWithUnavoidableContact = 0;
   double minObjectDistance = 0.0;  // over all runs (infinity: no object)
   double minCameraDistance = 0.0;  // over all runs (infinity: one camera)
   // Runs ordered by (coverage, seed): the seed of the median (the lower middle one) and of

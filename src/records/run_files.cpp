@@ -33,6 +33,10 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
           {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
           {"objectCollisionTime", s.objectCollisionTime},
           {"cameraCollisionTime", s.cameraCollisionTime},
+          {"avoidableContactTime", s.avoidableContactTime},
+          {"unavoidableContactTime", s.unavoidableContactTime},
+          {"avoidableContacts", s.avoidableContacts},
+          {"unavoidableContacts", s.unavoidableContacts},
           {"boundaryClamps", s.boundaryClamps}};
 }
 
@@ -55,6 +59,10 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
   s.minCameraDistance = numberOrInfinity(j.at("minCameraDistance"));
   s.objectCollisionTime = j.at("objectCollisionTime").get<double>();
   s.cameraCollisionTime = j.at("cameraCollisionTime").get<double>();
+  s.avoidableContactTime = j.at("avoidableContactTime").get<double>();
+  s.unavoidableContactTime = j.at("unavoidableContactTime").get<double>();
+  s.avoidableContacts = j.at("avoidableContacts").get<int>();
+  s.unavoidableContacts = j.at("unavoidableContacts").get<int>();
   s.boundaryClamps = j.at("boundaryClamps").get<int>();
   return s;
 }
@@ -83,8 +91,10 @@ nlohmann::json runToJson(const RunRecord& run) {
 
   // The time series, column by column; poses as [x, y, yaw (rad)].
   nlohmann::json series;
-  for (const char* key : {"time", "coverage", "utilization", "repulsion", "reward",
-                          "minObjectDistance", "minCameraDistance"}) {
+  for (const char* key :
+       {"time", "coverage", "utilization", "repulsion", "reward", "minObjectDistance",
+        "minCameraDistance", "minObjectDistanceInStep", "minCameraDistanceInStep",
+        "avoidableContactTime", "unavoidableContactTime"}) {
     series[key] = nlohmann::json::array();
   }
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
@@ -101,6 +111,10 @@ nlohmann::json runToJson(const RunRecord& run) {
     series["reward"].push_back(row.terms.reward);
     series["minObjectDistance"].push_back(finiteOrNull(row.minObjectDistance));
     series["minCameraDistance"].push_back(finiteOrNull(row.minCameraDistance));
+    series["minObjectDistanceInStep"].push_back(finiteOrNull(row.minObjectDistanceInStep));
+    series["minCameraDistanceInStep"].push_back(finiteOrNull(row.minCameraDistanceInStep));
+    series["avoidableContactTime"].push_back(row.avoidableContactTime);
+    series["unavoidableContactTime"].push_back(row.unavoidableContactTime);
     for (std::size_t c = 0; c < cameras; ++c) {
       poses[c].push_back(pose(row.cameras[c]));
       goals[c].push_back(row.goals[c] ? pose(*row.goals[c]) : nlohmann::json());
@@ -114,6 +128,7 @@ nlohmann::json runToJson(const RunRecord& run) {
   for (const auto& e : run.events) {
     nlohmann::json event = {
         {"time", e.time}, {"kind", e.kind}, {"camera", e.camera}, {"detail", e.detail}};
+    if (!e.reason.empty()) event["reason"] = e.reason;
     if (!e.path.empty()) {
       event["path"] = nlohmann::json::array();
       for (const auto& p : e.path)
@@ -152,6 +167,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
           series.at("repulsion").at(k).get<double>(), series.at("reward").at(k).get<double>()};
       row.minObjectDistance = numberOrInfinity(series.at("minObjectDistance").at(k));
       row.minCameraDistance = numberOrInfinity(series.at("minCameraDistance").at(k));
+      row.minObjectDistanceInStep = numberOrInfinity(series.at("minObjectDistanceInStep").at(k));
+      row.minCameraDistanceInStep = numberOrInfinity(series.at("minCameraDistanceInStep").at(k));
+      row.avoidableContactTime = series.at("avoidableContactTime").at(k).get<double>();
+      row.unavoidableContactTime = series.at("unavoidableContactTime").at(k).get<double>();
       for (std::size_t c = 0; c < cameras.size(); ++c) {
         row.cameras.push_back(poseFrom(cameras.at(c).at(k)));
         const auto& g = goals.at(c).at(k);
@@ -164,7 +183,8 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
                                   e.at("kind").get<std::string>(),
                                   e.at("camera").get<int>(),
                                   e.at("detail").get<std::string>(),
-                                  {}};
+                                  {},
+                                  e.value("reason", std::string())};
       if (e.contains("path")) {
         for (const auto& p : e.at("path"))
           event.path.push_back(poseFrom(p));
@@ -193,15 +213,19 @@ RunRecord loadRunFile(const std::filesystem::path& file) {
 
 std::string runToCsv(const RunRecord& run) {
   std::string csv =
-      "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance";
+      "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance,"
+      "min_object_distance_in_step,min_camera_distance_in_step,avoidable_contact_time,"
+      "unavoidable_contact_time";
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
   for (std::size_t c = 0; c < cameras; ++c)
     csv += fmt::format(",cam{0}_x,cam{0}_y,cam{0}_yaw", c);
   csv += '\n';
   for (const StepRow& row : run.steps) {
-    csv += fmt::format("{},{},{},{},{},{},{}", row.time, row.terms.coverage, row.terms.utilization,
-                       row.terms.repulsion, row.terms.reward, row.minObjectDistance,
-                       row.minCameraDistance);
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{}", row.time, row.terms.coverage,
+                       row.terms.utilization, row.terms.repulsion, row.terms.reward,
+                       row.minObjectDistance, row.minCameraDistance, row.minObjectDistanceInStep,
+                       row.minCameraDistanceInStep, row.avoidableContactTime,
+                       row.unavoidableContactTime);
     for (const auto& p : row.cameras)
       csv += fmt::format(",{},{},{}", p.x, p.y, p.yaw);
     csv += '\n';

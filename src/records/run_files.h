@@ -12,7 +12,7 @@
 
 namespace camcov::records {
 
-inline constexpr const char* kRunFormat = "camcov-run/1";
+inline constexpr const char* kRunFormat = "camcov-run/2";
 
 nlohmann::json runToJson(const RunRecord& run);
 // The inverse of runToJson (null distances read back as infinity). Throws InputError naming

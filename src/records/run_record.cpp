@@ -10,6 +10,10 @@ void RunRecorder::step(const sim::StepRecord& step) {
   row.terms = step.terms;
   row.minObjectDistance = step.minObjectDistance;
   row.minCameraDistance = step.minCameraDistance;
+  row.minObjectDistanceInStep = step.minObjectDistanceInStep;
+  row.minCameraDistanceInStep = step.minCameraDistanceInStep;
+  row.avoidableContactTime = step.avoidableContactTime;
+  row.unavoidableContactTime = step.unavoidableContactTime;
   row.cameras.assign(step.cameras.begin(), step.cameras.end());
   row.goals.assign(step.goals.begin(), step.goals.end());
   record_.steps.push_back(std::move(row));

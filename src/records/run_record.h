@@ -26,8 +26,12 @@ struct RunMetadata {
 struct StepRow {
   double time = 0.0;
   reward::RewardTerms terms;
-  double minObjectDistance = 0.0;
+  double minObjectDistance = 0.0;  // at the sample
   double minCameraDistance = 0.0;
+  double minObjectDistanceInStep = 0.0;  // over the step that ended here, continuous time
+  double minCameraDistanceInStep = 0.0;
+  double avoidableContactTime = 0.0;  // s closer than δ in that step, by the layer's verdict
+  double unavoidableContactTime = 0.0;
   std::vector<geometry::Pose> cameras;
   std::vector<std::optional<geometry::Pose>> goals;
 };

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "kinematics/kinematics.h"
 #include "reward/reward_model.h"
+#include "safety/safety_filter.h"
+#include "safety/step_contacts.h"
 
 namespace camcov::sim {
 namespace {
@@ -61,22 +64,83 @@ bool moveInside(const geometry::Ring& boundary, geometry::Vec2 from, geometry::V
   return true;
 }
 
+// A camera's current stretch of steps closer than δ to something, if any.
+struct Contact {
+  bool active = false;
+  bool unavoidable = false;
+};
+
+// Continuous-time accounting of the step that just ended (safety/step_contacts.h): the
+// distances into `record` and `summary`, each contact that began in it as an event, and its
+// time below δ split by whether the layer judged the contact unavoidable when the step began.
+void accountStep(const safety::StepContacts& step, std::span<const safety::Verdict> verdicts,
+                 double stepStart, std::vector<Contact>& contacts, StepRecord& record,
+                 RunSummary& summary, std::vector<control::ControlEvent>& events) {
+  record.minObjectDistanceInStep = step.minObjectDistance;
+  record.minCameraDistanceInStep = step.minCameraDistance;
+  summary.minObjectDistance = std::min(summary.minObjectDistance, step.minObjectDistance);
+  summary.minCameraDistance = std::min(summary.minCameraDistance, step.minCameraDistance);
+  summary.objectCollisionTime += step.objectContactTime;
+  summary.cameraCollisionTime += step.cameraContactTime;
+  bool allUnavoidable = true;
+  for (std::size_t j = 0; j < contacts.size(); ++j) {
+    Contact& c = contacts[j];
+    if (step.contactStart[j] < 0.0) {
+      c.active = false;
+      continue;
+    }
+    if (!c.active) {
+      // A contact is judged once, when it begins: one that the layer failed to avoid stays
+      // avoidable while the camera recovers, even though recovering is itself "within δ".
+      c = {true, !verdicts[j].keepsDelta};
+      const int camera = static_cast<int>(j);
+      if (c.unavoidable) {
+        ++summary.unavoidableContacts;
+        events.push_back({stepStart + step.contactStart[j],
+                          "unavoidable-contact",
+                          camera,
+                          verdicts[j].detail,
+                          {},
+                          safety::reasonName(verdicts[j].reason)});
+      } else {
+        ++summary.avoidableContacts;
+        events.push_back({stepStart + step.contactStart[j],
+                          "avoidable-contact",
+                          camera,
+                          "camera " + std::to_string(j) +
+                              " came closer than δ although an admissible velocity kept δ",
+                          {},
+                          ""});
+      }
+    }
+    allUnavoidable = allUnavoidable && c.unavoidable;
+  }
+  (allUnavoidable ? record.unavoidableContactTime : record.avoidableContactTime) = step.contactTime;
+  summary.avoidableContactTime += record.avoidableContactTime;
+  summary.unavoidableContactTime += record.unavoidableContactTime;
+}
+
 }  // namespace
 
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
                     control::Controller& controller, Recorder& recorder) {
   const kinematics::Kinematics kinematics(scene);
   reward::RewardModel measure(params.reward, scene.fovHalfAngle);
+  safety::SafetyFilter safety(scene, params);
+  const safety::StepAccounting accounting(kinematics, params.sim.delta);
   const double dt = params.sim.dt;
   const int steps = static_cast<int>(std::llround(params.sim.duration / dt));
 
-  std::vector<geometry::Pose> cameras;
+  std::vector<geometry::Pose> cameras, previousCameras;
   for (const auto& c : scene.cameras)
     cameras.push_back(c.initial);
   std::vector<control::CameraCommand> commands(cameras.size());
+  std::vector<geometry::Vec2> velocities(cameras.size());
   std::vector<std::optional<geometry::Pose>> goals(cameras.size());
   std::vector<control::ControlEvent> events;
-  kinematics::World world;
+  std::vector<Contact> contacts(cameras.size());
+  std::vector<safety::Verdict> verdicts;
+  kinematics::World world, previousWorld;
 
   RunSummary summary;
   summary.duration = steps * dt;
@@ -84,6 +148,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   reward::RewardTerms previous;
   for (int k = 0; k <= steps; ++k) {
     const double t = k * dt;  // not accumulated: no drift over long runs
+    std::swap(world, previousWorld);
     kinematics.worldAt(t, world);
     measure.setWorld(world);
 
@@ -93,9 +158,16 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     record.terms = measure.evaluate(cameras);
     record.minObjectDistance = minObjectDistance(world, cameras);
     record.minCameraDistance = minCameraDistance(cameras);
-    summary.minObjectDistance = std::min(summary.minObjectDistance, record.minObjectDistance);
-    summary.minCameraDistance = std::min(summary.minCameraDistance, record.minCameraDistance);
-    if (k > 0) {  // trapezoid rule, eq. (4)
+    events.clear();
+    if (k == 0) {
+      record.minObjectDistanceInStep = record.minObjectDistance;
+      record.minCameraDistanceInStep = record.minCameraDistance;
+      summary.minObjectDistance = record.minObjectDistance;
+      summary.minCameraDistance = record.minCameraDistance;
+    } else {
+      accountStep(accounting.measure(previousWorld, previousCameras, world, cameras), verdicts,
+                  previousWorld.time, contacts, record, summary, events);
+      // trapezoid rule, eq. (4)
       summary.averageCoverage += 0.5 * (previous.coverage + record.terms.coverage) * dt;
       summary.averageUtilization += 0.5 * (previous.utilization + record.terms.utilization) * dt;
       summary.averageReward += 0.5 * (previous.reward + record.terms.reward) * dt;
@@ -105,10 +177,13 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     if (k < steps) {
       // The controller acts on the present; its events belong to this step's record.
       controller.control({t, world, cameras}, commands);
-      if (record.minObjectDistance < params.sim.delta) summary.objectCollisionTime += dt;
-      if (record.minCameraDistance < params.sim.delta) summary.cameraCollisionTime += dt;
+      for (std::size_t j = 0; j < cameras.size(); ++j) {
+        commands[j] = saturate(commands[j], scene.cameras[j]);
+        velocities[j] = commands[j].velocity;
+      }
+      safety.apply(world, cameras, velocities);
+      verdicts = safety.verdicts();
     }
-    events.clear();
     controller.takeEvents(events);
     for (std::size_t j = 0; j < cameras.size(); ++j)
       goals[j] = controller.goal(j);
@@ -118,11 +193,12 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     recorder.step(record);
     if (k == steps) break;
 
+    previousCameras = cameras;
     for (std::size_t j = 0; j < cameras.size(); ++j) {
-      const control::CameraCommand u = saturate(commands[j], scene.cameras[j]);
-      geometry::Vec2 next = cameras[j].position() + u.velocity * dt;
+      geometry::Vec2 next = cameras[j].position() + velocities[j] * dt;
       if (moveInside(world.boundary, cameras[j].position(), next)) ++summary.boundaryClamps;
-      cameras[j] = {next.x, next.y, geometry::wrapAngle(cameras[j].yaw + u.angularVelocity * dt)};
+      cameras[j] = {next.x, next.y,
+                    geometry::wrapAngle(cameras[j].yaw + commands[j].angularVelocity * dt)};
     }
   }
   summary.steps = steps + 1;

@@ -1,8 +1,10 @@
 #pragma once
 // The deterministic simulator (SPEC section 3): fixed dt, the controller sees only the
-// present, commands are saturated to each camera's limits and integrated (ṗ_j = u_j), cameras
-// are kept inside the boundary, and every step is measured and handed to a recorder.
-// Computation takes no simulated time, so a run depends only on its inputs.
+// present, commands are saturated to each camera's limits, passed through the safety layer
+// (src/safety/) and integrated (ṗ_j = u_j), cameras are kept inside the boundary, and every
+// step is measured — at the samples and, for distances and contacts, in continuous time over
+// the step — and handed to a recorder. Computation takes no simulated time, so a run depends
+// only on its inputs.
 #include <optional>
 #include <span>
 #include <vector>
@@ -21,9 +23,16 @@ struct StepRecord {
   reward::RewardTerms terms;
   std::span<const geometry::Pose> cameras;
   std::span<const std::optional<geometry::Pose>> goals;
-  double minObjectDistance = 0.0;  // closest camera to any target or obstacle, m
-  double minCameraDistance = 0.0;  // closest pair of cameras, m (infinity for one camera)
-  std::span<const control::ControlEvent> events;  // raised by the controller since last step
+  double minObjectDistance = 0.0;  // closest camera to any target or obstacle, m, at t
+  double minCameraDistance = 0.0;  // closest pair of cameras, m (infinity for one camera), at t
+  // Over the step that ended at t, in continuous time (at step 0: the samples above).
+  double minObjectDistanceInStep = 0.0;
+  double minCameraDistanceInStep = 0.0;
+  double avoidableContactTime = 0.0;    // s closer than δ that the safety layer could avoid
+  double unavoidableContactTime = 0.0;  // s closer than δ in unavoidable contacts
+  // Raised since the last step: contacts that began in the step that ended at t, then the
+  // controller's events at t.
+  std::span<const control::ControlEvent> events;
 };
 
 struct RunSummary {
@@ -32,11 +41,19 @@ struct RunSummary {
   double averageCoverage = 0.0;     // eq. (4) by the trapezoid rule over [0, duration]
   double averageUtilization = 0.0;  // the same for utilization, eq. (5)
   double averageReward = 0.0;
-  double minObjectDistance = 0.0;  // over the whole run
+  // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.
+  double minObjectDistance = 0.0;  // over the whole run, m
   double minCameraDistance = 0.0;
   double objectCollisionTime = 0.0;  // s with some camera closer than δ to an object
   double cameraCollisionTime = 0.0;  // s with some pair of cameras closer than δ
-  int boundaryClamps = 0;            // steps where a move was cut short at the boundary
+  // The time with any contact, split: a contact is unavoidable when, at the step it began,
+  // no admissible velocity of its cameras kept δ (the layer's verdict, safety_filter.h);
+  // a step counts as unavoidable only if every camera in contact during it is.
+  double avoidableContactTime = 0.0;
+  double unavoidableContactTime = 0.0;
+  int avoidableContacts = 0;    // contacts (a camera's stretch of steps closer than δ)
+  int unavoidableContacts = 0;  // each one begins with an "unavoidable-contact" event
+  int boundaryClamps = 0;       // steps where a move was cut short at the boundary
 };
 
 class Recorder {

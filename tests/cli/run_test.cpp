@@ -23,7 +23,7 @@ TEST(CliRun, WritesJsonAndCsvAndPrintsAverages) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("average coverage"), std::string::npos);
   const auto j = nlohmann::json::parse(readFile(out / "fig1_example-local-seed3.json"));
-  EXPECT_EQ(j["format"], "camcov-run/1");
+  EXPECT_EQ(j["format"], "camcov-run/2");
   EXPECT_EQ(j["method"], "local");
   EXPECT_EQ(j["seed"], 3);
   EXPECT_EQ(j["parameters"]["global"]["K"], 500) << "every parameter is in the metadata";

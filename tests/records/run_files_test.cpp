@@ -21,11 +21,16 @@ RunRecord sampleRun() {
     row.terms = {0.2 + k * 0.1, 0.5, 0.0, 0.3};
     row.minObjectDistance = 2.5;
     row.minCameraDistance = std::numeric_limits<double>::infinity();
+    row.minObjectDistanceInStep = 2.25;
+    row.minCameraDistanceInStep = std::numeric_limits<double>::infinity();
+    row.avoidableContactTime = 0.0;
+    row.unavoidableContactTime = 0.05 * k;
     row.cameras = {{1.0, 2.0 + k, 0.5}};
     row.goals = {k ? std::optional(geometry::Pose{4, 5, 6}) : std::nullopt};
     run.steps.push_back(row);
   }
-  run.events.push_back({0.0, "plan", 0, "3 waypoints", {{1, 2, 0.5}, {3, 4, 0}, {4, 5, 6}}});
+  run.events.push_back({0.0, "plan", 0, "3 waypoints", {{1, 2, 0.5}, {3, 4, 0}, {4, 5, 6}}, {}});
+  run.events.push_back({0.05, "unavoidable-contact", 0, "target 0 closes fast", {}, "outpaced"});
   return run;
 }
 
@@ -41,15 +46,21 @@ TEST(RunFiles, JsonRoundTripsEveryField) {
   EXPECT_FALSE(back.steps[0].goals[0].has_value());
   EXPECT_EQ(*back.steps[1].goals[0], (geometry::Pose{4, 5, 6}));
   EXPECT_EQ(back.events.at(0).path.size(), 3u);
+  EXPECT_EQ(back.events.at(1).reason, "outpaced");
+  EXPECT_FALSE(j["events"][0].contains("reason")) << "an event without a reason has no key";
+  EXPECT_EQ(back.steps[1].unavoidableContactTime, 0.05);
+  EXPECT_TRUE(j["series"]["minCameraDistanceInStep"][1].is_null());
 }
 
 TEST(RunFiles, CsvHasOneRowPerStepAndAColumnPerPoseComponent) {
   const std::string csv = runToCsv(sampleRun());
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance,"
-            "cam0_x,cam0_y,cam0_yaw");
+            "min_object_distance_in_step,min_camera_distance_in_step,avoidable_contact_time,"
+            "unavoidable_contact_time,cam0_x,cam0_y,cam0_yaw");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
-  EXPECT_NE(csv.find("0.1,0.30000000000000004,0.5,0,0.3,2.5,inf,1,3,0.5"), std::string::npos)
+  EXPECT_NE(csv.find("0.1,0.30000000000000004,0.5,0,0.3,2.5,inf,2.25,inf,0,0.05,1,3,0.5"),
+            std::string::npos)
       << csv;
 }
 

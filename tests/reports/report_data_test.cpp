@@ -45,12 +45,12 @@ TEST(SummaryReader, ReadsBackWhatTheSummaryWrote) {
 
 TEST(SummaryReader, RejectsOtherDocumentsNamingTheFile) {
   try {
-    summaryFromJson(nlohmann::json{{"format", "camcov-run/1"}}, "x/summary.json");
+    summaryFromJson(nlohmann::json{{"format", "camcov-run/2"}}, "x/summary.json");
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("x/summary.json"), std::string::npos);
   }
-  EXPECT_THROW(summaryFromJson(nlohmann::json{{"format", "camcov-summary/1"}}, "s"), InputError);
+  EXPECT_THROW(summaryFromJson(nlohmann::json{{"format", "camcov-summary/2"}}, "s"), InputError);
 }
 
 TEST(SceneGroups, PublishedNamesOrWhetherAnythingMoves) {

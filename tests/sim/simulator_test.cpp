@@ -18,7 +18,7 @@ class ConstantController final : public control::Controller {
     seenWorldTimes.push_back(o.world.time);
     for (auto& c : out)
       c = u_;
-    events_.push_back({o.time, "tick", -1, "", {}});
+    events_.push_back({o.time, "tick", -1, "", {}, {}});
   }
   std::optional<geometry::Pose> goal(std::size_t) const override { return geometry::Pose{1, 2, 3}; }
   void takeEvents(std::vector<control::ControlEvent>& out) override {
@@ -82,8 +82,9 @@ TEST(Simulate, SaturatesCommandsToTheCameraLimits) {
   EXPECT_NEAR(geometry::wrapAngle(end.yaw - geometry::degToRad(225)), -1.0, 1e-9);
 }
 
-TEST(Simulate, KeepsCamerasInsideTheBoundary) {
+TEST(Simulate, KeepsCamerasInsideTheBoundaryWithoutTheSafetyLayer) {
   params::Parameters p;
+  p.safety.enabled = false;  // the simulator's own clamp, the last line of defence
   p.sim.duration = 10.0;
   ConstantController controller({{2, 0}, 0});  // camera 1 at x = 6 reaches x = 10 after 2 s
   KeepingRecorder recorder;
@@ -94,6 +95,20 @@ TEST(Simulate, KeepsCamerasInsideTheBoundary) {
   }
   EXPECT_GT(recorder.poses.back()[1].x, 9.99);
   EXPECT_GT(s.boundaryClamps, 0);
+}
+
+TEST(Simulate, TheSafetyLayerStopsCamerasJustInsideTheBoundary) {
+  params::Parameters p;
+  p.sim.duration = 10.0;
+  ConstantController controller({{2, 0}, 0});
+  KeepingRecorder recorder;
+  const RunSummary s = simulate(oneTargetScene(), p, controller, recorder);
+  for (const auto& step : recorder.poses) {
+    for (const auto& c : step)
+      EXPECT_LT(c.x, 10.0);
+  }
+  EXPECT_GT(recorder.poses.back()[1].x, 9.99);  // 1 mm clear of the wall, not held back
+  EXPECT_EQ(s.boundaryClamps, 0) << "the layer, not the clamp, keeps it inside";
 }
 
 TEST(Simulate, AveragesAreTheTrapezoidRuleOfTheRecordedSeries) {
@@ -118,6 +133,7 @@ TEST(Simulate, MeasuresCollisionTimeBelowDelta) {
     "cameraFoV": 30,
     "cameras": [{"pos": "POINT(5 -0.8)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1}]})js");
   params::Parameters p;
+  p.safety.enabled = false;  // the layer would move it away
   p.sim.duration = 1.5;
   ConstantController controller({{0, 0}, 0});
   KeepingRecorder recorder;

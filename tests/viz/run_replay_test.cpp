@@ -26,8 +26,8 @@ class TinyRun : public ::testing::Test {
       row.goals = {i >= 5 && i < 15 ? std::optional<Pose>(kGoal) : std::nullopt};
       run_.steps.push_back(row);
     }
-    run_.events.push_back({0.5, "plan", 0, "", {{-3.0, 0.5, 0.0}, {-3.0, 2.0, 0.0}, kGoal}});
-    run_.events.push_back({1.5, "plan-completed", 0, "", {}});
+    run_.events.push_back({0.5, "plan", 0, "", {{-3.0, 0.5, 0.0}, {-3.0, 2.0, 0.0}, kGoal}, {}});
+    run_.events.push_back({1.5, "plan-completed", 0, "", {}, {}});
   }
 
   static constexpr Pose kGoal{0.0, 2.0, 1.0};

@@ -1,0 +1,77 @@
+#include "safety/lipschitz_search.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace camcov::safety {
+namespace {
+
+struct Interval {
+  double a, b, fa, fb;
+  int depth;
+};
+
+// Deep enough that a 0.1 s step is resolved to 1e-16 s: a bound on work, never reached
+// when the tolerance is sane.
+constexpr int kMaxDepth = 60;
+
+}  // namespace
+
+double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling) {
+  double best = std::min(g.f0, g.f1);
+  std::vector<Interval> stack{{0.0, g.h, g.f0, g.f1, 0}};
+  while (!stack.empty()) {
+    const Interval i = stack.back();
+    stack.pop_back();
+    const double lower = 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a));
+    // Nothing here can beat the best by more than the tolerance, or reach below the ceiling.
+    if (lower >= std::min(best - tolerance, ceiling) || i.depth >= kMaxDepth) continue;
+    const double m = 0.5 * (i.a + i.b);
+    const double fm = g.f(m);
+    best = std::min(best, fm);
+    stack.push_back({m, i.b, fm, i.fb, i.depth + 1});
+    stack.push_back({i.a, m, i.fa, fm, i.depth + 1});
+  }
+  return best;
+}
+
+double firstBelow(const Sampled& g, double level, int depth) {
+  // Left-first: the left half of an interval is searched before its right half.
+  std::vector<Interval> stack{{0.0, g.h, g.f0, g.f1, 0}};
+  while (!stack.empty()) {
+    const Interval i = stack.back();
+    stack.pop_back();
+    if (i.fa < level) return i.a;
+    if (0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a)) >= level) continue;
+    if (i.depth >= depth) return i.a;  // undecided at the finest width: counted as below
+    const double m = 0.5 * (i.a + i.b);
+    const double fm = g.f(m);
+    stack.push_back({m, i.b, fm, i.fb, i.depth + 1});
+    stack.push_back({i.a, m, i.fa, fm, i.depth + 1});
+  }
+  return -1.0;
+}
+
+double timeBelow(const Sampled& g, double level, int depth) {
+  double total = 0.0;
+  std::vector<Interval> stack{{0.0, g.h, g.f0, g.f1, 0}};
+  while (!stack.empty()) {
+    const Interval i = stack.back();
+    stack.pop_back();
+    const double width = i.b - i.a;
+    const double spread = 0.5 * g.lipschitz * width;
+    const double mean = 0.5 * (i.fa + i.fb);
+    if (mean - spread >= level) continue;  // proven at or above the level throughout
+    if (mean + spread < level || i.depth >= depth) {
+      total += width;  // proven below throughout, or undecided at the finest width
+      continue;
+    }
+    const double m = 0.5 * (i.a + i.b);
+    const double fm = g.f(m);
+    stack.push_back({i.a, m, i.fa, fm, i.depth + 1});
+    stack.push_back({m, i.b, fm, i.fb, i.depth + 1});
+  }
+  return total;
+}
+
+}  // namespace camcov::safety

@@ -1,0 +1,34 @@
+#pragma once
+// Certified searches over one time interval [0, h] for a function f whose slope never exceeds
+// L in size (a Lipschitz constant): between two samples f(a), f(b) it stays within
+// [(f(a) + f(b) − L·(b − a))/2, (f(a) + f(b) + L·(b − a))/2], so branch and bound can prove
+// where f is not, without a grid fine enough to hope. (Piyavskii, "An algorithm for finding
+// the absolute extremum of a function", USSR Comput. Math. 1972, in its simplest form.)
+#include <functional>
+#include <limits>
+
+namespace camcov::safety {
+
+struct Sampled {
+  std::function<double(double)> f;  // at τ ∈ [0, h]
+  double h = 0.0;
+  double f0 = 0.0, f1 = 0.0;  // f(0), f(h), already known to the caller
+  double lipschitz = 0.0;     // L ≥ |f'|
+};
+
+// The smallest value f takes on [0, h], as a value f attains within `tolerance` of the true
+// minimum. Intervals that cannot go below `ceiling` are not searched: with a finite ceiling
+// the result is exact only where it is below it.
+double lipschitzMinimum(const Sampled& g, double tolerance,
+                        double ceiling = std::numeric_limits<double>::infinity());
+
+// The earliest τ with f(τ) < level, or −1 when f is proven ≥ level on all of [0, h]. An
+// interval still undecided at width h / 2^depth counts as below, as in timeBelow, so the
+// answer may come a few such widths early where f is flatter than L, never late.
+double firstBelow(const Sampled& g, double level, int depth);
+
+// Measure of {τ ∈ [0, h] : f(τ) < level}, proven to within intervals of h / 2^depth: an
+// interval still undecided at that width is counted whole, so the result never undercounts.
+double timeBelow(const Sampled& g, double level, int depth = 12);
+
+}  // namespace camcov::safety

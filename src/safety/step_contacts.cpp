@@ -1,0 +1,133 @@
+#include "safety/step_contacts.h"
+
+#include <algorithm>
+
+#include "geometry/ring.h"
+#include "safety/lipschitz_search.h"
+
+namespace camcov::safety {
+namespace {
+
+// One distance followed through the step.
+struct Pair {
+  std::size_t camera = 0;
+  std::ptrdiff_t other = -1;  // the other camera; −1: the pair is a camera and an object
+  Sampled distance;
+  bool withCamera() const { return other >= 0; }
+};
+
+}  // namespace
+
+StepAccounting::StepAccounting(const kinematics::Kinematics& kinematics, double delta)
+    : kinematics_(kinematics), delta_(delta) {
+  const auto& scene = kinematics.scene();
+  for (std::size_t i = 0; i < scene.targets.size(); ++i)
+    targetSpeeds_.push_back(kinematics.targetSpeedBound(i));
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
+    obstacleSpeeds_.push_back(kinematics.obstacleSpeedBound(i));
+}
+
+StepContacts StepAccounting::measure(const kinematics::World& before,
+                                     std::span<const geometry::Pose> from,
+                                     const kinematics::World& after,
+                                     std::span<const geometry::Pose> to) const {
+  const double t0 = before.time;
+  const double h = after.time - before.time;
+  auto cameraAt = [from, to, h](std::size_t j, double tau) {
+    return h > 0.0 ? geometry::lerp(from[j].position(), to[j].position(), tau / h)
+                   : from[j].position();
+  };
+  auto cameraSpeed = [&](std::size_t j) {
+    return h > 0.0 ? geometry::distance(from[j].position(), to[j].position()) / h : 0.0;
+  };
+
+  std::vector<Pair> pairs;
+  for (std::size_t j = 0; j < from.size(); ++j) {
+    const geometry::Vec2 p0 = from[j].position(), p1 = to[j].position();
+    auto addObject = [&](bool isTarget, std::size_t i, const geometry::Ring& r0,
+                         const geometry::Ring& r1, double speed) {
+      Sampled s;
+      s.h = h;
+      s.f0 = geometry::distanceToPolygon(r0, p0);
+      s.f1 = geometry::distanceToPolygon(r1, p1);
+      s.lipschitz = cameraSpeed(j) + speed;
+      s.f = [this, isTarget, i, t0, j, cameraAt, ring = geometry::Ring()](double tau) mutable {
+        if (isTarget) {
+          kinematics_.placeTarget(i, t0 + tau, ring);
+        } else {
+          kinematics_.placeObstacle(i, t0 + tau, ring);
+        }
+        return geometry::distanceToPolygon(ring, cameraAt(j, tau));
+      };
+      pairs.push_back({j, -1, std::move(s)});
+    };
+    for (std::size_t i = 0; i < before.targets.size(); ++i)
+      addObject(true, i, before.targets[i], after.targets[i], targetSpeeds_[i]);
+    for (std::size_t i = 0; i < before.obstacles.size(); ++i)
+      addObject(false, i, before.obstacles[i], after.obstacles[i], obstacleSpeeds_[i]);
+    for (std::size_t i = 0; i < j; ++i) {
+      // Both move linearly, so their offset does too: |r(τ)| with r linear, slope ≤ |r1 − r0|/h.
+      const geometry::Vec2 r0 = p0 - from[i].position(), r1 = p1 - to[i].position();
+      Sampled s;
+      s.h = h;
+      s.f0 = geometry::norm(r0);
+      s.f1 = geometry::norm(r1);
+      s.lipschitz = h > 0.0 ? geometry::distance(r0, r1) / h : 0.0;
+      s.f = [r0, r1, h](double tau) { return geometry::norm(geometry::lerp(r0, r1, tau / h)); };
+      pairs.push_back({j, static_cast<std::ptrdiff_t>(i), std::move(s)});
+    }
+  }
+
+  StepContacts result;
+  result.contactStart.assign(from.size(), -1.0);
+  auto lowerBound = [](const Sampled& s) { return 0.5 * (s.f0 + s.f1 - s.lipschitz * s.h); };
+  // Minimum distances: start from the samples, then search only pairs that might beat them.
+  for (const Pair& p : pairs) {
+    double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
+    best = std::min({best, p.distance.f0, p.distance.f1});
+  }
+  for (const Pair& p : pairs) {
+    double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
+    if (lowerBound(p.distance) < best - kDistanceTolerance)
+      best = std::min(best, lipschitzMinimum(p.distance, kDistanceTolerance, best));
+  }
+
+  // Contacts: only pairs that may come below δ take part.
+  std::vector<const Sampled*> objects, cameras, all;
+  for (const Pair& p : pairs) {
+    if (lowerBound(p.distance) >= delta_) continue;
+    const double first = firstBelow(p.distance, delta_, kContactDepth);
+    if (first < 0.0) continue;
+    for (const std::ptrdiff_t c : {static_cast<std::ptrdiff_t>(p.camera), p.other}) {
+      if (c < 0) continue;
+      double& start = result.contactStart[static_cast<std::size_t>(c)];
+      start = start < 0.0 ? first : std::min(start, first);
+    }
+    (p.withCamera() ? cameras : objects).push_back(&p.distance);
+    all.push_back(&p.distance);
+  }
+  auto below = [&](const std::vector<const Sampled*>& group) {
+    if (group.empty()) return 0.0;
+    // The nearest of several distances: its slope is bounded by the largest of theirs.
+    Sampled nearest{[&group](double tau) {
+                      double d = std::numeric_limits<double>::infinity();
+                      for (const Sampled* s : group)
+                        d = std::min(d, s->f(tau));
+                      return d;
+                    },
+                    h, std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(), 0.0};
+    for (const Sampled* s : group) {
+      nearest.f0 = std::min(nearest.f0, s->f0);
+      nearest.f1 = std::min(nearest.f1, s->f1);
+      nearest.lipschitz = std::max(nearest.lipschitz, s->lipschitz);
+    }
+    return timeBelow(nearest, delta_, kContactDepth);
+  };
+  result.objectContactTime = below(objects);
+  result.cameraContactTime = below(cameras);
+  result.contactTime = below(all);
+  return result;
+}
+
+}  // namespace camcov::safety

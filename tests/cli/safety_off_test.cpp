@@ -1,0 +1,77 @@
+// `--set safety.enabled=false` gives back the runs camcov made before the safety layer existed,
+// byte for byte in everything that describes the run (poses, goals, coverage, utilization,
+// repulsion, reward, the sampled distances, the controller's events); the layer's additions
+// (continuous-time distances, contact events) are left out of the comparison. The hashes
+// were taken from runs of commit 22712ab, the last one without the layer:
+//   camcov run ../shared/coverage_scenes/SCENE.json --method M --seed N
+// then FNV-1a of the JSON dump of those keys, as computed below.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "records/run_record.h"
+#include "support/run_camcov.h"
+#include "support/scratch.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+std::uint64_t runHash(const nlohmann::json& run) {
+  nlohmann::json subset;
+  for (const char* key : {"time", "coverage", "utilization", "repulsion", "reward",
+                          "minObjectDistance", "minCameraDistance", "cameras", "goals"})
+    subset[key] = run.at("series").at(key);
+  subset["events"] = nlohmann::json::array();
+  for (const auto& e : run.at("events")) {
+    const std::string kind = e.at("kind");
+    if (kind != "avoidable-contact" && kind != "unavoidable-contact") subset["events"].push_back(e);
+  }
+  return records::fnv1a(subset.dump());
+}
+
+struct Golden {
+  const char* scene;
+  const char* method;
+  int seed;
+  std::uint64_t hash;
+};
+
+class SafetyOff : public ::testing::TestWithParam<Golden> {};
+
+TEST_P(SafetyOff, ReproducesTheRunsMadeBeforeTheSafetyLayer) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  const Golden g = GetParam();
+  const auto out = freshDir(fmt::format("safety-off-{}-{}", g.scene, g.method));
+  const std::string args =
+      fmt::format("run {}/{}.json --method {} --seed {} --out {}", publishedScenesDir().string(),
+                  g.scene, g.method, g.seed, out.string());
+  const auto off = runCamcov(args + " --set safety.enabled=false");
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  const auto file = out / fmt::format("{}-{}-seed{}.json", g.scene, g.method, g.seed);
+  EXPECT_EQ(runHash(nlohmann::json::parse(readFile(file))), g.hash);
+
+  // With the layer on (the default) the same run is another run, and keeps δ.
+  const auto on = runCamcov(args);
+  ASSERT_EQ(on.exitCode, 0) << on.err;
+  const auto run = nlohmann::json::parse(readFile(file));
+  if (std::string(g.scene) == "dynamic13") {
+    EXPECT_NE(runHash(run), g.hash);
+  }
+  EXPECT_EQ(run["summary"]["avoidableContactTime"], 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Published, SafetyOff,
+    ::testing::Values(Golden{"dynamic13", "paper", 1, 0x65697f456ece98faull},  // hit at 6 mm
+                      Golden{"dynamic9", "paper", 2, 0x2ca5d741c9775d77ull},   // 2.6 s below δ
+                      Golden{"dynamic9", "local", 1, 0x399040c2a1fcb2c2ull},
+                      Golden{"dynamic1", "local", 1, 0xb973b74d9ebd39d4ull}),
+    [](const auto& info) {
+      return fmt::format("{}_{}_seed{}", info.param.scene, info.param.method, info.param.seed);
+    });
+
+}  // namespace
+}  // namespace camcov::testing

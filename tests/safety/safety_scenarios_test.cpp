@@ -1,0 +1,248 @@
+// The safety layer in whole runs, on adversarial scenes whose outcome is proven by hand in
+// the comment above each. A scripted controller plays the adversary (it commands what a
+// careless method might), so what is tested is the layer, which every method goes through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+#include "control/paper_controller.h"
+#include "safety/safety_filter.h"
+#include "sim/simulator.h"
+#include "support/small_worlds.h"
+
+namespace camcov::safety {
+namespace {
+
+// Commands camera j the velocity command(j, its position) every step.
+class ScriptedController final : public control::Controller {
+ public:
+  using Script = std::function<geometry::Vec2(std::size_t, geometry::Vec2)>;
+  explicit ScriptedController(Script script) : script_(std::move(script)) {}
+  void control(const control::Observation& o, std::span<control::CameraCommand> out) override {
+    for (std::size_t j = 0; j < out.size(); ++j)
+      out[j] = {script_(j, o.cameras[j].position()), 0.0};
+  }
+  std::optional<geometry::Pose> goal(std::size_t) const override { return std::nullopt; }
+  void takeEvents(std::vector<control::ControlEvent>&) override {}
+
+ private:
+  Script script_;
+};
+
+// Full speed towards a fixed point: a controller that never looks where it goes.
+ScriptedController::Script towards(geometry::Vec2 point, double speed) {
+  return [point, speed](std::size_t, geometry::Vec2 p) {
+    const double d = geometry::distance(p, point);
+    return d > 1e-9 ? (point - p) * (speed / d) : geometry::Vec2{};
+  };
+}
+
+struct Outcome {
+  sim::RunSummary summary;
+  std::vector<control::ControlEvent> events;
+  std::vector<double> minObjectDistance;  // per step, over the step (continuous)
+  std::vector<geometry::Pose> last;
+};
+
+class Keeper final : public sim::Recorder {
+ public:
+  explicit Keeper(Outcome& o) : o_(o) {}
+  void step(const sim::StepRecord& r) override {
+    o_.events.insert(o_.events.end(), r.events.begin(), r.events.end());
+    o_.minObjectDistance.push_back(r.minObjectDistanceInStep);
+    o_.last.assign(r.cameras.begin(), r.cameras.end());
+  }
+
+ private:
+  Outcome& o_;
+};
+
+Outcome run(const std::string& json, control::Controller& controller, double duration,
+            bool enabled = true) {
+  const scene::Scene scene = testing::sceneFromJson(json);
+  params::Parameters p;
+  p.sim.duration = duration;
+  p.safety.enabled = enabled;
+  Outcome o;
+  Keeper keeper(o);
+  o.summary = sim::simulate(scene, p, controller, keeper);
+  return o;
+}
+
+std::vector<const control::ControlEvent*> eventsOf(const Outcome& o, const std::string& kind) {
+  std::vector<const control::ControlEvent*> out;
+  for (const auto& e : o.events) {
+    if (e.kind == kind) out.push_back(&e);
+  }
+  return out;
+}
+
+// OUTPACED. A corridor 30 × 4 m; a bar target 0.2 m × 3.6 m (y from 0.2 to 3.8) shuttles along
+// it at 3 m/s from x = 2 to x = 28; the camera (0.5 m/s) starts at x = 15 in the middle.
+// Proof that contact is unavoidable: where the bar's centre line is at the camera's x, every
+// point of the corridor is within 0.2 m < δ of the bar; the bar first reaches x = 15 at
+// t = 13/3 s, by when the camera has moved at most 2.2 m, so it cannot get past either end;
+// and it cannot stay out of the bar's way, since the bar crosses every x in [2, 28].
+// The layer must say so: "outpaced" (the bar alone closes faster than the camera can move
+// away; the walls, 2 m off, play no part) — and no time below δ may count as avoidable.
+const char* kCorridor = R"js({
+  "boundary": "POLYGON((0 0,30 0,30 4,0 4))",
+  "targets": [{"shape": "POLYGON((-0.1 -1.8,0.1 -1.8,0.1 1.8,-0.1 1.8))",
+               "path": "POLYGON((2 2,28 2))", "velocity": 3.0}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(15 2)", "angle": 180, "maxVelocity": 0.5, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOutpacedContact) {
+  ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
+  const Outcome o = run(kCorridor, stay, 10.0);
+  EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
+  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
+  const auto contacts = eventsOf(o, "unavoidable-contact");
+  ASSERT_FALSE(contacts.empty());
+  EXPECT_EQ(contacts.front()->reason, "outpaced") << contacts.front()->detail;
+  EXPECT_NE(contacts.front()->detail.find("target 0"), std::string::npos);
+  EXPECT_TRUE(eventsOf(o, "avoidable-contact").empty());
+}
+
+// CORNERED. A 10 m square room; a target 9.4 m wide (x from 0.3 to 9.7) and 2 m tall comes
+// down from y = 6..8 to y = 0.2..2.2 at 0.8 m/s and goes back; the camera (1 m/s, faster
+// than the target) starts at (5, 3), below it. Proof that contact is unavoidable: the camera
+// cannot get above the target (the gaps beside it are 0.3 m wide, so every point in them is
+// within 0.3 m < δ of it); once the target is down, every point below it is within 0.2 m of
+// its bottom edge, and the corners of the room within √(0.3² + 0.2²) = 0.36 m of its corners.
+// Yet no single threat outpaces the camera (1 m/s > 0.8 m/s): it is the wall that traps it,
+// so the layer must call it "cornered" and count nothing as avoidable.
+const char* kPress = R"js({
+  "boundary": "POLYGON((0 0,10 0,10 10,0 10))",
+  "targets": [{"shape": "POLYGON((-4.7 -1,4.7 -1,4.7 1,-4.7 1))",
+               "path": "POLYGON((5 7,5 1.2))", "velocity": 0.8}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(5 3)", "angle": 90, "maxVelocity": 1.0, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorneredContact) {
+  ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
+  const Outcome o = run(kPress, stay, 9.0);
+  EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
+  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
+  const auto contacts = eventsOf(o, "unavoidable-contact");
+  ASSERT_FALSE(contacts.empty());
+  EXPECT_EQ(contacts.front()->reason, "cornered") << contacts.front()->detail;
+  EXPECT_NE(contacts.front()->detail.find("boundary"), std::string::npos)
+      << contacts.front()->detail;
+  // Cornered means pressed to the wall, not pushed through it.
+  EXPECT_EQ(o.summary.boundaryClamps, 0);
+  // Without the layer the camera stands still and is hit far harder.
+  ScriptedController stayAgain([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
+  const Outcome bare = run(kPress, stayAgain, 9.0, false);
+  EXPECT_GT(bare.summary.objectCollisionTime, o.summary.objectCollisionTime);
+}
+
+// HEAD-ON. Two cameras 10 m apart, each commanded at its full 2 m/s straight at the other.
+// Proof that contact is avoidable: standing still is always admissible and keeps their
+// distance, so a velocity that keeps δ exists at every step. The layer must keep them
+// at least δ apart in continuous time, which the samples alone would not show.
+const char* kHeadOn = R"js({
+  "boundary": "POLYGON((-20 -20,20 -20,20 20,-20 20))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((0 15))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-5 0)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1},
+              {"pos": "POINT(5 0)", "angle": 180, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
+  ScriptedController collide([](std::size_t j, geometry::Vec2) {
+    return geometry::Vec2{j == 0 ? 2.0 : -2.0, 0.0};
+  });
+  const Outcome o = run(kHeadOn, collide, 5.0);
+  EXPECT_GE(o.summary.minCameraDistance, 0.5);
+  EXPECT_EQ(o.summary.cameraCollisionTime, 0.0);
+  EXPECT_EQ(o.summary.avoidableContactTime + o.summary.unavoidableContactTime, 0.0);
+  // Not stopped needlessly far apart either: about δ + margin.
+  EXPECT_LT(geometry::distance(o.last[0].position(), o.last[1].position()), 0.7);
+  ScriptedController collideAgain([](std::size_t j, geometry::Vec2) {
+    return geometry::Vec2{j == 0 ? 2.0 : -2.0, 0.0};
+  });
+  const Outcome bare = run(kHeadOn, collideAgain, 5.0, false);
+  EXPECT_LT(bare.summary.minCameraDistance, 0.5) << "without the layer they meet";
+  EXPECT_GT(bare.summary.avoidableContactTime, 0.0) << "and the layer judged it avoidable";
+}
+
+// A LONG ARM SWEEPING. A 4 m bar obstacle turns at 0.3 rad/s about its end at (15, 15), so
+// no point of it moves faster than 0.3 · 4.0012 = 1.2 m/s; the camera, at 1.5 m/s, is
+// commanded straight at the pivot all the time. Proof that contact is avoidable: moving
+// directly away from the nearest point of the bar at 1.5 m/s opens the distance whatever the
+// bar does, and the walls are over 10 m from the bar's reach, so a velocity keeping δ always
+// exists. The layer must therefore keep δ for the whole run, against a rotating object
+// whose speed it only knows from what it has seen.
+const char* kArm = R"js({
+  "boundary": "POLYGON((0 0,30 0,30 30,0 30))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((3 3))"}],
+  "obstacles": [{"shape": "POLYGON((0 -0.1,4 -0.1,4 0.1,0 0.1))", "path": "POLYGON((15 15))",
+                 "angularVelocity": 0.3}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(17 18)", "angle": 0, "maxVelocity": 1.5, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, ACameraPressingTowardsTheHubOfASweepingArmKeepsDelta) {
+  ScriptedController seek(towards({15.0, 15.0}, 1.5));
+  const Outcome o = run(kArm, seek, 30.0);
+  EXPECT_GE(o.summary.minObjectDistance, 0.5);
+  EXPECT_EQ(o.summary.objectCollisionTime, 0.0);
+  EXPECT_EQ(o.summary.unavoidableContacts + o.summary.avoidableContacts, 0);
+  ScriptedController seekAgain(towards({15.0, 15.0}, 1.5));
+  EXPECT_GT(run(kArm, seekAgain, 30.0, false).summary.objectCollisionTime, 0.0)
+      << "the scene must be a real threat";
+}
+
+// INSIDE d1. A camera 0.8 m from a pillar — closer than the planner's d1 = 1 m, so no
+// planner state is valid where it stands — commanded at full speed into the pillar.
+// Proof that contact is avoidable: the pillar does not move, so standing still keeps the
+// 0.8 m. The layer must stop the camera between δ and δ + margin, and the paper's method,
+// which starts there with no valid state, must not hit it either.
+const char* kInsideD1 = R"js({
+  "boundary": "POLYGON((0 0,20 0,20 20,0 20))",
+  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((15 15))"}],
+  "obstacles": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((5 5))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(6.8 5)", "angle": 45, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, ACameraStartingInsideD1CommandedIntoAPillarStopsBeyondDelta) {
+  ScriptedController ram(towards({5.0, 5.0}, 2.0));
+  const Outcome o = run(kInsideD1, ram, 3.0);
+  EXPECT_GE(o.summary.minObjectDistance, 0.5);
+  EXPECT_LE(o.minObjectDistance.back(), 0.5 + 0.1 + 1e-9);
+  EXPECT_EQ(o.summary.objectCollisionTime, 0.0);
+
+  const scene::Scene scene = testing::sceneFromJson(kInsideD1);
+  params::Parameters p;
+  p.sim.duration = 10.0;
+  control::PaperController paper(scene, p, 1);
+  Outcome withPaper;
+  Keeper keeper(withPaper);
+  withPaper.summary = sim::simulate(scene, p, paper, keeper);
+  EXPECT_GE(withPaper.summary.minObjectDistance, 0.5);
+}
+
+// WITHIN δ FROM THE START. A camera placed 0.3 m from a pillar (allowed: it is not inside it)
+// is in contact at t = 0, before anything could be done: unavoidable, "within-delta". The
+// layer must then take it out to δ (2 m/s against a static pillar: one step) and keep it.
+const char* kStartsWithin = R"js({
+  "boundary": "POLYGON((0 0,20 0,20 20,0 20))",
+  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((15 15))"}],
+  "obstacles": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((5 5))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(6.3 5)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
+
+TEST(SafetyScenarios, ACameraStartingWithinDeltaIsAnUnavoidableContactAndIsTakenOut) {
+  ScriptedController ram(towards({5.0, 5.0}, 2.0));
+  const Outcome o = run(kStartsWithin, ram, 3.0);
+  const auto contacts = eventsOf(o, "unavoidable-contact");
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts.front()->reason, "within-delta");
+  EXPECT_EQ(contacts.front()->time, 0.0);
+  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
+  EXPECT_LE(o.summary.unavoidableContactTime, 0.1 + 1e-12) << "out within one step";
+  EXPECT_GE(o.minObjectDistance.back(), 0.5);
+}
+
+}  // namespace
+}  // namespace camcov::safety
