@@ -35,9 +35,9 @@ int run(const RunOptions& o) {
   const auto& s = record.summary;
   std::cout << fmt::format(
       "{} {} seed {}: average coverage {:.4f}, utilization {:.4f} over {} s; min distance to "
-      "objects {:.3f} m, {:.1f} s closer than δ\n  -> {}\n",
+      "objects {:.3f} m; closer than δ {:.2f} s avoidable, {:.2f} s unavoidable\n  -> {}\n",
       record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization, s.duration,
-      s.minObjectDistance, s.objectCollisionTime, file.string());
+      s.minObjectDistance, s.avoidableContactTime, s.unavoidableContactTime, file.string());
   if (!o.video.empty()) {
     viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,
                        viz::runVideoSettings(record));

@@ -119,7 +119,9 @@ void SafetyFilter::collect(const kinematics::World& world, std::span<const geome
     if (i == j) continue;
     const geometry::Vec2 q = cameras[i].position();
     const double d = geometry::distance(p, q);
-    if (d >= reach + maxSpeeds_[i] * horizon_) continue;
+    // Beyond this neither camera's share of the closing can bind (the half share at most
+    // doubles what camera j must give up).
+    if (d >= reach + (vmax + maxSpeeds_[i]) * horizon_) continue;
     // Coincident cameras: separate along the index order's x axis, deterministically.
     const geometry::Vec2 n = direction(q, p, {i < j ? 1.0 : -1.0, 0.0});
     if (i < j) {

@@ -12,7 +12,9 @@ namespace {
 struct Pair {
   std::size_t camera = 0;
   std::ptrdiff_t other = -1;  // the other camera; −1: the pair is a camera and an object
-  Sampled distance;
+  bool target = false;        // for an object: a target (else an obstacle), and which
+  std::size_t object = 0;
+  Sampled distance;  // f is set only when the pair has to be searched: most never are
   bool withCamera() const { return other >= 0; }
 };
 
@@ -46,20 +48,12 @@ StepContacts StepAccounting::measure(const kinematics::World& before,
     const geometry::Vec2 p0 = from[j].position(), p1 = to[j].position();
     auto addObject = [&](bool isTarget, std::size_t i, const geometry::Ring& r0,
                          const geometry::Ring& r1, double speed) {
-      Sampled s;
-      s.h = h;
-      s.f0 = geometry::distanceToPolygon(r0, p0);
-      s.f1 = geometry::distanceToPolygon(r1, p1);
-      s.lipschitz = cameraSpeed(j) + speed;
-      s.f = [this, isTarget, i, t0, j, cameraAt, ring = geometry::Ring()](double tau) mutable {
-        if (isTarget) {
-          kinematics_.placeTarget(i, t0 + tau, ring);
-        } else {
-          kinematics_.placeObstacle(i, t0 + tau, ring);
-        }
-        return geometry::distanceToPolygon(ring, cameraAt(j, tau));
-      };
-      pairs.push_back({j, -1, std::move(s)});
+      const Sampled s{{},
+                      h,
+                      geometry::distanceToPolygon(r0, p0),
+                      geometry::distanceToPolygon(r1, p1),
+                      cameraSpeed(j) + speed};
+      pairs.push_back({j, -1, isTarget, i, s});
     };
     for (std::size_t i = 0; i < before.targets.size(); ++i)
       addObject(true, i, before.targets[i], after.targets[i], targetSpeeds_[i]);
@@ -68,15 +62,38 @@ StepContacts StepAccounting::measure(const kinematics::World& before,
     for (std::size_t i = 0; i < j; ++i) {
       // Both move linearly, so their offset does too: |r(τ)| with r linear, slope ≤ |r1 − r0|/h.
       const geometry::Vec2 r0 = p0 - from[i].position(), r1 = p1 - to[i].position();
-      Sampled s;
-      s.h = h;
-      s.f0 = geometry::norm(r0);
-      s.f1 = geometry::norm(r1);
-      s.lipschitz = h > 0.0 ? geometry::distance(r0, r1) / h : 0.0;
-      s.f = [r0, r1, h](double tau) { return geometry::norm(geometry::lerp(r0, r1, tau / h)); };
-      pairs.push_back({j, static_cast<std::ptrdiff_t>(i), std::move(s)});
+      const Sampled s{{},
+                      h,
+                      geometry::norm(r0),
+                      geometry::norm(r1),
+                      h > 0.0 ? geometry::distance(r0, r1) / h : 0.0};
+      pairs.push_back({j, static_cast<std::ptrdiff_t>(i), false, 0, s});
     }
   }
+  // The distance between the step's ends, for a pair about to be searched.
+  auto follow = [&](Pair& p) -> const Sampled& {
+    if (p.distance.f) return p.distance;
+    const std::size_t j = p.camera;
+    if (p.withCamera()) {
+      const auto i = static_cast<std::size_t>(p.other);
+      const geometry::Vec2 r0 = from[j].position() - from[i].position();
+      const geometry::Vec2 r1 = to[j].position() - to[i].position();
+      p.distance.f = [r0, r1, h](double tau) {
+        return geometry::norm(geometry::lerp(r0, r1, tau / h));
+      };
+    } else {
+      p.distance.f = [this, target = p.target, i = p.object, t0, j, cameraAt,
+                      ring = geometry::Ring()](double tau) mutable {
+        if (target) {
+          kinematics_.placeTarget(i, t0 + tau, ring);
+        } else {
+          kinematics_.placeObstacle(i, t0 + tau, ring);
+        }
+        return geometry::distanceToPolygon(ring, cameraAt(j, tau));
+      };
+    }
+    return p.distance;
+  };
 
   StepContacts result;
   result.contactStart.assign(from.size(), -1.0);
@@ -86,17 +103,17 @@ StepContacts StepAccounting::measure(const kinematics::World& before,
     double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
     best = std::min({best, p.distance.f0, p.distance.f1});
   }
-  for (const Pair& p : pairs) {
+  for (Pair& p : pairs) {
     double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
     if (lowerBound(p.distance) < best - kDistanceTolerance)
-      best = std::min(best, lipschitzMinimum(p.distance, kDistanceTolerance, best));
+      best = std::min(best, lipschitzMinimum(follow(p), kDistanceTolerance, best));
   }
 
   // Contacts: only pairs that may come below δ take part.
   std::vector<const Sampled*> objects, cameras, all;
-  for (const Pair& p : pairs) {
+  for (Pair& p : pairs) {
     if (lowerBound(p.distance) >= delta_) continue;
-    const double first = firstBelow(p.distance, delta_, kContactDepth);
+    const double first = firstBelow(follow(p), delta_, kContactDepth);
     if (first < 0.0) continue;
     for (const std::ptrdiff_t c : {static_cast<std::ptrdiff_t>(p.camera), p.other}) {
       if (c < 0) continue;
