@@ -26,7 +26,9 @@ Registration addParamsCommand(CLI::App& app) {
             for (const auto& f : params::parameterTable()) {
               std::cout << fmt::format("{:<29} {:<4} {:>8}  {:<10} [{}, {}]{}\n    {}\n", f.key,
                                        f.symbol, f.get(p), f.unit, f.min, f.max,
-                                       f.boolean ? " true|false" : f.integer ? " integer" : "",
+                                       f.boolean   ? " true|false"
+                                       : f.integer ? " integer"
+                                                   : "",
                                        f.description);
             }
             return 0;

@@ -62,9 +62,8 @@ void layer(benchmark::State& state, const scene::Scene& scene) {
       // The velocity the run took, as the command: the common case, nothing to change.
       velocities.clear();
       for (std::size_t j = 0; j < r.steps[k].cameras.size(); ++j)
-        velocities.push_back((r.steps[k + 1].cameras[j].position() -
-                              r.steps[k].cameras[j].position()) /
-                             p.sim.dt);
+        velocities.push_back(
+            (r.steps[k + 1].cameras[j].position() - r.steps[k].cameras[j].position()) / p.sim.dt);
       filter.apply(worlds[k], r.steps[k].cameras, velocities);
       benchmark::DoNotOptimize(velocities.data());
     }

@@ -56,6 +56,25 @@ TEST(ParametersJson, RoundTripsEveryField) {
   EXPECT_TRUE(toJson(Parameters{})["global"]["K"].is_number_integer());
 }
 
+TEST(Parameters, TheSafetySwitchIsTrueOrFalseInJsonAndOnTheCommandLine) {
+  Parameters p;
+  EXPECT_TRUE(p.safety.enabled) << "the layer is on by default";
+  applyAssignment(p, "safety.enabled=false");
+  EXPECT_FALSE(p.safety.enabled);
+  applyAssignment(p, "safety.enabled=1");
+  EXPECT_TRUE(p.safety.enabled);
+  EXPECT_THROW(applyAssignment(p, "safety.enabled=maybe"), InputError);
+  EXPECT_THROW(applyAssignment(p, "safety.enabled=0.5"), InputError);
+  EXPECT_TRUE(toJson(p)["safety"]["enabled"].is_boolean());
+  const auto off = nlohmann::json::parse(R"({"safety": {"enabled": false}})");
+  EXPECT_FALSE(fromJson(off, "f.json").safety.enabled);
+  // A number where a switch belongs, or a switch where a number belongs, is an error.
+  EXPECT_THROW(fromJson(nlohmann::json::parse(R"({"safety": {"enabled": 0}})"), "f.json"),
+               InputError);
+  EXPECT_THROW(fromJson(nlohmann::json::parse(R"({"safety": {"margin": true}})"), "f.json"),
+               InputError);
+}
+
 TEST(ParametersJson, ReadsASubsetOverTheBase) {
   const auto j = nlohmann::json::parse(R"({"global": {"K": 200}, "reward": {"lambda2": 0.4}})");
   const Parameters p = fromJson(j, "subset");

@@ -106,6 +106,28 @@ TEST(Report, BenchWritesItWithEverySceneInEverySection) {
   EXPECT_NE(section(html, "parameters").find("Table I"), std::string::npos);
 }
 
+TEST(Report, ShowsContactsBelowDeltaByKindInTheTableAndOnTheTimePlots) {
+  // The corridor scene of tests/data/safety: a contact no method can avoid, proven there.
+  const ScratchDir dir;
+  const auto r =
+      runCamcov("bench --scenes " + (testDataDir() / "safety" / "corridor_outpaced.json").string() +
+                " --seeds 2 --duration 8 --set global.K=30 --set planner.T2=0.05"
+                " --jobs 2 --videos none --out " +
+                (dir / "results").string());
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const std::string html = readFile(dir / "results" / "report.html");
+  const std::string summary = section(html, "summary");
+  EXPECT_NE(summary.find("avoidable / unavoidable"), std::string::npos);
+  EXPECT_NE(summary.find("runs with avoidable contact"), std::string::npos);
+  // Each method: no avoidable time (0.00 first), some unavoidable, no run with an avoidable one.
+  EXPECT_EQ(countOf(summary, "\">0.00 / 0."), 2) << summary;
+  EXPECT_EQ(countOf(summary, "2 runs had an unavoidable contact\">0 / 2<"), 2) << summary;
+  const std::string series = section(html, "time-series");
+  EXPECT_GE(countOf(series, "unavoidable-contact camera 1 (outpaced)"), 2) << "a mark per method";
+  EXPECT_NE(series.find(">unavoidable contact &lt; δ<"), std::string::npos) << "in the legend";
+  EXPECT_EQ(series.find(">avoidable contact &lt; δ<"), std::string::npos);
+}
+
 TEST(Report, EveryPlotHasAxesAndTheRightNumberOfBoxes) {
   const ScratchDir dir;
   ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);

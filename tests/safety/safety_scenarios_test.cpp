@@ -1,6 +1,7 @@
-// The safety layer in whole runs, on adversarial scenes whose outcome is proven by hand in
-// the comment above each. A scripted controller plays the adversary (it commands what a
-// careless method might), so what is tested is the layer, which every method goes through.
+// The safety layer in whole runs, on the adversarial scenes of tests/data/safety/, whose
+// outcome is proven by hand in the comment above each test (and in the README there). A
+// scripted controller plays the adversary (it commands what a careless method might), so
+// what is tested is the layer, which every method goes through.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,8 +9,9 @@
 
 #include "control/paper_controller.h"
 #include "safety/safety_filter.h"
+#include "scene/scene_loader.h"
 #include "sim/simulator.h"
-#include "support/small_worlds.h"
+#include "support/test_paths.h"
 
 namespace camcov::safety {
 namespace {
@@ -58,9 +60,13 @@ class Keeper final : public sim::Recorder {
   Outcome& o_;
 };
 
-Outcome run(const std::string& json, control::Controller& controller, double duration,
+std::filesystem::path sceneFile(const std::string& name) {
+  return testing::testDataDir() / "safety" / (name + ".json");
+}
+
+Outcome run(const std::string& name, control::Controller& controller, double duration,
             bool enabled = true) {
-  const scene::Scene scene = testing::sceneFromJson(json);
+  const scene::Scene scene = scene::loadScene(sceneFile(name));
   params::Parameters p;
   p.sim.duration = duration;
   p.safety.enabled = enabled;
@@ -86,16 +92,10 @@ std::vector<const control::ControlEvent*> eventsOf(const Outcome& o, const std::
 // and it cannot stay out of the bar's way, since the bar crosses every x in [2, 28].
 // The layer must say so: "outpaced" (the bar alone closes faster than the camera can move
 // away; the walls, 2 m off, play no part) — and no time below δ may count as avoidable.
-const char* kCorridor = R"js({
-  "boundary": "POLYGON((0 0,30 0,30 4,0 4))",
-  "targets": [{"shape": "POLYGON((-0.1 -1.8,0.1 -1.8,0.1 1.8,-0.1 1.8))",
-               "path": "POLYGON((2 2,28 2))", "velocity": 3.0}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(15 2)", "angle": 180, "maxVelocity": 0.5, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOutpacedContact) {
   ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
-  const Outcome o = run(kCorridor, stay, 10.0);
+  const Outcome o = run("corridor_outpaced", stay, 10.0);
   EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
   EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
   const auto contacts = eventsOf(o, "unavoidable-contact");
@@ -113,16 +113,10 @@ TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOut
 // its bottom edge, and the corners of the room within √(0.3² + 0.2²) = 0.36 m of its corners.
 // Yet no single threat outpaces the camera (1 m/s > 0.8 m/s): it is the wall that traps it,
 // so the layer must call it "cornered" and count nothing as avoidable.
-const char* kPress = R"js({
-  "boundary": "POLYGON((0 0,10 0,10 10,0 10))",
-  "targets": [{"shape": "POLYGON((-4.7 -1,4.7 -1,4.7 1,-4.7 1))",
-               "path": "POLYGON((5 7,5 1.2))", "velocity": 0.8}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(5 3)", "angle": 90, "maxVelocity": 1.0, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorneredContact) {
   ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
-  const Outcome o = run(kPress, stay, 9.0);
+  const Outcome o = run("wall_press_cornered", stay, 9.0);
   EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
   EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
   const auto contacts = eventsOf(o, "unavoidable-contact");
@@ -134,7 +128,7 @@ TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorne
   EXPECT_EQ(o.summary.boundaryClamps, 0);
   // Without the layer the camera stands still and is hit far harder.
   ScriptedController stayAgain([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
-  const Outcome bare = run(kPress, stayAgain, 9.0, false);
+  const Outcome bare = run("wall_press_cornered", stayAgain, 9.0, false);
   EXPECT_GT(bare.summary.objectCollisionTime, o.summary.objectCollisionTime);
 }
 
@@ -142,18 +136,12 @@ TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorne
 // Proof that contact is avoidable: standing still is always admissible and keeps their
 // distance, so a velocity that keeps δ exists at every step. The layer must keep them
 // at least δ apart in continuous time, which the samples alone would not show.
-const char* kHeadOn = R"js({
-  "boundary": "POLYGON((-20 -20,20 -20,20 20,-20 20))",
-  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((0 15))"}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(-5 0)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1},
-              {"pos": "POINT(5 0)", "angle": 180, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
   ScriptedController collide([](std::size_t j, geometry::Vec2) {
     return geometry::Vec2{j == 0 ? 2.0 : -2.0, 0.0};
   });
-  const Outcome o = run(kHeadOn, collide, 5.0);
+  const Outcome o = run("head_on_cameras", collide, 5.0);
   EXPECT_GE(o.summary.minCameraDistance, 0.5);
   EXPECT_EQ(o.summary.cameraCollisionTime, 0.0);
   EXPECT_EQ(o.summary.avoidableContactTime + o.summary.unavoidableContactTime, 0.0);
@@ -162,7 +150,7 @@ TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
   ScriptedController collideAgain([](std::size_t j, geometry::Vec2) {
     return geometry::Vec2{j == 0 ? 2.0 : -2.0, 0.0};
   });
-  const Outcome bare = run(kHeadOn, collideAgain, 5.0, false);
+  const Outcome bare = run("head_on_cameras", collideAgain, 5.0, false);
   EXPECT_LT(bare.summary.minCameraDistance, 0.5) << "without the layer they meet";
   EXPECT_GT(bare.summary.avoidableContactTime, 0.0) << "and the layer judged it avoidable";
 }
@@ -174,22 +162,15 @@ TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
 // bar does, and the walls are over 10 m from the bar's reach, so a velocity keeping δ always
 // exists. The layer must therefore keep δ for the whole run, against a rotating object
 // whose speed it only knows from what it has seen.
-const char* kArm = R"js({
-  "boundary": "POLYGON((0 0,30 0,30 30,0 30))",
-  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((3 3))"}],
-  "obstacles": [{"shape": "POLYGON((0 -0.1,4 -0.1,4 0.1,0 0.1))", "path": "POLYGON((15 15))",
-                 "angularVelocity": 0.3}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(17 18)", "angle": 0, "maxVelocity": 1.5, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, ACameraPressingTowardsTheHubOfASweepingArmKeepsDelta) {
   ScriptedController seek(towards({15.0, 15.0}, 1.5));
-  const Outcome o = run(kArm, seek, 30.0);
+  const Outcome o = run("sweeping_arm", seek, 30.0);
   EXPECT_GE(o.summary.minObjectDistance, 0.5);
   EXPECT_EQ(o.summary.objectCollisionTime, 0.0);
   EXPECT_EQ(o.summary.unavoidableContacts + o.summary.avoidableContacts, 0);
   ScriptedController seekAgain(towards({15.0, 15.0}, 1.5));
-  EXPECT_GT(run(kArm, seekAgain, 30.0, false).summary.objectCollisionTime, 0.0)
+  EXPECT_GT(run("sweeping_arm", seekAgain, 30.0, false).summary.objectCollisionTime, 0.0)
       << "the scene must be a real threat";
 }
 
@@ -198,21 +179,15 @@ TEST(SafetyScenarios, ACameraPressingTowardsTheHubOfASweepingArmKeepsDelta) {
 // Proof that contact is avoidable: the pillar does not move, so standing still keeps the
 // 0.8 m. The layer must stop the camera between δ and δ + margin, and the paper's method,
 // which starts there with no valid state, must not hit it either.
-const char* kInsideD1 = R"js({
-  "boundary": "POLYGON((0 0,20 0,20 20,0 20))",
-  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((15 15))"}],
-  "obstacles": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((5 5))"}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(6.8 5)", "angle": 45, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, ACameraStartingInsideD1CommandedIntoAPillarStopsBeyondDelta) {
   ScriptedController ram(towards({5.0, 5.0}, 2.0));
-  const Outcome o = run(kInsideD1, ram, 3.0);
+  const Outcome o = run("inside_d1_pillar", ram, 3.0);
   EXPECT_GE(o.summary.minObjectDistance, 0.5);
   EXPECT_LE(o.minObjectDistance.back(), 0.5 + 0.1 + 1e-9);
   EXPECT_EQ(o.summary.objectCollisionTime, 0.0);
 
-  const scene::Scene scene = testing::sceneFromJson(kInsideD1);
+  const scene::Scene scene = scene::loadScene(sceneFile("inside_d1_pillar"));
   params::Parameters p;
   p.sim.duration = 10.0;
   control::PaperController paper(scene, p, 1);
@@ -225,16 +200,10 @@ TEST(SafetyScenarios, ACameraStartingInsideD1CommandedIntoAPillarStopsBeyondDelt
 // WITHIN δ FROM THE START. A camera placed 0.3 m from a pillar (allowed: it is not inside it)
 // is in contact at t = 0, before anything could be done: unavoidable, "within-delta". The
 // layer must then take it out to δ (2 m/s against a static pillar: one step) and keep it.
-const char* kStartsWithin = R"js({
-  "boundary": "POLYGON((0 0,20 0,20 20,0 20))",
-  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((15 15))"}],
-  "obstacles": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((5 5))"}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(6.3 5)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
 
 TEST(SafetyScenarios, ACameraStartingWithinDeltaIsAnUnavoidableContactAndIsTakenOut) {
   ScriptedController ram(towards({5.0, 5.0}, 2.0));
-  const Outcome o = run(kStartsWithin, ram, 3.0);
+  const Outcome o = run("starts_within_delta", ram, 3.0);
   const auto contacts = eventsOf(o, "unavoidable-contact");
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_EQ(contacts.front()->reason, "within-delta");
