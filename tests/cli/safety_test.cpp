@@ -1,8 +1,8 @@
-// `--set safety.enabled=false` gives back the runs camcov made before the safety layer existed,
-// byte for byte in everything that describes the run (poses, goals, coverage, utilization,
-// repulsion, reward, the sampled distances, the controller's events); the layer's additions
-// (continuous-time distances, contact events) are left out of the comparison. The hashes
-// were taken from runs of commit 22712ab, the last one without the layer:
+// The safety layer through the executable. `--set safety.enabled=false` gives back the runs camcov
+// made before the safety layer existed, byte for byte in everything that describes the run (poses,
+// goals, coverage, utilization, repulsion, reward, the sampled distances, the controller's events);
+// the layer's additions (continuous-time distances, contact events) are left out of the comparison.
+// The hashes were taken from runs of commit 22712ab, the last one without the layer:
 //   camcov run ../shared/coverage_scenes/SCENE.json --method M --seed N
 // then FNV-1a of the JSON dump of those keys, as computed below.
 #include <gtest/gtest.h>
@@ -72,6 +72,36 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) {
       return fmt::format("{}_{}_seed{}", info.param.scene, info.param.method, info.param.seed);
     });
+
+// On our own scenes the layer leaves contacts only where a target outruns the cameras
+// (docs/method.md). Each is unavoidable, begins with an event that says why, and the time
+// below δ in the rows adds up to the summary's.
+TEST(SafetyOn, AnOutrunCameraHasOnlyExplainedUnavoidableContacts) {
+  const auto out = freshDir("safety-on-fast-target");
+  const auto r =
+      runCamcov("run " + (ownScenesDir() / "dynamic_fast_target_slow_cameras.json").string() +
+                " --method paper --seed 1 --out " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto run =
+      nlohmann::json::parse(readFile(out / "dynamic_fast_target_slow_cameras-paper-seed1.json"));
+  const auto& summary = run["summary"];
+  EXPECT_EQ(summary["avoidableContactTime"], 0.0);
+  EXPECT_GT(summary["unavoidableContactTime"].get<double>(), 0.0);
+  int events = 0;
+  for (const auto& e : run["events"]) {
+    if (e["kind"] == "avoidable-contact") ADD_FAILURE() << e.dump();
+    if (e["kind"] != "unavoidable-contact") continue;
+    ++events;
+    EXPECT_EQ(e["reason"], "outpaced") << e.dump();  // a 3 m/s target, 0.8 m/s cameras
+    EXPECT_NE(e["detail"].get<std::string>().find("3.00 m/s"), std::string::npos) << e.dump();
+  }
+  EXPECT_EQ(events, summary["unavoidableContacts"].get<int>());
+  EXPECT_GT(events, 0);
+  double rows = 0.0;
+  for (const auto& t : run["series"]["unavoidableContactTime"])
+    rows += t.get<double>();
+  EXPECT_NEAR(rows, summary["unavoidableContactTime"].get<double>(), 1e-12);
+}
 
 }  // namespace
 }  // namespace camcov::testing
