@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "kinematics/camera_command.h"
 #include "kinematics/world.h"
 
 namespace camcov::control {
@@ -16,11 +17,6 @@ struct Observation {
   double time = 0.0;  // t, s
   const kinematics::World& world;
   std::span<const geometry::Pose> cameras;
-};
-
-struct CameraCommand {
-  geometry::Vec2 velocity;       // [ẋ, ẏ], m/s (saturated by the simulator to v_max)
-  double angularVelocity = 0.0;  // γ̇, rad/s (saturated to γ̇_max)
 };
 
 // Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",
@@ -39,7 +35,8 @@ class Controller {
  public:
   virtual ~Controller() = default;
   // Fills one command per camera.
-  virtual void control(const Observation& observation, std::span<CameraCommand> commands) = 0;
+  virtual void control(const Observation& observation,
+                       std::span<kinematics::CameraCommand> commands) = 0;
   // The goal camera j is heading for, if it follows a plan (drawn in frames).
   virtual std::optional<geometry::Pose> goal(std::size_t camera) const = 0;
   // Moves the events since the last call into `out`.

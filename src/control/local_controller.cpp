@@ -2,7 +2,8 @@
 
 namespace camcov::control {
 
-CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to, double dt) {
+kinematics::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
+                                         double dt) {
   return {(to.position() - from.position()) / dt, geometry::wrapAngle(to.yaw - from.yaw) / dt};
 }
 
@@ -23,7 +24,8 @@ LocalController::LocalController(const scene::Scene& scene, const params::Parame
       model_(params.reward, scene.fovHalfAngle),
       local_(params.local) {}
 
-void LocalController::control(const Observation& observation, std::span<CameraCommand> commands) {
+void LocalController::control(const Observation& observation,
+                              std::span<kinematics::CameraCommand> commands) {
   model_.setWorld(observation.world);
   team_.assign(observation.cameras.begin(), observation.cameras.end());
   local_.improve(model_, team_, allCameras(team_.size()), limits_);

@@ -13,7 +13,8 @@ class LocalController final : public Controller {
  public:
   LocalController(const scene::Scene& scene, const params::Parameters& params);
 
-  void control(const Observation& observation, std::span<CameraCommand> commands) override;
+  void control(const Observation& observation,
+               std::span<kinematics::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t) const override { return std::nullopt; }
   void takeEvents(std::vector<ControlEvent>&) override {}
 
@@ -26,7 +27,8 @@ class LocalController final : public Controller {
 };
 
 // The velocity that takes `from` to `to` in one step of dt (yaw the short way round).
-CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to, double dt);
+kinematics::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
+                                         double dt);
 // Per-step limits v_max·dt and γ̇_max·dt of every camera.
 std::vector<planners::StepLimits> stepLimits(const scene::Scene& scene, double dt);
 // Bit mask with one bit per camera set.

@@ -147,7 +147,8 @@ void PaperController::refineGoals(const Observation& observation) {
   }
 }
 
-void PaperController::control(const Observation& observation, std::span<CameraCommand> commands) {
+void PaperController::control(const Observation& observation,
+                              std::span<kinematics::CameraCommand> commands) {
   model_.setWorld(observation.world);
   validity_.setWorld(observation.world);
   const double t = observation.time;

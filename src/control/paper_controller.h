@@ -31,7 +31,8 @@ class PaperController final : public Controller {
   PaperController(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed);
   ~PaperController() override;
 
-  void control(const Observation& observation, std::span<CameraCommand> commands) override;
+  void control(const Observation& observation,
+               std::span<kinematics::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t camera) const override;
   void takeEvents(std::vector<ControlEvent>& out) override;
 

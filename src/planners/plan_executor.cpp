@@ -99,10 +99,10 @@ double PlanExecutor::remaining(const geometry::Pose& pose) const {
          0.5 * std::abs(geometry::wrapAngle(goal().yaw - pose.yaw));
 }
 
-control::CameraCommand PlanExecutor::step(const geometry::Pose& pose,
-                                          const kinematics::World& world,
-                                          std::span<const geometry::Pose> otherCameras,
-                                          double maxVelocity, double dt, double t) {
+kinematics::CameraCommand PlanExecutor::step(const geometry::Pose& pose,
+                                             const kinematics::World& world,
+                                             std::span<const geometry::Pose> otherCameras,
+                                             double maxVelocity, double dt, double t) {
   if (status_ != Status::Executing) return {};
   const geometry::Vec2 p = pose.position();
   if (geometry::distance(p, goal().position()) <= kArrivalDistance &&
@@ -123,7 +123,7 @@ control::CameraCommand PlanExecutor::step(const geometry::Pose& pose,
 
   const geometry::Vec2 attractive = (intermediate_.position() - p) / dt;
   const geometry::Vec2 repulsive = repulsiveDirection(p, world, otherCameras, d2_) * maxVelocity;
-  control::CameraCommand u;
+  kinematics::CameraCommand u;
   u.velocity = attractive * potential_.lambda4 - repulsive * potential_.lambda5;
   u.angularVelocity = geometry::wrapAngle(intermediate_.yaw - pose.yaw) / dt;
   return u;

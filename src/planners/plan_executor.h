@@ -11,8 +11,8 @@
 #include <span>
 #include <vector>
 
-#include "control/controller.h"
 #include "geometry/vec2.h"
+#include "kinematics/camera_command.h"
 #include "kinematics/world.h"
 #include "params/parameters.h"
 
@@ -42,9 +42,9 @@ class PlanExecutor {
   const geometry::Pose& intermediateGoal() const { return intermediate_; }
 
   // The command for this step; updates the status (Completed, or Aborted after T3).
-  control::CameraCommand step(const geometry::Pose& pose, const kinematics::World& world,
-                              std::span<const geometry::Pose> otherCameras, double maxVelocity,
-                              double dt, double t);
+  kinematics::CameraCommand step(const geometry::Pose& pose, const kinematics::World& world,
+                                 std::span<const geometry::Pose> otherCameras, double maxVelocity,
+                                 double dt, double t);
 
  private:
   void chooseIntermediateGoal(geometry::Vec2 p, double reach);

@@ -38,7 +38,7 @@ double minCameraDistance(std::span<const geometry::Pose> cameras) {
 }
 
 // Constraint 3 of Problem 2.2: ‖[ẋ ẏ]‖ ≤ v_max and |γ̇| ≤ γ̇_max. Non-finite commands stop.
-control::CameraCommand saturate(control::CameraCommand u, const scene::CameraSpec& limits) {
+kinematics::CameraCommand saturate(kinematics::CameraCommand u, const scene::CameraSpec& limits) {
   if (!std::isfinite(u.velocity.x) || !std::isfinite(u.velocity.y)) u.velocity = {};
   if (!std::isfinite(u.angularVelocity)) u.angularVelocity = 0.0;
   const double speed = geometry::norm(u.velocity);
@@ -134,7 +134,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   std::vector<geometry::Pose> cameras, previousCameras;
   for (const auto& c : scene.cameras)
     cameras.push_back(c.initial);
-  std::vector<control::CameraCommand> commands(cameras.size());
+  std::vector<kinematics::CameraCommand> commands(cameras.size());
   std::vector<geometry::Vec2> velocities(cameras.size());
   std::vector<std::optional<geometry::Pose>> goals(cameras.size());
   std::vector<control::ControlEvent> events;

@@ -12,8 +12,8 @@ namespace {
 // Asks every camera for the same command, and remembers what it was shown.
 class ConstantController final : public control::Controller {
  public:
-  explicit ConstantController(control::CameraCommand u) : u_(u) {}
-  void control(const control::Observation& o, std::span<control::CameraCommand> out) override {
+  explicit ConstantController(kinematics::CameraCommand u) : u_(u) {}
+  void control(const control::Observation& o, std::span<kinematics::CameraCommand> out) override {
     seenTimes.push_back(o.time);
     seenWorldTimes.push_back(o.world.time);
     for (auto& c : out)
@@ -28,7 +28,7 @@ class ConstantController final : public control::Controller {
   std::vector<double> seenTimes, seenWorldTimes;
 
  private:
-  control::CameraCommand u_;
+  kinematics::CameraCommand u_;
   std::vector<control::ControlEvent> events_;
 };
 

@@ -1,0 +1,111 @@
+// The folders tell the story of the data, and a stage may only use what comes before it:
+// no file of a stage includes a header of a stage after it. Linking catches a wrong-way
+// call, not a wrong-way type (a struct needs no symbol), so the order is checked here, read
+// from the CMake files that declare it: the top-level CMakeLists.txt and src/CMakeLists.txt.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/scratch.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The add_subdirectory() arguments of a CMakeLists.txt, in order.
+std::vector<std::string> subdirectories(const fs::path& cmakeLists) {
+  std::ifstream in(cmakeLists);
+  std::vector<std::string> out;
+  const std::regex line(R"(^\s*add_subdirectory\(([^)\s]+)\))");
+  for (std::string text; std::getline(in, text);) {
+    std::smatch m;
+    if (std::regex_search(text, m, line)) out.push_back(m[1]);
+  }
+  return out;
+}
+
+// Stage folders (relative to the root) in data-flow order: "src" expands to its own list.
+std::vector<std::string> stageOrder(const fs::path& root) {
+  std::vector<std::string> order;
+  for (const std::string& dir : subdirectories(root / "CMakeLists.txt")) {
+    if (dir == "tests") continue;
+    if (dir == "src") {
+      for (const std::string& stage : subdirectories(root / "src" / "CMakeLists.txt"))
+        order.push_back("src/" + stage);
+    } else {
+      order.push_back(dir);
+    }
+  }
+  return order;
+}
+
+// "file:line: <stage> includes <later stage>/..." for every wrong-way include under `root`.
+std::vector<std::string> wrongWayIncludes(const fs::path& root) {
+  const std::vector<std::string> order = stageOrder(root);
+  std::map<std::string, std::size_t> rank;  // by the name used in includes: "control", "viz"
+  for (std::size_t i = 0; i < order.size(); ++i)
+    rank[fs::path(order[i]).filename().string()] = i;
+  const std::regex include(R"(^\s*#\s*include\s*"([a-z_]+)/)");
+  std::vector<std::string> found;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (const auto& entry : fs::recursive_directory_iterator(root / order[i])) {
+      const auto ext = entry.path().extension();
+      if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+      std::ifstream in(entry.path());
+      int number = 0;
+      for (std::string text; std::getline(in, text);) {
+        ++number;
+        std::smatch m;
+        if (!std::regex_search(text, m, include)) continue;
+        const auto it = rank.find(m[1]);
+        if (it != rank.end() && it->second > i) {
+          found.push_back(fs::relative(entry.path(), root).string() + ":" + std::to_string(number) +
+                          ": " + order[i] + " includes " + order[it->second] + " (" + text + ")");
+        }
+      }
+    }
+  }
+  return found;
+}
+
+TEST(IncludeOrder, TheTreeReadsTheStagesInOrder) {
+  const fs::path root = CAMCOV_SOURCE_DIR;
+  const std::vector<std::string> order = stageOrder(root);
+  ASSERT_GE(order.size(), 10u) << "the stage lists were not found";
+  EXPECT_EQ(order.front(), "src/geometry");
+  EXPECT_EQ(order.back(), "src/cli") << "the CLI wires everything, so it comes last";
+  std::string report;
+  for (const std::string& line : wrongWayIncludes(root))
+    report += line + "\n";
+  EXPECT_TRUE(report.empty()) << "wrong-way includes:\n" << report;
+}
+
+TEST(IncludeOrder, APlantedWrongWayIncludeIsFound) {
+  const ScratchDir dir;
+  const fs::path root = dir.path();
+  auto write = [&](const fs::path& file, const std::string& text) {
+    fs::create_directories((root / file).parent_path());
+    std::ofstream(root / file) << text;
+  };
+  write("CMakeLists.txt",
+        "add_subdirectory(src)\nadd_subdirectory(viz)\nadd_subdirectory(tests)\n");
+  write("src/CMakeLists.txt", "add_subdirectory(geometry)\nadd_subdirectory(planners)\n");
+  write("src/geometry/ring.h", "#include \"geometry/vec2.h\"\n");
+  write("src/planners/plan.h", "#include \"geometry/ring.h\"\n");
+  write("viz/frame.h", "#include \"planners/plan.h\"\n");
+  EXPECT_TRUE(wrongWayIncludes(root).empty());
+  write("src/geometry/vec2.h", "#pragma once\n  #include \"viz/frame.h\"\n");
+  const auto found = wrongWayIncludes(root);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].rfind("src/geometry/vec2.h:2: src/geometry includes viz", 0), 0u) << found[0];
+}
+
+}  // namespace
+}  // namespace camcov::testing
