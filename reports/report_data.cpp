@@ -4,7 +4,6 @@
 
 #include "records/run_files.h"
 #include "reports/markup.h"
-#include "reports/summary_reader.h"
 #include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
@@ -160,7 +159,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
   }
   ReportData data;
   data.manifest = std::move(*manifest);
-  data.summary = loadSummaryFile(resultsDir / "summary.json");
+  data.summary = records::loadSummaryFile(resultsDir / "summary.json");
   data.timings = folder.readTimings();
   for (const auto& comparison : data.summary.scenes) {
     SceneData scene;

@@ -2,6 +2,7 @@
 // machines) into one, then write the summary and logs as `camcov bench` would.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -9,6 +10,7 @@
 #include "cli/bench_outputs.h"
 #include "cli/command.h"
 #include "params/parameter_table.h"
+#include "records/atomic_file.h"
 #include "util/input_error.h"
 
 namespace camcov::cli {
@@ -47,12 +49,17 @@ int merge(const MergeOptions& o) {
       timings[stem] = t;
     if (fs::exists(target.runsDir()) && fs::equivalent(source.runsDir(), target.runsDir()))
       continue;
-    fs::create_directories(target.runsDir());
+    // Each file whole or not at all, and a run's JSON after its CSV: a run counts as finished
+    // when its JSON exists, so a killed merge resumes like a killed batch.
+    std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(source.runsDir())) {
-      if (entry.path().filename().string().find(".tmp-") != std::string::npos) continue;
-      fs::copy_file(entry.path(), target.runsDir() / entry.path().filename(),
-                    fs::copy_options::overwrite_existing);
+      if (!records::isTemporaryFile(entry.path())) files.push_back(entry.path());
     }
+    std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+      return std::pair(a.extension() == ".json", a) < std::pair(b.extension() == ".json", b);
+    });
+    for (const fs::path& file : files)
+      records::copyFileAtomically(file, target.runsDir() / file.filename());
   }
   manifest->command = invocation();
   target.writeManifest(*manifest);

@@ -5,6 +5,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +20,9 @@ std::string systemError(const std::string& what, const std::filesystem::path& fi
   return what + " " + file.string() + ": " + std::strerror(errno);
 }
 
+// The temporary file's name: the target's, this marker, the writing process's id.
+constexpr std::string_view kTemporaryMarker = ".tmp-";
+
 }  // namespace
 
 void createParentFolder(const std::filesystem::path& file) {
@@ -30,7 +35,8 @@ void createParentFolder(const std::filesystem::path& file) {
 
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
   createParentFolder(file);
-  const std::filesystem::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
+  const std::filesystem::path temporary =
+      file.string() + std::string(kTemporaryMarker) + std::to_string(::getpid());
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(systemError("cannot create", temporary));
   std::size_t written = 0;
@@ -55,6 +61,18 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view con
     ::unlink(temporary.c_str());
     throw std::runtime_error(message);
   }
+}
+
+void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  if (!in) throw InputError(systemError("cannot read", from));
+  std::ostringstream content;
+  content << in.rdbuf();
+  writeFileAtomically(to, content.str());
+}
+
+bool isTemporaryFile(const std::filesystem::path& file) {
+  return file.filename().string().find(kTemporaryMarker) != std::string::npos;
 }
 
 }  // namespace camcov::records

@@ -16,4 +16,10 @@ void createParentFolder(const std::filesystem::path& file);
 // std::runtime_error for failures while writing (e.g. the disk is full).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
 
+// The same for a copy of `from` (InputError if it cannot be read).
+void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// Is this a temporary file that writeFileAtomically left behind when it was killed?
+bool isTemporaryFile(const std::filesystem::path& file);
+
 }  // namespace camcov::records

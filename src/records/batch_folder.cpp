@@ -81,9 +81,7 @@ void BatchFolder::removeStaleTemporaries() const {
   for (const fs::path& dir : {root_, runsDir(), root_ / "ompl"}) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
-      if (entry.path().filename().string().find(".tmp-") != std::string::npos) {
-        fs::remove(entry.path(), ec);
-      }
+      if (isTemporaryFile(entry.path())) fs::remove(entry.path(), ec);
     }
   }
 }

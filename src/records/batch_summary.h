@@ -5,6 +5,7 @@
 // with sorted keys and shortest round-trip numbers, so one process and N shards plus a merge
 // give the same bytes.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,10 @@ inline constexpr double kSignificance = 0.05;
 
 BatchSummary summarize(std::vector<JobOutcome> outcomes);
 nlohmann::json summaryToJson(const BatchSummary& summary);
+// The inverse of summaryToJson, so a report shows exactly the numbers the batch wrote.
+// Throws InputError naming `source` if the document is not a camcov summary.
+BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source);
+BatchSummary loadSummaryFile(const std::filesystem::path& file);
 std::string summaryToCsv(const BatchSummary& summary);
 
 }  // namespace camcov::records

@@ -10,17 +10,13 @@
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
+#include "records/json_numbers.h"
 
 namespace camcov::records {
 namespace {
 
 nlohmann::json pose(const geometry::Pose& p) {
   return nlohmann::json::array({p.x, p.y, p.yaw});
-}
-
-// JSON has no infinity: an undefined distance (one camera has no pair) is null.
-nlohmann::json finiteOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
 nlohmann::json summaryJson(const sim::RunSummary& s) {
@@ -38,10 +34,6 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
           {"avoidableContacts", s.avoidableContacts},
           {"unavoidableContacts", s.unavoidableContacts},
           {"boundaryClamps", s.boundaryClamps}};
-}
-
-double numberOrInfinity(const nlohmann::json& v) {
-  return v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
 }
 
 geometry::Pose poseFrom(const nlohmann::json& v) {

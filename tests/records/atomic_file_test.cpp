@@ -26,6 +26,19 @@ TEST(WriteFileAtomically, CreatesFoldersReplacesContentAndLeavesNoTemporaries) {
   EXPECT_EQ(entries, 1);
 }
 
+TEST(CopyFileAtomically, CopiesBytesExactlyAndNamesItsTemporaryAsSuch) {
+  const fs::path dir = fs::path(CAMCOV_TEST_TMP) / "atomic-copy";
+  fs::remove_all(dir);
+  const std::string bytes("a\0b\n\xff", 5);
+  writeFileAtomically(dir / "from.csv", bytes);
+  copyFileAtomically(dir / "from.csv", dir / "to" / "to.csv");
+  EXPECT_EQ(testing::readFile(dir / "to" / "to.csv"), bytes);
+  EXPECT_THROW(copyFileAtomically(dir / "missing.csv", dir / "x.csv"), InputError);
+  EXPECT_TRUE(isTemporaryFile(dir / "run.json.tmp-1234"));
+  EXPECT_FALSE(isTemporaryFile(dir / "run.json"));
+  EXPECT_FALSE(isTemporaryFile(fs::path("a.tmp-dir") / "run.json")) << "the name, not the folder";
+}
+
 TEST(WriteFileAtomically, UnwritableFolderIsAnInputError) {
   EXPECT_THROW(writeFileAtomically("/proc/camcov/x.json", "x"), InputError);
 }

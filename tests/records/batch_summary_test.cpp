@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "util/input_error.h"
+
 namespace camcov::records {
 namespace {
 
@@ -64,6 +66,44 @@ TEST(Summarize, OutputDoesNotDependOnInputOrder) {
   std::vector<JobOutcome> reversed(jobs.rbegin(), jobs.rend());
   EXPECT_EQ(summaryToJson(summarize(jobs)).dump(), summaryToJson(summarize(reversed)).dump());
   EXPECT_EQ(summaryToCsv(summarize(jobs)), summaryToCsv(summarize(reversed)));
+}
+
+JobOutcome contactJob(std::string scene, std::string method, std::uint64_t seed, double c) {
+  JobOutcome o{std::move(scene), std::move(method), seed, false, "", {}};
+  o.summary.averageCoverage = c;
+  o.summary.averageUtilization = c / 3;
+  o.summary.minObjectDistance = 0.4 + c;
+  o.summary.minCameraDistance = std::numeric_limits<double>::infinity();
+  o.summary.objectCollisionTime = c > 0.5 ? 0.3 : 0.0;
+  o.summary.avoidableContactTime = c > 0.5 ? 0.2 : 0.0;
+  o.summary.unavoidableContactTime = c > 0.5 ? 0.1 : 0.0;
+  return o;
+}
+
+TEST(SummaryFile, ReadsBackWhatTheSummaryWrote) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 4; ++s) {
+    jobs.push_back(contactJob("static2", "paper", s, 0.6 + 0.01 * s));
+    jobs.push_back(contactJob("static2", "local", s, 0.4));
+    jobs.push_back(contactJob("dynamic10", "paper", s, 0.3 * s));
+  }
+  jobs.push_back({"dynamic10", "local", 1, true, "it broke", {}});
+  const nlohmann::json written = summaryToJson(summarize(jobs));
+  const BatchSummary read = summaryFromJson(written, "summary.json");
+  EXPECT_EQ(summaryToJson(read), written);
+  EXPECT_TRUE(std::isinf(read.methods[0].minCameraDistance)) << "null reads back as infinity";
+  ASSERT_EQ(read.failures.size(), 1u);
+  EXPECT_TRUE(read.failures[0].failed);
+}
+
+TEST(SummaryFile, RejectsOtherDocumentsNamingTheFile) {
+  try {
+    summaryFromJson(nlohmann::json{{"format", "camcov-run/2"}}, "x/summary.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("x/summary.json"), std::string::npos);
+  }
+  EXPECT_THROW(summaryFromJson(nlohmann::json{{"format", "camcov-summary/2"}}, "s"), InputError);
 }
 
 }  // namespace

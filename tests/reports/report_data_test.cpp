@@ -1,5 +1,5 @@
-// What the report reads: the summary back from JSON, the scene groups, the runs folded into
-// per-seed values and bands, and the scene drawings of Fig. 3.
+// What the report reads: the scene groups, the runs folded into per-seed values and bands,
+// and the scene drawings of Fig. 3.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -7,7 +7,6 @@
 #include "report_fixture.h"
 #include "reports/report_data.h"
 #include "reports/scene_gallery.h"
-#include "reports/summary_reader.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 
@@ -16,42 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::countOf;
-
-records::JobOutcome job(std::string scene, std::string method, std::uint64_t seed, double c) {
-  records::JobOutcome o{std::move(scene), std::move(method), seed, false, "", {}};
-  o.summary.averageCoverage = c;
-  o.summary.averageUtilization = c / 3;
-  o.summary.minObjectDistance = 0.4 + c;
-  o.summary.minCameraDistance = std::numeric_limits<double>::infinity();
-  o.summary.objectCollisionTime = c > 0.5 ? 0.3 : 0.0;
-  return o;
-}
-
-TEST(SummaryReader, ReadsBackWhatTheSummaryWrote) {
-  std::vector<records::JobOutcome> jobs;
-  for (std::uint64_t s = 1; s <= 4; ++s) {
-    jobs.push_back(job("static2", "paper", s, 0.6 + 0.01 * s));
-    jobs.push_back(job("static2", "local", s, 0.4));
-    jobs.push_back(job("dynamic10", "paper", s, 0.3 * s));
-  }
-  jobs.push_back({"dynamic10", "local", 1, true, "it broke", {}});
-  const nlohmann::json written = records::summaryToJson(records::summarize(jobs));
-  const records::BatchSummary read = summaryFromJson(written, "summary.json");
-  EXPECT_EQ(records::summaryToJson(read), written);
-  EXPECT_TRUE(std::isinf(read.methods[0].minCameraDistance)) << "null reads back as infinity";
-  ASSERT_EQ(read.failures.size(), 1u);
-  EXPECT_TRUE(read.failures[0].failed);
-}
-
-TEST(SummaryReader, RejectsOtherDocumentsNamingTheFile) {
-  try {
-    summaryFromJson(nlohmann::json{{"format", "camcov-run/2"}}, "x/summary.json");
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("x/summary.json"), std::string::npos);
-  }
-  EXPECT_THROW(summaryFromJson(nlohmann::json{{"format", "camcov-summary/2"}}, "s"), InputError);
-}
 
 TEST(SceneGroups, PublishedNamesOrWhetherAnythingMoves) {
   EXPECT_EQ(sceneGroup("static7", nullptr), SceneGroup::Static);
