@@ -4,7 +4,6 @@
 
 #include "records/run_files.h"
 #include "reports/markup.h"
-#include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 #include "util/natural_order.h"
@@ -78,22 +77,18 @@ MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string&
 }
 
 void loadScene(const records::SceneEntry& entry, SceneData& data) {
-  std::string text;
-  try {
-    text = scene::readText(entry.file);
-  } catch (const InputError&) {
+  if (!fs::exists(entry.file)) {
     data.sceneNote =
         "scene file " + entry.file + " not found (batch.json names it as given to camcov bench)";
     return;
   }
   try {
-    data.scene = scene::parseScene(text, entry.file);
+    scene::SceneFile file = scene::loadSceneFile(entry.file);
+    data.scene = std::move(file.scene);
+    if (file.hash != entry.hash)
+      data.sceneNote = entry.file + " changed since the batch ran; drawn as it is now";
   } catch (const InputError& e) {
     data.sceneNote = e.what();
-    return;
-  }
-  if (records::fnv1a(text) != entry.hash) {
-    data.sceneNote = entry.file + " changed since the batch ran; drawn as it is now";
   }
 }
 

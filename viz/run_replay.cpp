@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 #include "viz/frame_renderer.h"
@@ -49,8 +48,8 @@ void remainingPath(std::span<const geometry::Pose> path, geometry::Vec2 position
 RunScene loadRunScene(const records::RunMetadata& metadata, const std::filesystem::path& moved) {
   const std::filesystem::path file =
       moved.empty() ? std::filesystem::path(metadata.sceneFile) : moved;
-  const std::string text = scene::readText(file);
-  return {scene::parseScene(text, file.string()), records::fnv1a(text) != metadata.sceneHash};
+  scene::SceneFile s = scene::loadSceneFile(file);
+  return {std::move(s.scene), s.hash != metadata.sceneHash};
 }
 
 VideoSettings runVideoSettings(const records::RunRecord& run) {

@@ -15,7 +15,6 @@
 #include "cli/parameter_options.h"
 #include "params/parameter_table.h"
 #include "records/run_files.h"
-#include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 #include "util/natural_order.h"
@@ -102,9 +101,8 @@ int bench(const BenchOptions& o) {
   records::BatchManifest manifest{kVersion, parameters, methods, o.seeds, {}, o.argv};
   std::vector<BatchJob> jobs;
   for (const fs::path& file : sceneFiles(o.scenes)) {
-    const std::string text = scene::readText(file);
-    const scene::Scene s = scene::parseScene(text, file.string());
-    manifest.scenes.push_back({s.name, file.string(), records::fnv1a(text)});
+    const scene::SceneFile s = scene::loadSceneFile(file);
+    manifest.scenes.push_back({s.scene.name, file.string(), s.hash});
   }
   for (const auto& entry : manifest.scenes) {
     for (const auto& method : methods) {

@@ -6,7 +6,6 @@
 #include "camcov/version.h"
 #include "control/local_controller.h"
 #include "control/paper_controller.h"
-#include "scene/read_text.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 
@@ -20,16 +19,11 @@ void requireKnownMethod(const std::string& method) {
 
 records::RunRecord runJob(const JobSpec& job) {
   requireKnownMethod(job.method);
-  const std::string text = scene::readText(job.sceneFile);
-  const scene::Scene scene = scene::parseScene(text, job.sceneFile.string());
+  const scene::SceneFile file = scene::loadSceneFile(job.sceneFile);
+  const scene::Scene& scene = file.scene;
 
-  records::RunMetadata metadata{scene.name,
-                                job.sceneFile.string(),
-                                records::fnv1a(text),
-                                job.method,
-                                job.seed,
-                                job.parameters,
-                                kVersion};
+  records::RunMetadata metadata{scene.name, job.sceneFile.string(), file.hash, job.method,
+                                job.seed,   job.parameters,         kVersion};
   std::unique_ptr<control::Controller> controller;
   if (job.method == "paper") {
     controller = std::make_unique<control::PaperController>(scene, job.parameters, job.seed);

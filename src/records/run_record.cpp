@@ -29,13 +29,4 @@ RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
   return run;
 }
 
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (const unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 0x100000001b3ull;
-  }
-  return hash;
-}
-
 }  // namespace camcov::records

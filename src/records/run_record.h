@@ -16,7 +16,7 @@ namespace camcov::records {
 struct RunMetadata {
   std::string scene;            // scene name (file stem)
   std::string sceneFile;        // as given on the command line
-  std::uint64_t sceneHash = 0;  // FNV-1a of the scene file's bytes: a changed file is a new job
+  std::uint64_t sceneHash = 0;  // scene::SceneFile::hash: a changed file is a new job
   std::string method;           // "paper" or "local"
   std::uint64_t seed = 0;
   params::Parameters parameters;
@@ -57,7 +57,5 @@ class RunRecorder final : public sim::Recorder {
 // records every step: what `camcov run` and the video benchmark both do.
 RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
                     control::Controller& controller);
-
-std::uint64_t fnv1a(std::string_view bytes);
 
 }  // namespace camcov::records

@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include "util/fnv1a.h"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
@@ -281,6 +283,11 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
 
 Scene loadScene(const std::filesystem::path& file) {
   return parseScene(readText(file), file.string());
+}
+
+SceneFile loadSceneFile(const std::filesystem::path& file) {
+  const std::string text = readText(file);
+  return {parseScene(text, file.string()), fnv1a(text)};
 }
 
 }  // namespace camcov::scene

@@ -1,6 +1,7 @@
 #pragma once
 // Reads and validates a scene file (SPEC section 2). Every problem is a SceneError naming the
 // file, the JSON path and what is wrong; nothing is silently repaired.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -10,6 +11,14 @@
 namespace camcov::scene {
 
 Scene loadScene(const std::filesystem::path& file);
+
+// A scene with the fingerprint (FNV-1a) of its file's bytes: a changed file makes new jobs
+// in a batch, and a replay or a report can tell it is no longer the file a run was made from.
+struct SceneFile {
+  Scene scene;
+  std::uint64_t hash = 0;
+};
+SceneFile loadSceneFile(const std::filesystem::path& file);
 // `sourceName` is used in messages and, through its stem, as the scene's name.
 Scene parseScene(std::string_view jsonText, const std::string& sourceName);
 

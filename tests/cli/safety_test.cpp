@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "records/run_record.h"
 #include "support/run_camcov.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
+#include "util/fnv1a.h"
 
 namespace camcov::testing {
 namespace {
@@ -29,7 +29,7 @@ std::uint64_t runHash(const nlohmann::json& run) {
     const std::string kind = e.at("kind");
     if (kind != "avoidable-contact" && kind != "unavoidable-contact") subset["events"].push_back(e);
   }
-  return records::fnv1a(subset.dump());
+  return fnv1a(subset.dump());
 }
 
 struct Golden {

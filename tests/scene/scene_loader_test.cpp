@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "scene/scene_error.h"
 #include "support/test_paths.h"
+#include "util/fnv1a.h"
 
 namespace camcov::scene {
 namespace {
@@ -33,6 +36,25 @@ TEST(LoadScene, LoadsEveryOwnScene) {
     SCOPED_TRACE(file.string());
     EXPECT_NO_THROW(loadScene(file));
   }
+}
+
+TEST(LoadSceneFile, FingerprintsTheFilesBytesSoAnyEditChangesIt) {
+  const auto dir = std::filesystem::temp_directory_path() / "camcov-scene-file";
+  std::filesystem::create_directories(dir);
+  const auto source = testing::ownScenesDir() / "fig1_example.json";
+  const SceneFile original = loadSceneFile(source);
+  EXPECT_EQ(original.scene.name, "fig1_example");
+  // FNV-1a 64, checked against its published test vectors.
+  EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(fnv1a("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(fnv1a("foobar"), 0x85944171f73967e8ull);
+  // The same bytes elsewhere: the same fingerprint; one more space: another.
+  std::filesystem::copy_file(source, dir / "fig1_example.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  EXPECT_EQ(loadSceneFile(dir / "fig1_example.json").hash, original.hash);
+  { std::ofstream(dir / "fig1_example.json", std::ios::app) << " "; }
+  EXPECT_NE(loadSceneFile(dir / "fig1_example.json").hash, original.hash);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(LoadScene, NormalisesClockwiseShapesAndAppliesDefaults) {
