@@ -17,11 +17,6 @@ namespace {
 constexpr double kChartWidth = 540.0;
 constexpr double kChartHeight = 250.0;
 
-bool endsWith(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // Events worth a mark, merged per instant so simultaneous plans of several cameras make one
 // mark whose tooltip lists them all.
 struct Mark {
@@ -33,7 +28,7 @@ struct Mark {
 std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const MethodRuns& runs) {
   std::map<std::pair<double, bool>, Mark> marks;  // (time, aborted)
   for (const auto& e : runs.events) {
-    const bool replan = (e.kind == "global" && endsWith(e.detail, "replan")) || e.kind == "plan";
+    const bool replan = (e.kind == "global" && e.reason == "replan") || e.kind == "plan";
     const bool aborted = e.kind == "plan-aborted" || e.kind == "plan-failed";
     if (!replan && !aborted) continue;
     Mark& m = marks[{e.time, aborted}];

@@ -28,7 +28,10 @@ struct ControlEvent {
   int camera = -1;                   // -1: the whole team
   std::string detail;                // human-readable
   std::vector<geometry::Pose> path;  // the planned path, for "plan" events
-  std::string reason;                // a machine-readable cause, e.g. "cornered"; may be empty
+  // Machine-readable, for programs (the report) to act on instead of parsing `detail`: a
+  // global optimization's decision ("replan", "keep", "no-valid-pose"), a contact's cause
+  // ("outpaced", "cornered", "within-delta"); empty where the kind says all.
+  std::string reason;
 };
 
 class Controller {

@@ -39,8 +39,9 @@ void PaperController::takeEvents(std::vector<ControlEvent>& out) {
 }
 
 void PaperController::raise(double t, std::string kind, int camera, std::string detail,
-                            std::vector<geometry::Pose> path) {
-  events_.push_back({t, std::move(kind), camera, std::move(detail), std::move(path), {}});
+                            std::vector<geometry::Pose> path, std::string reason) {
+  events_.push_back(
+      {t, std::move(kind), camera, std::move(detail), std::move(path), std::move(reason)});
 }
 
 std::vector<geometry::Pose> PaperController::committedTeam(
@@ -57,7 +58,8 @@ void PaperController::globalOptimization(const Observation& observation) {
                                                  params_.global.K, random_);
   const double current = model_.reward(committedTeam(observation.cameras));
   if (!result) {
-    raise(observation.time, "global", -1, "no valid pose found for some camera");
+    raise(observation.time, "global", -1, "no valid pose found for some camera", {},
+          "no-valid-pose");
     return;
   }
   const Assignment assignment = assign(observation, result->poses);
@@ -68,7 +70,8 @@ void PaperController::globalOptimization(const Observation& observation) {
   const bool better = improves(candidate, current, params_.global.tau);
   raise(observation.time, "global", -1,
         fmt::format("global reward {:.4f} (travel {:.1f} s) vs current {:.4f}: {}", result->reward,
-                    assignment.travelTime, current, better ? "replan" : "keep"));
+                    assignment.travelTime, current, better ? "replan" : "keep"),
+        {}, better ? "replan" : "keep");
   if (better) plan(observation, result->poses, assignment);
 }
 

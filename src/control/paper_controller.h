@@ -7,7 +7,8 @@
 // artificial potentials while the local optimizer keeps refining their goals; the others do
 // local optimization (gradient ascent) directly.
 //
-// Events raised: "global" (every global optimization, with both rewards), "plan" (a path),
+// Events raised: "global" (every global optimization, with both rewards; its reason is the
+// decision: "replan", "keep" or "no-valid-pose"), "plan" (a path),
 // "plan-failed" (no path in the roadmap), "plan-completed", "plan-aborted" (no progress for
 // T3), "replan" (the refined goal drifted more than d1 from the path: queried again).
 #include <memory>
@@ -52,7 +53,7 @@ class PaperController final : public Controller {
             const Assignment& assignment);
   void refineGoals(const Observation& observation);
   void raise(double t, std::string kind, int camera, std::string detail,
-             std::vector<geometry::Pose> path = {});
+             std::vector<geometry::Pose> path = {}, std::string reason = {});
   std::vector<geometry::Pose> committedTeam(std::span<const geometry::Pose> cameras) const;
 
   const scene::Scene& scene_;

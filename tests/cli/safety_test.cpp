@@ -27,7 +27,10 @@ std::uint64_t runHash(const nlohmann::json& run) {
   subset["events"] = nlohmann::json::array();
   for (const auto& e : run.at("events")) {
     const std::string kind = e.at("kind");
-    if (kind != "avoidable-contact" && kind != "unavoidable-contact") subset["events"].push_back(e);
+    if (kind == "avoidable-contact" || kind == "unavoidable-contact") continue;
+    nlohmann::json event = e;
+    event.erase("reason");  // typed since, from what the detail said
+    subset["events"].push_back(std::move(event));
   }
   return fnv1a(subset.dump());
 }

@@ -41,9 +41,13 @@ TEST(PaperController, RunsGlobalOptimizationAtZeroAndEveryT1AndPlans) {
   EventLog log;
   const sim::RunSummary summary = sim::simulate(s, p, controller, log);
   std::vector<double> globals;
-  int plans = 0;
+  int plans = 0, replans = 0;
   for (const auto& e : log.events) {
-    if (e.kind == "global") globals.push_back(e.time);
+    if (e.kind == "global") {
+      globals.push_back(e.time);
+      EXPECT_TRUE(e.reason == "replan" || e.reason == "keep") << e.reason;
+      replans += e.reason == "replan";
+    }
     if (e.kind == "plan") {
       ++plans;
       EXPECT_GE(e.path.size(), 2u);
@@ -51,6 +55,7 @@ TEST(PaperController, RunsGlobalOptimizationAtZeroAndEveryT1AndPlans) {
   }
   EXPECT_EQ(globals, (std::vector<double>{0.0, 5.0, 10.0}));
   EXPECT_GE(plans, 1) << "both cameras start looking away: the first global result wins";
+  EXPECT_GE(replans, 1) << "and its event says so in its reason";
   // Local optimization alone, from poses that see nothing, never finds the target.
   LocalController local(s, p);
   EventLog none;
@@ -67,6 +72,7 @@ TEST(PaperController, HorizonKeepsSlowCamerasFromChasingFarGoals) {
   sim::simulate(s, p, controller, log);
   ASSERT_FALSE(log.events.empty());
   EXPECT_EQ(log.events[0].kind, "global");
+  EXPECT_EQ(log.events[0].reason, "keep") << log.events[0].detail;
   EXPECT_NE(log.events[0].detail.find("keep"), std::string::npos) << log.events[0].detail;
 }
 
