@@ -3,20 +3,24 @@
 #include <algorithm>
 #include <tuple>
 
+#include "control/methods.h"
+
 namespace camcov::reports {
 namespace {
 
-int rank(std::string_view method) {
-  if (method == "paper") return 0;
-  if (method == "local") return 1;
-  return 2;
+// Position in the table of methods; methods it does not know (results of another version)
+// come after, by name.
+std::size_t rank(std::string_view method) {
+  const auto all = control::methods();
+  return static_cast<std::size_t>(
+      std::find_if(all.begin(), all.end(), [&](const auto& m) { return m.name == method; }) -
+      all.begin());
 }
 
 }  // namespace
 
 MethodStyle methodStyle(std::string_view method) {
-  if (method == "paper") return {"paper (global + local)", "#ff7f0e"};
-  if (method == "local") return {"local optimization", "#1f77b4"};
+  if (const control::Method* m = control::findMethod(method)) return {m->description, m->color};
   return {method, "#7f7f7f"};
 }
 

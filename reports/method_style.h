@@ -1,6 +1,6 @@
 #pragma once
-// How each method looks in every figure and table: the paper's Fig. 4 draws its own method
-// orange and local optimization blue, and so do we.
+// How each method looks in every figure and table, from the table of methods
+// (control/methods.h); a method it does not know is grey.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,7 +13,7 @@ struct MethodStyle {
 };
 
 MethodStyle methodStyle(std::string_view method);
-// The paper's method first, then local optimization, then any other, by name.
+// In the table's order, then any other, by name.
 std::vector<std::string> orderedMethods(std::vector<std::string> methods);
 
 }  // namespace camcov::reports

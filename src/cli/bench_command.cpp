@@ -13,6 +13,7 @@
 #include "cli/bench_outputs.h"
 #include "cli/command.h"
 #include "cli/parameter_options.h"
+#include "control/methods.h"
 #include "params/parameter_table.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
@@ -88,9 +89,9 @@ Shard parseShard(const std::string& text) {
 
 int bench(const BenchOptions& o) {
   const std::vector<std::string> methods = splitList(o.methods);
-  if (methods.empty()) throw InputError("--methods: name at least one of paper, local");
+  if (methods.empty()) throw InputError("--methods: name at least one method");
   for (const auto& m : methods)
-    requireKnownMethod(m);
+    control::requireMethod(m);
   if (o.seeds == 0) throw InputError("--seeds must be at least 1");
   o.outputs.videoChoice();  // a bad --videos fails now, not after the runs
   const Shard shard = parseShard(o.shard);

@@ -8,6 +8,7 @@
 #include "cli/command.h"
 #include "cli/parameter_options.h"
 #include "cli/run_job.h"
+#include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
 #include "viz/run_replay.h"
@@ -26,7 +27,7 @@ struct RunOptions {
 };
 
 int run(const RunOptions& o) {
-  requireKnownMethod(o.method);
+  control::requireMethod(o.method);
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
   JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;

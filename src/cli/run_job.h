@@ -11,13 +11,12 @@ namespace camcov::cli {
 
 struct JobSpec {
   std::filesystem::path sceneFile;
-  std::string method;  // "paper" (section V) or "local" (the baseline)
+  std::string method;  // a name in the table of methods (control/methods.h)
   std::uint64_t seed = 0;
   params::Parameters parameters;
 };
 
 // Throws InputError for an unknown method or a bad scene.
 records::RunRecord runJob(const JobSpec& job);
-void requireKnownMethod(const std::string& method);
 
 }  // namespace camcov::cli

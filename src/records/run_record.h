@@ -17,7 +17,7 @@ struct RunMetadata {
   std::string scene;            // scene name (file stem)
   std::string sceneFile;        // as given on the command line
   std::uint64_t sceneHash = 0;  // scene::SceneFile::hash: a changed file is a new job
-  std::string method;           // "paper" or "local"
+  std::string method;           // a name in the table of methods (control/methods.h)
   std::uint64_t seed = 0;
   params::Parameters parameters;
   std::string toolVersion;

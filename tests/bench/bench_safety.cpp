@@ -14,8 +14,7 @@
 #include <memory>
 #include <string>
 
-#include "control/local_controller.h"
-#include "control/paper_controller.h"
+#include "control/methods.h"
 #include "kinematics/kinematics.h"
 #include "records/run_record.h"
 #include "safety/safety_filter.h"
@@ -25,20 +24,13 @@
 namespace camcov::safety {
 namespace {
 
-std::unique_ptr<control::Controller> controllerFor(const scene::Scene& scene,
-                                                   const params::Parameters& p,
-                                                   const std::string& method) {
-  if (method == "paper") return std::make_unique<control::PaperController>(scene, p, 1);
-  return std::make_unique<control::LocalController>(scene, p);
-}
-
 records::RunRecord record(const scene::Scene& scene, const std::string& method, bool layer) {
   records::RunMetadata metadata;
   metadata.scene = scene.name;
   metadata.method = method;
   metadata.seed = 1;
   metadata.parameters.safety.enabled = layer;
-  auto controller = controllerFor(scene, metadata.parameters, method);
+  const auto controller = control::requireMethod(method).make(scene, metadata.parameters, 1);
   return records::recordRun(scene, metadata, *controller);
 }
 
