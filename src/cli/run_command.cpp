@@ -5,9 +5,9 @@
 #include <iostream>
 #include <memory>
 
+#include "batch/run_job.h"
 #include "cli/command.h"
 #include "cli/parameter_options.h"
-#include "cli/run_job.h"
 #include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
@@ -29,9 +29,9 @@ struct RunOptions {
 int run(const RunOptions& o) {
   control::requireMethod(o.method);
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
-  JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
+  batch::JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
-  const records::RunRecord record = runJob(job);
+  const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);
   const auto& s = record.summary;
   std::cout << fmt::format(

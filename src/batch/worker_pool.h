@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace camcov::cli {
+namespace camcov::batch {
 
 // `task(i)` is called once per item, from any of the threads; it must not throw.
 template <class Task>
@@ -27,4 +27,4 @@ void forEachOnWorkers(std::size_t count, unsigned workers, const Task& task) {
     t.join();
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::batch

@@ -1,4 +1,4 @@
-#include "cli/run_job.h"
+#include "batch/run_job.h"
 
 #include <utility>
 
@@ -6,7 +6,7 @@
 #include "control/methods.h"
 #include "scene/scene_loader.h"
 
-namespace camcov::cli {
+namespace camcov::batch {
 
 records::RunRecord runJob(const JobSpec& job) {
   const control::Method& method = control::requireMethod(job.method);
@@ -19,4 +19,4 @@ records::RunRecord runJob(const JobSpec& job) {
   return records::recordRun(scene, std::move(metadata), *controller);
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::batch

@@ -1,4 +1,4 @@
-#include "cli/batch_runner.h"
+#include "batch/batch_runner.h"
 
 #include <fmt/format.h>
 #include <time.h>
@@ -7,11 +7,10 @@
 #include <exception>
 #include <mutex>
 
-#include "cli/progress.h"
-#include "cli/worker_pool.h"
+#include "batch/worker_pool.h"
 #include "records/run_files.h"
 
-namespace camcov::cli {
+namespace camcov::batch {
 
 namespace {
 
@@ -24,7 +23,7 @@ double threadCpuSeconds() {
 }  // namespace
 
 BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder& folder,
-                  unsigned workers) {
+                  unsigned workers, BatchObserver& observer) {
   BatchRun batch;
   batch.outcomes.resize(jobs.size());
   std::vector<std::size_t> pending;
@@ -36,46 +35,41 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
       pending.push_back(i);
     }
   }
-  if (jobs.size() != pending.size()) {
-    std::fprintf(stderr, "%zu of %zu jobs already done in %s; running the other %zu\n",
-                 jobs.size() - pending.size(), jobs.size(), folder.root().c_str(), pending.size());
-  }
-  Progress progress(jobs.size(), jobs.size() - pending.size());
+  observer.resuming(jobs.size() - pending.size(), jobs.size());
   std::mutex mutex;
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const BatchJob& job = jobs[pending[k]];
     records::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
     const auto wallStart = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
-    std::string what;
     try {
       const records::RunRecord run = runJob(job.spec);
       records::writeRunFiles(run, folder.runsDir());
       folder.removeFailure(job.stem);
       outcome.summary = run.summary;
-      what = fmt::format("{}: coverage {:.3f}", job.stem, run.summary.averageCoverage);
     } catch (const std::exception& e) {
       outcome.failed = true;
       outcome.error = e.what();
-      what = fmt::format("{}: FAILED: {}", job.stem, e.what());
       try {
         folder.writeFailure(job.stem, outcome);
       } catch (const std::exception& again) {  // e.g. the disk is full: say so, go on
-        what += fmt::format(" (not recorded: {})", again.what());
+        outcome.error += fmt::format(" (not recorded: {})", again.what());
       }
     }
     const records::JobTiming timing{
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
         threadCpuSeconds() - cpuStart};
-    {
-      const std::lock_guard lock(mutex);
-      batch.outcomes[pending[k]] = std::move(outcome);
-      batch.timings[job.stem] = timing;
-    }
-    progress.finished(what);
+    const std::lock_guard lock(mutex);
+    observer.finished(job, outcome);
+    batch.outcomes[pending[k]] = std::move(outcome);
+    batch.timings[job.stem] = timing;
   });
-  progress.close();
+  // The folder keeps the timings of every job it holds, from earlier runs too.
+  auto timings = folder.readTimings();
+  for (const auto& [stem, t] : batch.timings)
+    timings[stem] = t;
+  folder.writeTimings(timings);
   return batch;
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::batch

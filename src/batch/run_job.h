@@ -7,7 +7,7 @@
 #include "params/parameters.h"
 #include "records/run_record.h"
 
-namespace camcov::cli {
+namespace camcov::batch {
 
 struct JobSpec {
   std::filesystem::path sceneFile;
@@ -19,4 +19,4 @@ struct JobSpec {
 // Throws InputError for an unknown method or a bad scene.
 records::RunRecord runJob(const JobSpec& job);
 
-}  // namespace camcov::cli
+}  // namespace camcov::batch

@@ -1,0 +1,47 @@
+#pragma once
+// A batch before it runs (SPEC section 7): the scene files, read and validated up front (a
+// typo fails in a second, not after an hour), the jobs (scene × method × seed, scenes in
+// natural order), this shard's share of them, and the folder's check that it holds no
+// results made with other parameters.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "batch/batch_runner.h"
+#include "records/batch_folder.h"
+
+namespace camcov::batch {
+
+// Part `index` (0-based) of `count`: the jobs i with i mod count == index.
+struct Shard {
+  std::size_t index = 0;
+  std::size_t count = 1;
+};
+// "K/N", 1-based as users write it; "" is the whole batch. InputError otherwise.
+Shard parseShard(const std::string& text);
+
+struct BatchRequest {
+  std::vector<std::string> scenes;   // scene files, or folders (their *.json, natural order)
+  std::vector<std::string> methods;  // names in the table of methods
+  std::uint64_t seeds = 1;           // 1..seeds per scene and method
+  params::Parameters parameters;
+  Shard shard;
+  std::vector<std::string> command;  // how it was asked for, for batch.json
+};
+
+struct BatchPlan {
+  records::BatchManifest manifest;
+  std::vector<BatchJob> jobs;  // this shard's, in batch order
+  std::size_t totalJobs = 0;   // of all shards
+};
+
+// InputError for unknown methods, no seeds, missing or invalid scene files.
+BatchPlan planBatch(const BatchRequest& request, const std::string& toolVersion);
+
+// Gets `folder` ready for `plan`: refuses (InputError) a folder whose results were made with
+// other parameters unless `force`, removes what a killed run left half-written, and writes
+// the manifest.
+void prepareFolder(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+                   bool force);
+
+}  // namespace camcov::batch

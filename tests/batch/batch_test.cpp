@@ -1,0 +1,144 @@
+// The batch stage on its own, without the executable: planning (order, shards, bad input),
+// running with resume and failures, and merging shards back into one folder.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "batch/batch_plan.h"
+#include "batch/merge.h"
+#include "support/scratch.h"
+#include "support/test_paths.h"
+#include "util/input_error.h"
+
+namespace camcov::batch {
+namespace {
+
+namespace fs = std::filesystem;
+
+BatchRequest tinyRequest(std::uint64_t seeds = 2) {
+  BatchRequest r;
+  r.scenes = {(testing::testDataDir() / "scenes").string()};
+  r.methods = {"paper", "local"};
+  r.seeds = seeds;
+  r.parameters.sim.duration = 1.0;
+  r.parameters.global.K = 20;
+  r.parameters.planner.T2 = 0.02;
+  return r;
+}
+
+// Remembers what the batch told it.
+class Recorder final : public BatchObserver {
+ public:
+  void resuming(std::size_t done, std::size_t total) override {
+    alreadyDone = done;
+    this->total = total;
+  }
+  void finished(const BatchJob& job, const records::JobOutcome&) override {
+    ran.push_back(job.stem);
+  }
+  std::size_t alreadyDone = 0, total = 0;
+  std::vector<std::string> ran;
+};
+
+TEST(PlanBatch, JobsRunSceneByMethodBySeedAndShardsSplitThemExactlyOnce) {
+  const BatchPlan whole = planBatch(tinyRequest(), "test");
+  ASSERT_EQ(whole.jobs.size(), 8u);  // 2 scenes x 2 methods x 2 seeds
+  EXPECT_EQ(whole.totalJobs, 8u);
+  EXPECT_EQ(whole.jobs.front().stem, "tiny_dynamic-paper-seed1");
+  EXPECT_EQ(whole.jobs[1].stem, "tiny_dynamic-paper-seed2");
+  EXPECT_EQ(whole.jobs[2].stem, "tiny_dynamic-local-seed1");
+  EXPECT_EQ(whole.jobs.back().stem, "tiny_static-local-seed2");
+  EXPECT_EQ(whole.manifest.scenes.size(), 2u);
+  std::multiset<std::string> fromShards;
+  for (std::size_t k = 1; k <= 3; ++k) {
+    BatchRequest r = tinyRequest();
+    r.shard = parseShard(std::to_string(k) + "/3");
+    const BatchPlan part = planBatch(r, "test");
+    EXPECT_EQ(part.totalJobs, 8u);
+    for (const auto& job : part.jobs)
+      fromShards.insert(job.stem);
+  }
+  std::multiset<std::string> all;
+  for (const auto& job : whole.jobs)
+    all.insert(job.stem);
+  EXPECT_EQ(fromShards, all);
+}
+
+TEST(PlanBatch, BadRequestsAreInputErrors) {
+  for (const char* shard : {"0/3", "4/3", "1/0", "a/b", "1/2/3", "2"})
+    EXPECT_THROW(parseShard(shard), InputError) << shard;
+  BatchRequest r = tinyRequest();
+  r.methods = {"paper", "nope"};
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+  r = tinyRequest(0);
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+  r = tinyRequest();
+  r.scenes = {"/no/such/folder"};
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+}
+
+TEST(RunBatch, ASecondRunResumesWithNothingLeftAndAFailedJobIsRecorded) {
+  const testing::ScratchDir dir;
+  const records::BatchFolder folder(dir / "out");
+  BatchPlan plan = planBatch(tinyRequest(1), "test");
+  prepareFolder(folder, plan.manifest, false);
+  // One job points at a scene file that breaks: it fails alone.
+  plan.jobs[1].spec.sceneFile = dir / "missing.json";
+  Recorder first;
+  const BatchRun run = runBatch(plan.jobs, folder, 2, first);
+  EXPECT_EQ(first.alreadyDone, 0u);
+  EXPECT_EQ(first.ran.size(), 4u);
+  EXPECT_TRUE(run.outcomes[1].failed);
+  EXPECT_TRUE(fs::exists(folder.errorFile(plan.jobs[1].stem)));
+  EXPECT_EQ(run.timings.size(), 4u);
+  for (std::size_t i : {0u, 2u, 3u}) {
+    EXPECT_FALSE(run.outcomes[i].failed) << run.outcomes[i].error;
+    EXPECT_TRUE(fs::exists(folder.runFile(plan.jobs[i].stem)));
+  }
+  Recorder second;
+  const BatchRun again = runBatch(plan.jobs, folder, 2, second);
+  EXPECT_EQ(second.alreadyDone, 3u) << "the finished ones are kept";
+  EXPECT_EQ(second.ran, std::vector<std::string>{plan.jobs[1].stem}) << "the failed one runs again";
+  EXPECT_EQ(again.outcomes[0].summary.averageCoverage, run.outcomes[0].summary.averageCoverage);
+}
+
+TEST(PrepareFolder, RefusesResultsOfOtherParametersUnlessForced) {
+  const testing::ScratchDir dir;
+  const records::BatchFolder folder(dir / "out");
+  BatchPlan plan = planBatch(tinyRequest(1), "test");
+  prepareFolder(folder, plan.manifest, false);
+  plan.manifest.parameters.global.K = 21;
+  EXPECT_THROW(prepareFolder(folder, plan.manifest, false), InputError);
+  EXPECT_NO_THROW(prepareFolder(folder, plan.manifest, true));
+}
+
+TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
+  const testing::ScratchDir dir;
+  std::vector<std::string> shards;
+  for (std::size_t k = 1; k <= 2; ++k) {
+    BatchRequest r = tinyRequest(1);
+    r.shard = {k - 1, 2};
+    const BatchPlan plan = planBatch(r, "test");
+    const records::BatchFolder folder(dir / ("shard-" + std::to_string(k)));
+    prepareFolder(folder, plan.manifest, false);
+    Recorder quiet;
+    runBatch(plan.jobs, folder, 1, quiet);
+    shards.push_back(folder.root().string());
+  }
+  const records::BatchFolder merged(dir / "merged");
+  const auto manifest = mergeFolders(shards, merged, {"camcov", "merge"});
+  EXPECT_EQ(manifest.scenes.size(), 2u);
+  EXPECT_EQ(merged.allJobs().size(), 4u);
+  EXPECT_EQ(merged.readTimings().size(), 4u);
+  EXPECT_EQ(merged.readManifest()->command, (std::vector<std::string>{"camcov", "merge"}));
+
+  BatchRequest other = tinyRequest(1);
+  other.parameters.global.K = 21;
+  const records::BatchFolder odd(dir / "odd");
+  prepareFolder(odd, planBatch(other, "test").manifest, false);
+  EXPECT_THROW(mergeFolders({shards[0], odd.root().string()}, merged, {}), InputError);
+  EXPECT_THROW(mergeFolders({(dir / "nothing").string()}, merged, {}), InputError);
+}
+
+}  // namespace
+}  // namespace camcov::batch
