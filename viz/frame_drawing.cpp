@@ -1,0 +1,372 @@
+#include "viz/frame_drawing.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "viz/cairo_drawing.h"
+
+namespace camcov::viz {
+
+namespace {
+
+using geometry::Vec2;
+
+// Frame-only colours and widths; the shared palette is in cairo_drawing.h.
+constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
+constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
+constexpr double kPlanWidth = 0.14;
+constexpr double kObjectPathWidth = 0.09;
+
+// The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
+// entry.
+enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
+constexpr PanelRows kPanelRows{5, 7};
+
+// Object paths are dashed: they are where things will be, not where they are.
+void setPathDash(cairo_t* cr, double em) {
+  const double dash[] = {0.35 * em, 0.25 * em};
+  cairo_set_dash(cr, dash, 2, 0.0);
+}
+
+// Thin dashed loops with an arrow in the direction of travel on the longest leg.
+void drawObjectPaths(const Painter& p, std::span<const ObjectPath> paths) {
+  cairo_t* cr = p.cr();
+  setPathDash(cr, p.em());
+  for (const ObjectPath& path : paths) {
+    if (path.waypoints.size() < 2) continue;
+    p.ringPath(path.waypoints);
+    p.stroke(kObjectPath, kObjectPathWidth);
+  }
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+}
+
+// Where an object path's label and arrow go: the middle of its longest leg, the direction of
+// travel there (image space), the point itself for an object turning in place.
+struct PathAnchor {
+  Vec2 point;      // image px
+  Vec2 direction;  // unit, image space; zero for a turning object
+};
+
+PathAnchor anchorOf(const Painter& p, const ObjectPath& path) {
+  const auto& w = path.waypoints;
+  if (w.size() < 2) return {p.image(w.front()), {}};
+  std::size_t best = 0;
+  double bestLength = -1.0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const double length = geometry::distance(w[i], w[(i + 1) % w.size()]);
+    if (length > bestLength) {
+      bestLength = length;
+      best = i;
+    }
+  }
+  const Vec2 a = p.image(w[best]), b = p.image(w[(best + 1) % w.size()]);
+  const double length = geometry::distance(a, b);
+  return {(a + b) * 0.5, length > 0.0 ? (b - a) / length : Vec2{}};
+}
+
+std::string speedLabel(const ObjectPath& path) {
+  std::string label;
+  if (path.velocity > 0.0) label = fmt::format("{:g} m/s", path.velocity);
+  if (path.angularVelocity != 0.0) {
+    if (!label.empty()) label += ", ";
+    label += fmt::format("{:g} rad/s", path.angularVelocity);
+  }
+  return label;
+}
+
+// Drawn over every shape but the cameras and their plans, which matter more: text on a pale
+// box, beside the path.
+void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
+  cairo_t* cr = p.cr();
+  const double em = p.em(), size = 0.78 * em;
+  for (const ObjectPath& path : paths) {
+    const PathAnchor anchor = anchorOf(p, path);
+    const Vec2 d = anchor.direction;
+    if (d != Vec2{}) {  // arrowhead
+      const Vec2 n{-d.y, d.x};
+      const Vec2 tip = anchor.point + d * (0.35 * em);
+      const Vec2 back = anchor.point - d * (0.35 * em);
+      cairo_move_to(cr, tip.x, tip.y);
+      cairo_line_to(cr, back.x + n.x * 0.3 * em, back.y + n.y * 0.3 * em);
+      cairo_line_to(cr, back.x - n.x * 0.3 * em, back.y - n.y * 0.3 * em);
+      cairo_close_path(cr);
+      p.fill(kObjectPath);
+    }
+    // Beside the path on its left, or above a turning object's centre.
+    const Vec2 side = d != Vec2{} ? Vec2{d.y, -d.x} : Vec2{0.0, -1.0};
+    const Vec2 centre = anchor.point + side * (0.95 * em);
+    const std::string label = speedLabel(path);
+    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, label.c_str(), &e);
+    const double pad = 0.18 * em;
+    cairo_rectangle(cr, centre.x - e.x_advance / 2 - pad, centre.y - 0.5 * size - pad,
+                    e.x_advance + 2 * pad, size + 2 * pad);
+    p.fill(kFloor, 0.8);
+    text(cr, {centre.x, centre.y + 0.36 * size}, label, size, kMutedText, Align::Centre);
+  }
+}
+
+void drawViews(const Painter& p, std::span<const CameraView> cameras, FrameUse use) {
+  cairo_t* cr = p.cr();
+  cairo_save(cr);
+  if (use == FrameUse::Video) cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // see FrameUse
+  for (const CameraView& c : cameras)
+    drawView(p, c.view);
+  cairo_restore(cr);
+}
+
+// A ring with a tick in the goal's heading, as a path for the caller to stroke.
+void goalMarkerPath(cairo_t* cr, Vec2 at, double yaw, double em) {
+  const Vec2 tip = at + imageHeading(yaw) * (1.0 * em);
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, at.x, at.y, 0.42 * em, 0.0, 2.0 * std::numbers::pi);
+  cairo_move_to(cr, at.x, at.y);
+  cairo_line_to(cr, tip.x, tip.y);
+}
+
+void drawPlans(const Painter& p, std::span<const CameraView> cameras) {
+  cairo_t* cr = p.cr();
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const CameraView& c : cameras) {
+    if (c.plan.size() >= 2) {
+      p.polylinePath(c.plan);
+      p.stroke(kPlan, kPlanWidth, 0.9);
+    }
+    if (c.goal) {
+      goalMarkerPath(cr, p.image(c.goal->position()), c.goal->yaw, p.em());
+      p.stroke(kPlan, kPlanWidth);
+    }
+  }
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+}
+
+void drawCameras(const Painter& p, std::span<const CameraView> cameras) {
+  for (std::size_t j = 0; j < cameras.size(); ++j) {
+    const geometry::Pose& pose = cameras[j].pose;
+    drawCameraMarker(p.cr(), p.image(pose.position()), pose.yaw, std::to_string(j), p.em());
+  }
+}
+
+// "coverage   65.6 %  [=====     ]": a label, its value and a bar of it.
+void drawMeter(cairo_t* cr, Vec2 baseline, const std::string& label, double value, Rgb colour,
+               double em) {
+  text(cr, baseline, label, 0.95 * em, kText);
+  text(cr, {baseline.x + 10.2 * em, baseline.y}, fmt::format("{:.1f} %", 100.0 * value), 0.95 * em,
+       kText, Align::Right, true);
+  const double x = baseline.x + 10.8 * em, y = baseline.y - 0.62 * em;
+  const double width = 4.2 * em, height = 0.55 * em;
+  cairo_rectangle(cr, x, y, width, height);
+  setColour(cr, kBarTrack);
+  cairo_fill(cr);
+  cairo_rectangle(cr, x, y, width * std::clamp(value, 0.0, 1.0), height);
+  setColour(cr, colour);
+  cairo_fill(cr);
+}
+
+// The legend's sample of each thing, in a box 2 em wide centred on the row's middle.
+void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
+  const Vec2 centre = middleLeft + Vec2{1.0 * em, 0.0};
+  const Vec2 left = middleLeft + Vec2{0.15 * em, 0.0}, right = middleLeft + Vec2{1.85 * em, 0.0};
+  const auto box = [&](Rgb fill) {
+    cairo_rectangle(cr, left.x, centre.y - 0.45 * em, right.x - left.x, 0.9 * em);
+    setColour(cr, fill);
+    cairo_fill(cr);
+  };
+  const auto line = [&](Rgb colour, double width) {
+    cairo_move_to(cr, left.x, left.y);
+    cairo_line_to(cr, right.x, right.y);
+    setColour(cr, colour);
+    cairo_set_line_width(cr, width * em);
+    cairo_stroke(cr);
+  };
+  switch (entry) {
+    case Legend::Seen:
+      line(kSeen, kSegmentWidth);
+      break;
+    case Legend::Unseen:
+      line(kUnseen, kSegmentWidth);
+      break;
+    case Legend::Target:
+      box(kTarget);
+      break;
+    case Legend::Obstacle:
+      box(kObstacle);
+      break;
+    case Legend::Camera: {
+      const Vec2 apex = left + Vec2{0.1 * em, 0.0};
+      cairo_move_to(cr, apex.x, apex.y);
+      cairo_line_to(cr, right.x + 0.15 * em, centre.y - 0.6 * em);
+      cairo_line_to(cr, right.x + 0.15 * em, centre.y + 0.6 * em);
+      cairo_close_path(cr);
+      setColour(cr, kView, kViewAlpha + 0.1);
+      cairo_fill(cr);
+      drawCameraMarker(cr, apex + Vec2{0.35 * em, 0.0}, 0.0, "", 0.6 * em);
+      break;
+    }
+    case Legend::Plan:
+      cairo_move_to(cr, left.x, left.y);
+      cairo_line_to(cr, right.x - 0.4 * em, right.y);
+      goalMarkerPath(cr, right - Vec2{0.4 * em, 0.0}, std::numbers::pi / 2.0, 0.8 * em);
+      setColour(cr, kPlan);
+      cairo_set_line_width(cr, kPlanWidth * em);
+      cairo_stroke(cr);
+      break;
+    case Legend::ObjectPath:
+      setPathDash(cr, em);
+      line(kObjectPath, kObjectPathWidth);
+      cairo_set_dash(cr, nullptr, 0, 0.0);
+      break;
+  }
+}
+
+constexpr const char* legendText(Legend entry) {
+  switch (entry) {
+    case Legend::Seen:
+      return "target boundary seen";
+    case Legend::Unseen:
+      return "target boundary unseen";
+    case Legend::Target:
+      return "target";
+    case Legend::Obstacle:
+      return "obstacle";
+    case Legend::Camera:
+      return "camera and what it sees";
+    case Legend::Plan:
+      return "planned path and goal";
+    case Legend::ObjectPath:
+      return "object path and speed";
+  }
+  return "";
+}
+
+// Baseline of a panel row: text sits in the lower part of its 1.6 em.
+Vec2 rowBaseline(Vec2 rowTopLeft, double em) {
+  return rowTopLeft + Vec2{0.0, 1.15 * em};
+}
+
+// The panel's rows that stay the same through a video: title, subtitle and legend.
+void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+  const double em = layout.em;
+  text(cr, rowBaseline(layout.captionRow(0), em), caption.title, 1.25 * em, kText, Align::Left,
+       true);
+  text(cr, rowBaseline(layout.captionRow(1), em), caption.subtitle, 0.9 * em, kMutedText);
+  for (int i = 0; i < kPanelRows.legend; ++i) {
+    const auto entry = static_cast<Legend>(i);
+    const Vec2 row = layout.legendRow(i);
+    drawLegendSample(cr, entry, row + Vec2{0.0, 0.8 * em}, em);
+    text(cr, rowBaseline(row, em) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
+  }
+}
+
+// Runs `draw` clipped to `area`: the world never runs into the panel, nor the panel into it.
+template <typename Draw>
+void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
+  cairo_save(cr);
+  cairo_rectangle(cr, area.x, area.y, area.width, area.height);
+  cairo_clip(cr);
+  draw();
+  cairo_restore(cr);
+}
+
+// The caption rows that change every frame: time, coverage, utilization.
+enum MovingRow { kTimeRow = 2, kCoverageRow = 3, kUtilizationRow = 4 };
+constexpr MovingRow kMovingRows[] = {kTimeRow, kCoverageRow, kUtilizationRow};
+
+// A moving row's whole pixels (half an em to the left of its text, for overhanging glyphs),
+// inside the panel.
+PixelRect movingRowArea(const FrameLayout& layout, MovingRow row) {
+  const Vec2 topLeft = layout.captionRow(row) - Vec2{0.5 * layout.em, 0.0};
+  const PixelRect& panel = layout.panel;
+  const double left = std::max(std::floor(topLeft.x), panel.x);
+  const double top = std::max(std::floor(topLeft.y), panel.y);
+  const double right = std::min(std::ceil(topLeft.x + layout.columnWidth()), panel.x + panel.width);
+  const double bottom = std::min(std::ceil(topLeft.y + layout.rowHeight()), panel.y + panel.height);
+  return {left, top, std::max(right - left, 0.0), std::max(bottom - top, 0.0)};
+}
+
+// Each moving row clipped to its area, so that nothing of it lands outside movingAreas().
+void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
+  const double em = layout.em;
+  for (const MovingRow row : kMovingRows) {
+    clippedTo(cr, movingRowArea(layout, row), [&] {
+      const Vec2 baseline = rowBaseline(layout.captionRow(row), em);
+      switch (row) {
+        case kTimeRow:
+          text(cr, baseline, fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
+          break;
+        case kCoverageRow:
+          drawMeter(cr, baseline, "coverage", caption.coverage, kSeen, em);
+          break;
+        case kUtilizationRow:
+          drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
+          break;
+      }
+    });
+  }
+}
+
+}  // namespace
+
+// Everything drawMoving() may touch: outside these a frame is its still part.
+std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
+  std::vector<PixelRect> areas{layout.worldArea};
+  for (const MovingRow row : kMovingRows)
+    areas.push_back(movingRowArea(layout, row));
+  return areas;
+}
+
+FrameLayout layoutFor(const Frame& frame, int width, int height) {
+  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
+}
+
+// A frame is drawn in two parts. The still part is what a frame shares with every other
+// frame of its video: the page, floor and wall, the object paths (under the views), the
+// title, subtitle and legend. The raster keeps it and copies it under each frame (it costs
+// about a third of the drawing); a frame that differs in stillKeyOf() redraws it.
+void drawStill(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
+  setColour(cr, kPage);
+  cairo_paint(cr);
+  clippedTo(cr, layout.worldArea, [&] {
+    const Painter painter(cr, layout.toImage, layout.em);
+    drawArena(painter, frame.world);
+    drawObjectPaths(painter, frame.paths);
+  });
+  clippedTo(cr, layout.panel, [&] { drawPanelStill(cr, layout, frame.caption); });
+}
+
+// Everything else, over the still part.
+void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, FrameUse use) {
+  clippedTo(cr, layout.worldArea, [&] {
+    const Painter painter(cr, layout.toImage, layout.em);
+    drawViews(painter, frame.cameras, use);
+    drawObjects(painter, frame.world);
+    drawSegments(painter, frame.segments);
+    drawPathLabels(painter, frame.paths);
+    drawPlans(painter, frame.cameras);
+    drawCameras(painter, frame.cameras);
+  });
+  clippedTo(cr, layout.panel, [&] { drawPanelMoving(cr, layout, frame.caption); });
+}
+
+void throwIfFailed(cairo_t* cr) {
+  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("drawing a frame failed: ") +
+                             cairo_status_to_string(cairo_status(cr)));
+  }
+}
+
+// The one drawing routine behind every surface.
+void drawFrame(cairo_t* cr, const Frame& frame, int width, int height) {
+  const FrameLayout layout = layoutFor(frame, width, height);
+  drawStill(cr, frame, layout);
+  drawMoving(cr, frame, layout, FrameUse::Still);
+  throwIfFailed(cr);
+}
+
+}  // namespace camcov::viz
