@@ -65,7 +65,6 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
     wall += t.wallSeconds;
     cpu += t.cpuSeconds;
   }
-  const int compared = s.paperWins + s.ties + s.localWins;
 
   std::string out = "<header class=\"report-header\">\n<h1>camcov benchmark report</h1>\n";
   out += fmt::format(
@@ -74,13 +73,19 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
       "and local optimization) against local optimization only, on {} scenes with {} seeds "
       "each.</p>\n",
       m.scenes.size(), m.seeds);
-  if (compared > 0) {
+  for (const records::Tally& t : s.tallies) {
     out += fmt::format(
-        "<p class=\"verdict\">On average coverage the paper's method <b>wins {}</b>, ties {} "
-        "and <b>loses {}</b> of {} scenes (two-sided Mann-Whitney U test over seeds, "
-        "α&nbsp;=&nbsp;{}). Mean over scenes of the mean average coverage: {}.</p>\n",
-        s.paperWins, s.ties, s.localWins, compared, records::kSignificance,
-        meanCoverageByMethod(data));
+        "<p class=\"verdict\">On average coverage {} <b>wins {}</b>, ties {} and <b>loses "
+        "{}</b> of {} scenes against {} (two-sided Mann-Whitney U test over seeds, "
+        "α&nbsp;=&nbsp;{}).</p>\n",
+        escapeXml(methodStyle(t.method).label), t.wins, t.ties, t.losses,
+        t.wins + t.ties + t.losses, escapeXml(methodStyle(s.reference).label),
+        records::kSignificance);
+  }
+  if (!s.tallies.empty()) {
+    out +=
+        fmt::format("<p class=\"verdict\">Mean over scenes of the mean average coverage: {}.</p>\n",
+                    meanCoverageByMethod(data));
   }
   out += "<dl class=\"facts\">\n";
   const auto fact = [&](std::string_view term, const std::string& html) {

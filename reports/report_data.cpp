@@ -156,12 +156,11 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
   data.manifest = std::move(*manifest);
   data.summary = records::loadSummaryFile(resultsDir / "summary.json");
   data.timings = folder.readTimings();
-  for (const auto& comparison : data.summary.scenes) {
+  for (const std::string& name : data.summary.scenes) {
     SceneData scene;
-    scene.name = comparison.scene;
-    const auto entry =
-        std::find_if(data.manifest.scenes.begin(), data.manifest.scenes.end(),
-                     [&](const records::SceneEntry& e) { return e.name == comparison.scene; });
+    scene.name = name;
+    const auto entry = std::find_if(data.manifest.scenes.begin(), data.manifest.scenes.end(),
+                                    [&](const records::SceneEntry& e) { return e.name == name; });
     if (entry != data.manifest.scenes.end()) {
       loadScene(*entry, scene);
     } else {

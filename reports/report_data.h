@@ -54,7 +54,7 @@ struct ReportData {
   records::BatchManifest manifest;
   records::BatchSummary summary;
   std::map<std::string, records::JobTiming> timings;
-  std::vector<SceneData> scenes;    // scenes[i] is summary.scenes[i] (natural order)
+  std::vector<SceneData> scenes;    // one per summary.scenes[i] (natural order)
   std::vector<std::string> videos;  // relative URLs of videos/*.mp4, natural order
 };
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <string>
 #include <vector>
 
 #include "reports/markup.h"
@@ -51,7 +52,23 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
       number(m.minObjectDistance, 2), number(m.minCameraDistance, 2));
 }
 
-std::string sceneBody(const SceneData& scene, const records::SceneComparison& c,
+// A method's row ends with its comparison against the reference: Δ, p, the winner; the
+// reference's own row says what it is.
+std::string comparisonCells(const records::MethodSummary& m, const records::BatchSummary& s) {
+  if (m.method == s.reference) {
+    return "<td class=\"num muted\" colspan=\"3\">reference</td>";
+  }
+  const records::Comparison* c = s.comparison(m.scene, m.method);
+  if (c == nullptr || c->winner.empty()) {
+    return "<td class=\"num\">—</td><td class=\"num\">—</td><td>" + winnerBadge("") + "</td>";
+  }
+  return fmt::format("<td class=\"num\">{}</td><td class=\"num\" title=\"{}\">{}</td><td>{}</td>",
+                     fmt::format("{:+.3f}", c->meanDifference),
+                     c->exact ? "exact permutation test" : "normal approximation",
+                     pValueText(c->pValue), winnerBadge(c->winner));
+}
+
+std::string sceneBody(const SceneData& scene, const records::BatchSummary& summary,
                       const std::vector<const records::MethodSummary*>& rows, std::size_t order) {
   // Bold marks the one best mean; equal means (a deterministic tie) stay plain.
   const auto uniqueBest = [&](records::Description records::MethodSummary::*metric) {
@@ -70,10 +87,16 @@ std::string sceneBody(const SceneData& scene, const records::SceneComparison& c,
   };
   const auto* bestCoverage = uniqueBest(&records::MethodSummary::coverage);
   const auto* bestUtilization = uniqueBest(&records::MethodSummary::utilization);
-  // Sort keys live on the <tbody>: the script reorders whole scenes.
+  // Sort keys live on the <tbody> (the script reorders whole scenes): those of the first
+  // method compared with the reference.
+  const records::Comparison* first = nullptr;
+  for (const auto* m : rows) {
+    if (!first) first = summary.comparison(m->scene, m->method);
+  }
   std::string out =
       fmt::format("<tbody data-scene=\"{}\" data-delta=\"{}\" data-p=\"{}\" data-winner=\"{}\">\n",
-                  order, c.meanDifference, c.pValue, escapeXml(c.winner));
+                  order, first ? first->meanDifference : 0.0, first ? first->pValue : 1.0,
+                  escapeXml(first ? first->winner : ""));
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& m = *rows[i];
     out += "<tr>";
@@ -83,16 +106,7 @@ std::string sceneBody(const SceneData& scene, const records::SceneComparison& c,
     }
     out += methodRow(m, rows.size() > 1 && &m == bestCoverage,
                      rows.size() > 1 && &m == bestUtilization);
-    if (i == 0) {
-      const bool compared = !c.winner.empty();
-      out += fmt::format(
-          "<td class=\"num\" rowspan=\"{0}\">{1}</td><td class=\"num\" rowspan=\"{0}\" "
-          "title=\"{2}\">{3}</td><td rowspan=\"{0}\">{4}</td>",
-          rows.size(), compared ? fmt::format("{:+.3f}", c.meanDifference) : "—",
-          c.exact ? "exact permutation test" : "normal approximation",
-          compared ? pValueText(c.pValue) : "—", winnerBadge(c.winner));
-    }
-    out += "</tr>\n";
+    out += comparisonCells(m, summary) + "</tr>\n";
   }
   return out + "</tbody>\n";
 }
@@ -102,11 +116,11 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
   for (const auto& m : data.summary.methods)
     byScene[m.scene].push_back(&m);
   std::string bodies;
-  int scenes = 0, paperWins = 0, ties = 0, localWins = 0;
+  int scenes = 0;
+  std::map<std::string, records::Tally> tallies;  // of this group's scenes, by method
   for (std::size_t i = 0; i < data.scenes.size(); ++i) {
     const SceneData& scene = data.scenes[i];
     if (scene.group != group) continue;
-    const records::SceneComparison& c = data.summary.scenes[i];
     std::vector<const records::MethodSummary*> rows;
     for (const auto& method : orderedMethods(data.manifest.methods)) {
       for (const auto* m : byScene[scene.name]) {
@@ -115,10 +129,23 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
     }
     if (rows.empty()) continue;
     ++scenes;
-    paperWins += c.winner == "paper";
-    ties += c.winner == "tie";
-    localWins += c.winner == "local";
-    bodies += sceneBody(scene, c, rows, i);
+    for (const auto* m : rows) {
+      const records::Comparison* c = data.summary.comparison(m->scene, m->method);
+      if (c == nullptr || c->winner.empty()) continue;
+      records::Tally& t = tallies[m->method];
+      t.wins += c->winner == m->method;
+      t.ties += c->winner == "tie";
+      t.losses += c->winner == data.summary.reference;
+    }
+    bodies += sceneBody(scene, data.summary, rows, i);
+  }
+  std::vector<std::string> verdicts;
+  for (const auto& method : orderedMethods(data.manifest.methods)) {
+    const auto it = tallies.find(method);
+    if (it == tallies.end()) continue;
+    verdicts.push_back(fmt::format("{} against {}: wins {}, ties {}, losses {}", escapeXml(method),
+                                   escapeXml(data.summary.reference), it->second.wins,
+                                   it->second.ties, it->second.losses));
   }
   if (scenes == 0) return {};
   const auto sortable = [](std::string_view key, std::string_view label) {
@@ -127,7 +154,7 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
         key, label);
   };
   std::string out = fmt::format(
-      "<h3>{} <span class=\"muted\">({}: paper wins {}, ties {}, local wins {})</span>"
+      "<h3>{} <span class=\"muted\">({}{}{})</span>"
       "</h3>\n<div class=\"table-wrap\"><table class=\"summary sortable\" data-group=\"{}\">\n"
       "<thead><tr>{}<th scope=\"col\" rowspan=\"2\">Method</th><th scope=\"col\" "
       "rowspan=\"2\">Runs</th><th scope=\"colgroup\" colspan=\"2\">Average coverage</th>"
@@ -139,8 +166,9 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
       "<th scope=\"col\" title=\"runs with time below δ that the safety layer judged "
       "avoidable\">runs with avoidable contact</th><th scope=\"col\" title=\"minimum over all "
       "runs, continuous time\">min distance, m<br>object / camera</th></tr></thead>\n",
-      groupTitle(group), scenes, paperWins, ties, localWins, groupName(group),
-      sortable("scene", "Scene"), sortable("delta", "Δ coverage"), sortable("p", "p"),
+      groupTitle(group), scenes, verdicts.empty() ? "" : ": ", join(verdicts, "; "),
+      groupName(group), sortable("scene", "Scene"),
+      sortable("delta", "Δ coverage vs " + escapeXml(data.summary.reference)), sortable("p", "p"),
       sortable("winner", "Winner"));
   return out + bodies + "</table></div>\n";
 }
@@ -154,10 +182,12 @@ std::string summarySection(const ReportData& data) {
       "median; safety as the mean time per run a camera spent closer than δ = {} m to an object "
       "or to another camera, measured in continuous time and split by the safety layer's "
       "verdict when the contact began (unavoidable: no admissible velocity kept δ), the runs "
-      "with an avoidable contact, and the smallest distances in any run. Δ is the paper's mean "
-      "coverage minus local's; p is the two-sided Mann-Whitney U test of the two samples; the "
-      "winner is the better mean when p &lt; {}, else a tie. Click a column title to sort.</p>\n",
-      data.manifest.seeds, data.manifest.parameters.sim.delta, records::kSignificance);
+      "with an avoidable contact, and the smallest distances in any run. Every method is "
+      "compared with the reference, {}: Δ is its mean coverage minus the reference's; p is the "
+      "two-sided Mann-Whitney U test of the two samples; the winner is the better mean when "
+      "p &lt; {}, else a tie. Click a column title to sort (by the first method compared).</p>\n",
+      data.manifest.seeds, data.manifest.parameters.sim.delta, escapeXml(data.summary.reference),
+      records::kSignificance);
   for (const SceneGroup group : kSceneGroups) {
     out += groupTable(group, data);
   }

@@ -22,7 +22,8 @@ def natural(name):
 def load(folder):
     summary = json.loads((Path(folder) / "summary.json").read_text())
     methods = {(m["scene"], m["method"]): m for m in summary["methods"]}
-    winners = {s["scene"]: s["winner"] for s in summary["scenes"]}
+    # The paper method against the reference (the baseline), per scene.
+    winners = {c["scene"]: c["winner"] for c in summary["comparisons"] if c["method"] == "paper"}
     runs = {}
     for f in (Path(folder) / "runs").glob("*.json"):
         run = json.loads(f.read_text())

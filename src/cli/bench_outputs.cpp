@@ -6,6 +6,7 @@
 #include <map>
 
 #include "cli/bench_videos.h"
+#include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
 
@@ -19,32 +20,56 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
       ->capture_default_str();
 }
 
-int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
-                      const std::vector<records::JobOutcome>& outcomes,
-                      const BenchOutputOptions& options, unsigned workers) {
-  const records::BatchSummary summary = records::summarize(outcomes);
-  folder.writeSummary(summary);
-  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
+namespace {
 
+// Average coverage per scene and method, then each method against the reference.
+void printSummary(const records::BatchSummary& summary, const std::vector<std::string>& methods) {
   std::map<std::pair<std::string, std::string>, const records::MethodSummary*> rows;
   for (const auto& m : summary.methods)
     rows[{m.scene, m.method}] = &m;
-  auto cell = [&](const std::string& scene, const std::string& method) {
-    const auto it = rows.find({scene, method});
-    if (it == rows.end() || it->second->runs == 0) return std::string("-");
-    const auto& c = it->second->coverage;
-    return fmt::format("{:.3f} ± {:.3f}", c.mean, c.sd);
-  };
-  std::cout << fmt::format("{:<34} {:>15} {:>15}  {:<6} {}\n", "scene (average coverage)", "paper",
-                           "local", "winner", "p");
-  for (const auto& c : summary.scenes) {
-    std::cout << fmt::format("{:<34} {:>15} {:>15}  {:<6} {}\n", c.scene, cell(c.scene, "paper"),
-                             cell(c.scene, "local"), c.winner.empty() ? "-" : c.winner,
-                             c.winner.empty() ? std::string("-") : fmt::format("{:.3g}", c.pValue));
+  std::string header = fmt::format("{:<34}", "scene (average coverage)");
+  for (const auto& method : methods)
+    header += fmt::format(" {:>15}", method);
+  for (const auto& method : methods) {
+    if (method != summary.reference)
+      header += fmt::format("  {:<18}", method + " vs " + summary.reference);
   }
-  std::cout << fmt::format("paper wins {}, ties {}, local wins {}; {} failed jobs\n",
-                           summary.paperWins, summary.ties, summary.localWins,
-                           summary.failures.size());
+  std::cout << header << "\n";
+  for (const auto& scene : summary.scenes) {
+    std::string line = fmt::format("{:<34}", scene);
+    for (const auto& method : methods) {
+      const auto it = rows.find({scene, method});
+      line += it == rows.end() || it->second->runs == 0
+                  ? fmt::format(" {:>15}", "-")
+                  : fmt::format(" {:>15}", fmt::format("{:.3f} ± {:.3f}", it->second->coverage.mean,
+                                                       it->second->coverage.sd));
+    }
+    for (const auto& method : methods) {
+      if (method == summary.reference) continue;
+      const records::Comparison* c = summary.comparison(scene, method);
+      line += fmt::format("  {:<18}", c == nullptr || c->winner.empty()
+                                          ? std::string("-")
+                                          : fmt::format("{} (p {:.3g})", c->winner, c->pValue));
+    }
+    std::cout << line << "\n";
+  }
+  for (const auto& t : summary.tallies) {
+    std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}\n", t.method,
+                             summary.reference, t.wins, t.ties, t.losses);
+  }
+  std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
+}
+
+}  // namespace
+
+int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+                      const std::vector<records::JobOutcome>& outcomes,
+                      const BenchOutputOptions& options, unsigned workers) {
+  const records::BatchSummary summary =
+      records::summarize(outcomes, control::referenceAmong(manifest.methods));
+  folder.writeSummary(summary);
+  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
+  printSummary(summary, manifest.methods);
   for (const auto& f : summary.failures) {
     std::cout << fmt::format("  failed: {} {} seed {}: {}\n", f.scene, f.method, f.seed, f.error);
   }

@@ -29,7 +29,7 @@ Description describedFrom(const nlohmann::json& j) {
 
 }  // namespace
 
-BatchSummary summarize(std::vector<JobOutcome> outcomes) {
+BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference) {
   std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
     if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
     return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
@@ -96,30 +96,46 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes) {
     coverageByScene[m.scene][m.method] = coverage;
     summary.methods.push_back(std::move(m));
   }
+  summary.reference = reference;
+  std::map<std::string, Tally> tallies;
   for (const auto& [scene, byMethod] : coverageByScene) {
-    SceneComparison c;
-    c.scene = scene;
-    const auto paper = byMethod.find("paper"), local = byMethod.find("local");
-    if (paper != byMethod.end() && local != byMethod.end() && !paper->second.empty() &&
-        !local->second.empty()) {
-      const MannWhitney test = mannWhitneyU(paper->second, local->second);
-      c.pValue = test.pValue;
-      c.exact = test.exact;
-      c.meanDifference = describe(paper->second).mean - describe(local->second).mean;
-      if (c.pValue >= kSignificance || c.meanDifference == 0.0) {
-        c.winner = "tie";
-        ++summary.ties;
-      } else if (c.meanDifference > 0.0) {
-        c.winner = "paper";
-        ++summary.paperWins;
-      } else {
-        c.winner = "local";
-        ++summary.localWins;
+    summary.scenes.push_back(scene);
+    const auto base = byMethod.find(reference);
+    for (const auto& [method, coverage] : byMethod) {
+      if (method == reference) continue;
+      Comparison c{scene, method, "", 1.0, false, 0.0};
+      if (base != byMethod.end() && !base->second.empty() && !coverage.empty()) {
+        const MannWhitney test = mannWhitneyU(coverage, base->second);
+        c.pValue = test.pValue;
+        c.exact = test.exact;
+        c.meanDifference = describe(coverage).mean - describe(base->second).mean;
+        Tally& t = tallies[method];
+        t.method = method;
+        if (c.pValue >= kSignificance || c.meanDifference == 0.0) {
+          c.winner = "tie";
+          ++t.ties;
+        } else if (c.meanDifference > 0.0) {
+          c.winner = method;
+          ++t.wins;
+        } else {
+          c.winner = reference;
+          ++t.losses;
+        }
       }
+      summary.comparisons.push_back(std::move(c));
     }
-    summary.scenes.push_back(std::move(c));
   }
+  for (auto& [method, t] : tallies)
+    summary.tallies.push_back(std::move(t));
   return summary;
+}
+
+const Comparison* BatchSummary::comparison(const std::string& scene,
+                                           const std::string& method) const {
+  for (const Comparison& c : comparisons) {
+    if (c.scene == scene && c.method == method) return &c;
+  }
+  return nullptr;
 }
 
 nlohmann::json summaryToJson(const BatchSummary& summary) {
@@ -146,16 +162,22 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"medianSeed", m.medianSeed},
                             {"bestSeed", m.bestSeed}});
   }
-  j["scenes"] = nlohmann::json::array();
-  for (const auto& c : summary.scenes) {
-    j["scenes"].push_back({{"scene", c.scene},
-                           {"winner", c.winner},
-                           {"pValue", c.pValue},
-                           {"exactTest", c.exact},
-                           {"meanCoverageDifference", c.meanDifference}});
+  j["scenes"] = summary.scenes;
+  j["reference"] = summary.reference;
+  j["comparisons"] = nlohmann::json::array();
+  for (const auto& c : summary.comparisons) {
+    j["comparisons"].push_back({{"scene", c.scene},
+                                {"method", c.method},
+                                {"winner", c.winner},
+                                {"pValue", c.pValue},
+                                {"exactTest", c.exact},
+                                {"meanCoverageDifference", c.meanDifference}});
   }
-  j["totals"] = {
-      {"paperWins", summary.paperWins}, {"ties", summary.ties}, {"localWins", summary.localWins}};
+  j["totals"] = nlohmann::json::array();
+  for (const auto& t : summary.tallies) {
+    j["totals"].push_back(
+        {{"method", t.method}, {"wins", t.wins}, {"ties", t.ties}, {"losses", t.losses}});
+  }
   j["failures"] = nlohmann::json::array();
   for (const auto& f : summary.failures) {
     j["failures"].push_back(
@@ -165,28 +187,28 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
 }
 
 std::string summaryToCsv(const BatchSummary& summary) {
-  std::map<std::string, const SceneComparison*> comparison;
-  for (const auto& c : summary.scenes)
-    comparison[c.scene] = &c;
   std::string csv =
       "scene,method,runs,failed,coverage_mean,coverage_sd,coverage_min,coverage_q1,coverage_median,"
       "coverage_q3,coverage_max,utilization_mean,utilization_sd,utilization_min,utilization_q1,"
       "utilization_median,utilization_q3,utilization_max,mean_object_collision_time,"
       "mean_camera_collision_time,runs_with_collision,mean_avoidable_contact_time,"
       "mean_unavoidable_contact_time,runs_with_avoidable_contact,runs_with_unavoidable_contact,"
-      "min_object_distance,min_camera_distance,median_seed,best_seed,winner,p_value\n";
+      "min_object_distance,min_camera_distance,median_seed,best_seed,compared_with,winner,p_"
+      "value\n";
   for (const auto& m : summary.methods) {
-    const SceneComparison& c = *comparison.at(m.scene);
+    // The reference's own row compares with nothing: its last three cells are empty.
+    const Comparison* c = summary.comparison(m.scene, m.method);
     const auto& cv = m.coverage;
     const auto& ut = m.utilization;
     csv += fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},"
-        "{}\n",
+        "{},{}\n",
         m.scene, m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3,
         cv.max, ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
         m.meanCameraCollisionTime, m.runsWithCollision, m.meanAvoidableContactTime,
         m.meanUnavoidableContactTime, m.runsWithAvoidableContact, m.runsWithUnavoidableContact,
-        m.minObjectDistance, m.minCameraDistance, m.medianSeed, m.bestSeed, c.winner, c.pValue);
+        m.minObjectDistance, m.minCameraDistance, m.medianSeed, m.bestSeed,
+        c ? summary.reference : "", c ? c->winner : "", c ? fmt::format("{}", c->pValue) : "");
   }
   return csv;
 }
@@ -218,15 +240,18 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       ms.bestSeed = m.at("bestSeed").get<std::uint64_t>();
       s.methods.push_back(std::move(ms));
     }
-    for (const auto& c : j.at("scenes")) {
-      s.scenes.push_back({c.at("scene").get<std::string>(), c.at("winner").get<std::string>(),
-                          c.at("pValue").get<double>(), c.at("exactTest").get<bool>(),
-                          c.at("meanCoverageDifference").get<double>()});
+    s.scenes = j.at("scenes").get<std::vector<std::string>>();
+    s.reference = j.at("reference").get<std::string>();
+    for (const auto& c : j.at("comparisons")) {
+      s.comparisons.push_back({c.at("scene").get<std::string>(), c.at("method").get<std::string>(),
+                               c.at("winner").get<std::string>(), c.at("pValue").get<double>(),
+                               c.at("exactTest").get<bool>(),
+                               c.at("meanCoverageDifference").get<double>()});
     }
-    const auto& totals = j.at("totals");
-    s.paperWins = totals.at("paperWins").get<int>();
-    s.ties = totals.at("ties").get<int>();
-    s.localWins = totals.at("localWins").get<int>();
+    for (const auto& t : j.at("totals")) {
+      s.tallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
+                           t.at("ties").get<int>(), t.at("losses").get<int>()});
+    }
     for (const auto& f : j.at("failures")) {
       s.failures.push_back({f.at("scene").get<std::string>(),
                             f.at("method").get<std::string>(),

@@ -50,24 +50,39 @@ struct MethodSummary {
   std::uint64_t bestSeed = 0;
 };
 
-struct SceneComparison {
+// One method against the reference method on one scene: the two-sided Mann-Whitney U test of
+// their runs' average coverage.
+struct Comparison {
   std::string scene;
-  std::string winner;  // "paper", "local", "tie" (p >= alpha), or "" when not both ran
+  std::string method;
+  std::string winner;  // the method, the reference, "tie" (p >= α), or "" when either is missing
   double pValue = 1.0;
   bool exact = false;
-  double meanDifference = 0.0;  // mean coverage of paper minus local
+  double meanDifference = 0.0;  // mean coverage of the method minus the reference's
+};
+
+// How one method fared against the reference over the scenes where both ran.
+struct Tally {
+  std::string method;
+  int wins = 0, ties = 0, losses = 0;
 };
 
 struct BatchSummary {
   std::vector<MethodSummary> methods;   // sorted by scene, then method
-  std::vector<SceneComparison> scenes;  // sorted by scene
-  int paperWins = 0, ties = 0, localWins = 0;
-  std::vector<JobOutcome> failures;  // sorted by scene, method, seed
+  std::vector<std::string> scenes;      // every scene with a job, natural order
+  std::string reference;                // what every other method is compared with
+  std::vector<Comparison> comparisons;  // by scene, then method; none for the reference
+  std::vector<Tally> tallies;           // by method; none for the reference
+  std::vector<JobOutcome> failures;     // sorted by scene, method, seed
+
+  // The comparison of `method` on `scene`, or nullptr (the reference, or a method not run).
+  const Comparison* comparison(const std::string& scene, const std::string& method) const;
 };
 
 inline constexpr double kSignificance = 0.05;
 
-BatchSummary summarize(std::vector<JobOutcome> outcomes);
+// Compares every method with `reference` (the baseline, by default).
+BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference);
 nlohmann::json summaryToJson(const BatchSummary& summary);
 // The inverse of summaryToJson, so a report shows exactly the numbers the batch wrote.
 // Throws InputError naming `source` if the document is not a camcov summary.

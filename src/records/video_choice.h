@@ -29,7 +29,7 @@ struct VideoRun {
 };
 
 // The chosen runs, in the summary's (scene, method) order and by seed within one; failed jobs
-// are never chosen. `summary` is summarize(outcomes).
+// are never chosen. `summary` is summarize(outcomes, reference).
 std::vector<VideoRun> chooseVideoRuns(const BatchSummary& summary,
                                       std::span<const JobOutcome> outcomes, VideoChoice choice);
 

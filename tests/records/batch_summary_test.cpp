@@ -29,23 +29,55 @@ TEST(Summarize, GroupsBySceneAndMethodInNaturalOrderAndPicksWinners) {
     jobs.push_back(job("scene2", "local", s, 0.5));
   }
   jobs.push_back({"scene2", "paper", 6, true, "boom", {}});
-  const BatchSummary summary = summarize(jobs);
+  const BatchSummary summary = summarize(jobs, "local");
   ASSERT_EQ(summary.methods.size(), 4u);
   EXPECT_EQ(summary.methods[0].scene, "scene2");
   EXPECT_EQ(summary.methods[0].method, "local");
   EXPECT_EQ(summary.methods[1].failed, 1);
   EXPECT_EQ(summary.methods[1].runs, 5);
-  ASSERT_EQ(summary.scenes.size(), 2u);
-  EXPECT_EQ(summary.scenes[0].winner, "tie");
-  EXPECT_EQ(summary.scenes[1].winner, "paper");
-  EXPECT_NEAR(summary.scenes[1].pValue, 2.0 / 252.0, 1e-12);  // exact, fully separated 5 v 5
-  EXPECT_EQ(summary.paperWins, 1);
-  EXPECT_EQ(summary.ties, 1);
+  EXPECT_EQ(summary.scenes, (std::vector<std::string>{"scene2", "scene10"}));
+  EXPECT_EQ(summary.reference, "local");
+  ASSERT_EQ(summary.comparisons.size(), 2u);
+  EXPECT_EQ(summary.comparisons[0].winner, "tie");
+  EXPECT_EQ(summary.comparisons[1].winner, "paper");
+  EXPECT_EQ(summary.comparison("scene10", "paper"), &summary.comparisons[1]);
+  EXPECT_EQ(summary.comparison("scene10", "local"), nullptr) << "the reference is no comparison";
+  EXPECT_NEAR(summary.comparisons[1].pValue, 2.0 / 252.0, 1e-12);  // exact, fully separated 5 v 5
+  ASSERT_EQ(summary.tallies.size(), 1u);
+  EXPECT_EQ(summary.tallies[0].method, "paper");
+  EXPECT_EQ(summary.tallies[0].wins, 1);
+  EXPECT_EQ(summary.tallies[0].ties, 1);
+  EXPECT_EQ(summary.tallies[0].losses, 0);
   ASSERT_EQ(summary.failures.size(), 1u);
   EXPECT_EQ(summary.failures[0].error, "boom");
   // Median seed: coverages rise with the seed, so seed 3 is the median of five.
   EXPECT_EQ(summary.methods[3].medianSeed, 3u);
   EXPECT_EQ(summary.methods[3].bestSeed, 5u);
+}
+
+TEST(Summarize, AnyNumberOfMethodsIsComparedWithTheReference) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    jobs.push_back(job("a", "local", s, 0.5 + 0.001 * s));
+    jobs.push_back(job("a", "better", s, 0.8 + 0.001 * s));
+    jobs.push_back(job("a", "worse", s, 0.2 + 0.001 * s));
+    jobs.push_back(job("a", "same", s, 0.5 + 0.001 * s));
+    jobs.push_back(job("b", "local", s, 0.5));  // only the reference ran on b
+  }
+  const BatchSummary summary = summarize(jobs, "local");
+  EXPECT_EQ(summary.scenes, (std::vector<std::string>{"a", "b"}));
+  ASSERT_EQ(summary.comparisons.size(), 3u);
+  EXPECT_EQ(summary.comparison("a", "better")->winner, "better");
+  EXPECT_EQ(summary.comparison("a", "worse")->winner, "local");
+  EXPECT_EQ(summary.comparison("a", "same")->winner, "tie");
+  EXPECT_NEAR(summary.comparison("a", "worse")->meanDifference, -0.3, 1e-12);
+  ASSERT_EQ(summary.tallies.size(), 3u);
+  for (const Tally& t : summary.tallies)
+    EXPECT_EQ(t.wins + t.ties + t.losses, 1) << t.method;
+  // The same with another reference: everything is measured against it instead.
+  const BatchSummary other = summarize(jobs, "better");
+  EXPECT_EQ(other.comparison("a", "local")->winner, "better");
+  EXPECT_EQ(other.comparison("b", "local")->winner, "") << "the reference did not run on b";
 }
 
 TEST(Summarize, MedianIsTheLowerMiddleAndTiesGoToTheLowerSeed) {
@@ -55,7 +87,7 @@ TEST(Summarize, MedianIsTheLowerMiddleAndTiesGoToTheLowerSeed) {
     jobs.push_back(job("s", "paper", seed, coverage));
   }
   jobs.push_back({"s", "paper", 5, true, "failed runs have no coverage", {}});
-  const BatchSummary summary = summarize(jobs);
+  const BatchSummary summary = summarize(jobs, "local");
   ASSERT_EQ(summary.methods.size(), 1u);
   EXPECT_EQ(summary.methods[0].medianSeed, 1u);
   EXPECT_EQ(summary.methods[0].bestSeed, 2u);
@@ -68,8 +100,9 @@ TEST(Summarize, OutputDoesNotDependOnInputOrder) {
     jobs.push_back(job("a", "local", s, 0.2 * s));
   }
   std::vector<JobOutcome> reversed(jobs.rbegin(), jobs.rend());
-  EXPECT_EQ(summaryToJson(summarize(jobs)).dump(), summaryToJson(summarize(reversed)).dump());
-  EXPECT_EQ(summaryToCsv(summarize(jobs)), summaryToCsv(summarize(reversed)));
+  EXPECT_EQ(summaryToJson(summarize(jobs, "local")).dump(),
+            summaryToJson(summarize(reversed, "local")).dump());
+  EXPECT_EQ(summaryToCsv(summarize(jobs, "local")), summaryToCsv(summarize(reversed, "local")));
 }
 
 TEST(SummaryFile, ReadsBackWhatTheSummaryWrote) {
@@ -80,7 +113,7 @@ TEST(SummaryFile, ReadsBackWhatTheSummaryWrote) {
     jobs.push_back(job("dynamic10", "paper", s, 0.3 * s));
   }
   jobs.push_back({"dynamic10", "local", 1, true, "it broke", {}});
-  const nlohmann::json written = summaryToJson(summarize(jobs));
+  const nlohmann::json written = summaryToJson(summarize(jobs, "local"));
   const BatchSummary read = summaryFromJson(written, "summary.json");
   EXPECT_EQ(summaryToJson(read), written);
   EXPECT_TRUE(std::isinf(read.methods[0].minCameraDistance)) << "null reads back as infinity";

@@ -28,7 +28,7 @@ std::vector<JobOutcome> batch() {
 
 std::vector<VideoRun> choose(VideoChoice choice) {
   const auto jobs = batch();
-  return chooseVideoRuns(summarize(jobs), jobs, choice);
+  return chooseVideoRuns(summarize(jobs, "local"), jobs, choice);
 }
 
 TEST(VideoChoice, ParsesItsFourNamesAndRejectsOthers) {
