@@ -29,39 +29,53 @@ StepAccounting::StepAccounting(const kinematics::Kinematics& kinematics, double 
     obstacleSpeeds_.push_back(kinematics.obstacleSpeedBound(i));
 }
 
-StepContacts StepAccounting::measure(const kinematics::World& before,
-                                     std::span<const geometry::Pose> from,
-                                     const kinematics::World& after,
-                                     std::span<const geometry::Pose> to) const {
-  const double t0 = before.time;
-  const double h = after.time - before.time;
-  auto cameraAt = [from, to, h](std::size_t j, double tau) {
-    return h > 0.0 ? geometry::lerp(from[j].position(), to[j].position(), tau / h)
-                   : from[j].position();
+Sample StepAccounting::sample(const kinematics::World& world,
+                              std::span<const geometry::Pose> cameras) const {
+  Sample s;
+  s.time = world.time;
+  for (const auto& c : cameras) {
+    const geometry::Vec2 p = c.position();
+    for (const auto* objects : {&world.targets, &world.obstacles}) {
+      for (const auto& object : *objects) {
+        s.objectDistances.push_back(geometry::distanceToPolygon(object, p));
+        s.minObjectDistance = std::min(s.minObjectDistance, s.objectDistances.back());
+      }
+    }
+    for (const geometry::Vec2 q : s.cameras)
+      s.minCameraDistance = std::min(s.minCameraDistance, geometry::distance(p, q));
+    s.cameras.push_back(p);
+  }
+  return s;
+}
+
+StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const {
+  const double t0 = from.time;
+  const double h = to.time - from.time;
+  auto cameraAt = [&from, &to, h](std::size_t j, double tau) {
+    return h > 0.0 ? geometry::lerp(from.cameras[j], to.cameras[j], tau / h) : from.cameras[j];
   };
   auto cameraSpeed = [&](std::size_t j) {
-    return h > 0.0 ? geometry::distance(from[j].position(), to[j].position()) / h : 0.0;
+    return h > 0.0 ? geometry::distance(from.cameras[j], to.cameras[j]) / h : 0.0;
   };
 
+  const std::size_t objectCount = targetSpeeds_.size() + obstacleSpeeds_.size();
   std::vector<Pair> pairs;
-  for (std::size_t j = 0; j < from.size(); ++j) {
-    const geometry::Vec2 p0 = from[j].position(), p1 = to[j].position();
-    auto addObject = [&](bool isTarget, std::size_t i, const geometry::Ring& r0,
-                         const geometry::Ring& r1, double speed) {
+  for (std::size_t j = 0; j < from.cameras.size(); ++j) {
+    for (std::size_t o = 0; o < objectCount; ++o) {
+      const bool isTarget = o < targetSpeeds_.size();
+      const std::size_t i = isTarget ? o : o - targetSpeeds_.size();
+      const double speed = isTarget ? targetSpeeds_[i] : obstacleSpeeds_[i];
       const Sampled s{{},
                       h,
-                      geometry::distanceToPolygon(r0, p0),
-                      geometry::distanceToPolygon(r1, p1),
+                      from.objectDistances[j * objectCount + o],
+                      to.objectDistances[j * objectCount + o],
                       cameraSpeed(j) + speed};
       pairs.push_back({j, -1, isTarget, i, s});
-    };
-    for (std::size_t i = 0; i < before.targets.size(); ++i)
-      addObject(true, i, before.targets[i], after.targets[i], targetSpeeds_[i]);
-    for (std::size_t i = 0; i < before.obstacles.size(); ++i)
-      addObject(false, i, before.obstacles[i], after.obstacles[i], obstacleSpeeds_[i]);
+    }
     for (std::size_t i = 0; i < j; ++i) {
       // Both move linearly, so their offset does too: |r(τ)| with r linear, slope ≤ |r1 − r0|/h.
-      const geometry::Vec2 r0 = p0 - from[i].position(), r1 = p1 - to[i].position();
+      const geometry::Vec2 r0 = from.cameras[j] - from.cameras[i];
+      const geometry::Vec2 r1 = to.cameras[j] - to.cameras[i];
       const Sampled s{{},
                       h,
                       geometry::norm(r0),
@@ -76,8 +90,8 @@ StepContacts StepAccounting::measure(const kinematics::World& before,
     const std::size_t j = p.camera;
     if (p.withCamera()) {
       const auto i = static_cast<std::size_t>(p.other);
-      const geometry::Vec2 r0 = from[j].position() - from[i].position();
-      const geometry::Vec2 r1 = to[j].position() - to[i].position();
+      const geometry::Vec2 r0 = from.cameras[j] - from.cameras[i];
+      const geometry::Vec2 r1 = to.cameras[j] - to.cameras[i];
       p.distance.f = [r0, r1, h](double tau) {
         return geometry::norm(geometry::lerp(r0, r1, tau / h));
       };
@@ -96,7 +110,7 @@ StepContacts StepAccounting::measure(const kinematics::World& before,
   };
 
   StepContacts result;
-  result.contactStart.assign(from.size(), -1.0);
+  result.contactStart.assign(from.cameras.size(), -1.0);
   auto lowerBound = [](const Sampled& s) { return 0.5 * (s.f0 + s.f1 - s.lipschitz * s.h); };
   // Minimum distances: start from the samples, then search only pairs that might beat them.
   for (const Pair& p : pairs) {

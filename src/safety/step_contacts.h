@@ -21,6 +21,16 @@ namespace camcov::safety {
 inline constexpr double kDistanceTolerance = 1e-4;  // m, of the minimum distances
 inline constexpr int kContactDepth = 12;            // time below δ to dt / 2^12
 
+// The distances at one instant: every camera to every target and obstacle, and the closest
+// of them. A step is measured between two of these, and each is taken once per instant.
+struct Sample {
+  double time = 0.0;
+  std::vector<geometry::Vec2> cameras;  // positions
+  std::vector<double> objectDistances;  // camera-major: targets, then obstacles, per camera
+  double minObjectDistance = std::numeric_limits<double>::infinity();  // m
+  double minCameraDistance = std::numeric_limits<double>::infinity();  // m (one camera: ∞)
+};
+
 struct StepContacts {
   double minObjectDistance = std::numeric_limits<double>::infinity();  // m, over the step
   double minCameraDistance = std::numeric_limits<double>::infinity();  // m
@@ -36,9 +46,11 @@ class StepAccounting {
  public:
   StepAccounting(const kinematics::Kinematics& kinematics, double delta);
 
-  // The step from (`before`, `from`) to (`after`, `to`): worlds and camera poses at its ends.
-  StepContacts measure(const kinematics::World& before, std::span<const geometry::Pose> from,
-                       const kinematics::World& after, std::span<const geometry::Pose> to) const;
+  // The distances at `world`'s instant for cameras at these poses.
+  Sample sample(const kinematics::World& world, std::span<const geometry::Pose> cameras) const;
+  // The step between two samples (cameras moving linearly between them, objects as the scene
+  // moves them).
+  StepContacts measure(const Sample& from, const Sample& to) const;
 
  private:
   const kinematics::Kinematics& kinematics_;

@@ -15,28 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double minObjectDistance(const kinematics::World& world, std::span<const geometry::Pose> cameras) {
-  double best = kInf;
-  for (const auto& c : cameras) {
-    for (const auto* objects : {&world.targets, &world.obstacles}) {
-      for (const auto& object : *objects) {
-        best = std::min(best, geometry::distanceToPolygon(object, c.position()));
-      }
-    }
-  }
-  return best;
-}
-
-double minCameraDistance(std::span<const geometry::Pose> cameras) {
-  double best = kInf;
-  for (std::size_t i = 0; i < cameras.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      best = std::min(best, geometry::distance(cameras[i].position(), cameras[j].position()));
-    }
-  }
-  return best;
-}
-
 // Constraint 3 of Problem 2.2: ‖[ẋ ẏ]‖ ≤ v_max and |γ̇| ≤ γ̇_max. Non-finite commands stop.
 kinematics::CameraCommand saturate(kinematics::CameraCommand u, const scene::CameraSpec& limits) {
   if (!std::isfinite(u.velocity.x) || !std::isfinite(u.velocity.y)) u.velocity = {};
@@ -131,7 +109,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   const double dt = params.sim.dt;
   const int steps = static_cast<int>(std::llround(params.sim.duration / dt));
 
-  std::vector<geometry::Pose> cameras, previousCameras;
+  std::vector<geometry::Pose> cameras;
   for (const auto& c : scene.cameras)
     cameras.push_back(c.initial);
   std::vector<kinematics::CameraCommand> commands(cameras.size());
@@ -139,8 +117,8 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   std::vector<std::optional<geometry::Pose>> goals(cameras.size());
   std::vector<control::ControlEvent> events;
   std::vector<Contact> contacts(cameras.size());
-  std::vector<safety::Verdict> verdicts;
-  kinematics::World world, previousWorld;
+  kinematics::World world;
+  safety::Sample previousSample;
 
   RunSummary summary;
   summary.duration = steps * dt;
@@ -148,7 +126,6 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   reward::RewardTerms previous;
   for (int k = 0; k <= steps; ++k) {
     const double t = k * dt;  // not accumulated: no drift over long runs
-    std::swap(world, previousWorld);
     kinematics.worldAt(t, world);
     measure.setWorld(world);
 
@@ -156,8 +133,9 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     record.index = k;
     record.time = t;
     record.terms = measure.evaluate(cameras);
-    record.minObjectDistance = minObjectDistance(world, cameras);
-    record.minCameraDistance = minCameraDistance(cameras);
+    safety::Sample sample = accounting.sample(world, cameras);
+    record.minObjectDistance = sample.minObjectDistance;
+    record.minCameraDistance = sample.minCameraDistance;
     events.clear();
     if (k == 0) {
       record.minObjectDistanceInStep = record.minObjectDistance;
@@ -165,14 +143,16 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
       summary.minObjectDistance = record.minObjectDistance;
       summary.minCameraDistance = record.minCameraDistance;
     } else {
-      accountStep(accounting.measure(previousWorld, previousCameras, world, cameras), verdicts,
-                  previousWorld.time, contacts, record, summary, events);
+      // The layer's verdicts are still those of the step's start: apply() comes below.
+      accountStep(accounting.measure(previousSample, sample), safety.verdicts(),
+                  previousSample.time, contacts, record, summary, events);
       // trapezoid rule, eq. (4)
       summary.averageCoverage += 0.5 * (previous.coverage + record.terms.coverage) * dt;
       summary.averageUtilization += 0.5 * (previous.utilization + record.terms.utilization) * dt;
       summary.averageReward += 0.5 * (previous.reward + record.terms.reward) * dt;
     }
     previous = record.terms;
+    previousSample = std::move(sample);
 
     if (k < steps) {
       // The controller acts on the present; its events belong to this step's record.
@@ -182,7 +162,6 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
         velocities[j] = commands[j].velocity;
       }
       safety.apply(world, cameras, velocities);
-      verdicts = safety.verdicts();
     }
     controller.takeEvents(events);
     for (std::size_t j = 0; j < cameras.size(); ++j)
@@ -193,7 +172,6 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     recorder.step(record);
     if (k == steps) break;
 
-    previousCameras = cameras;
     for (std::size_t j = 0; j < cameras.size(); ++j) {
       geometry::Vec2 next = cameras[j].position() + velocities[j] * dt;
       if (moveInside(world.boundary, cameras[j].position(), next)) ++summary.boundaryClamps;

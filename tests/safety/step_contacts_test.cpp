@@ -81,7 +81,8 @@ TEST(StepContacts, MinimaAndTimeBelowDeltaAgreeWithAFineTimeGrid) {
     to.push_back({start.x + 0.2 * unit(rng), start.y - 0.2 * unit(rng), 0});
 
     const kinematics::World before = kinematics.worldAt(t0), after = kinematics.worldAt(t0 + kDt);
-    const StepContacts fast = accounting.measure(before, from, after, to);
+    const StepContacts fast =
+        accounting.measure(accounting.sample(before, from), accounting.sample(after, to));
     const Brute slow = bruteForce(kinematics, t0, kDt, from, to, 0.5, kGrid);
     // Lipschitz constant of any distance here: cameras ≤ 8 m/s apart, bar tip 8 m/s, target 3.
     const double gridError = 16.0 * kDt / kGrid / 2;
@@ -110,8 +111,8 @@ TEST(StepContacts, ACrossingBetweenTheSamplesIsCaughtThatTheSamplesMiss) {
   const kinematics::Kinematics kinematics(scene);
   const StepAccounting accounting(kinematics, 0.5);
   const std::vector<geometry::Pose> from{{-1, 15, 0}, {1, 15, 0}}, to{{1, 15, 0}, {-1, 15, 0}};
-  const StepContacts c =
-      accounting.measure(kinematics.worldAt(0.0), from, kinematics.worldAt(0.1), to);
+  const StepContacts c = accounting.measure(accounting.sample(kinematics.worldAt(0.0), from),
+                                            accounting.sample(kinematics.worldAt(0.1), to));
   EXPECT_NEAR(c.minCameraDistance, 0.0, kDistanceTolerance);
   // |4 t/0.1 − 2| < 0.5 for t in (0.0375, 0.0625): 0.025 s.
   EXPECT_NEAR(c.cameraContactTime, 0.025, 2 * 0.1 / 4096);
