@@ -4,38 +4,34 @@
 
 namespace camcov::safety {
 
-void ObservedSpeeds::update(const std::vector<geometry::Ring>& now, double elapsed, Kind& kind,
-                            std::vector<std::vector<double>>& speeds,
-                            std::vector<double>& fastest) {
+void ObservedSpeeds::Kind::update(const std::vector<geometry::Ring>& now, double elapsed) {
   speeds.resize(now.size());
+  lastStep.resize(now.size());
   fastest.assign(now.size(), 0.0);
-  kind.lastStep.resize(now.size());
   for (std::size_t i = 0; i < now.size(); ++i) {
     const geometry::Ring& ring = now[i];
-    auto& last = kind.lastStep[i];
-    // A ring whose vertex count changed has no correspondence with its past: unknown, 0.
-    const bool comparable = elapsed > 0.0 && i < kind.previous.size() &&
-                            kind.previous[i].size() == ring.size() && last.size() == ring.size();
-    speeds[i].assign(ring.size(), 0.0);
+    // Nothing seen before, or a ring whose vertex count changed (no correspondence with its
+    // past): speed unknown, taken as 0.
     std::vector<double> step(ring.size(), 0.0);
-    if (elapsed > 0.0 && i < kind.previous.size() && kind.previous[i].size() == ring.size()) {
+    if (elapsed > 0.0 && i < previous.size() && previous[i].size() == ring.size()) {
       for (std::size_t v = 0; v < ring.size(); ++v)
-        step[v] = geometry::distance(ring[v], kind.previous[i][v]) / elapsed;
+        step[v] = geometry::distance(ring[v], previous[i][v]) / elapsed;
     }
+    if (lastStep[i].size() != ring.size()) lastStep[i].assign(ring.size(), 0.0);
+    speeds[i].resize(ring.size());
     for (std::size_t v = 0; v < ring.size(); ++v) {
-      speeds[i][v] = comparable ? std::max(step[v], last[v]) : step[v];
+      speeds[i][v] = std::max(step[v], lastStep[i][v]);
       fastest[i] = std::max(fastest[i], speeds[i][v]);
     }
-    last = std::move(step);
+    lastStep[i] = std::move(step);
   }
-  kind.previous = now;
+  previous = now;
 }
 
 void ObservedSpeeds::observe(const kinematics::World& world) {
-  const double elapsed = seen_ ? world.time - lastTime_ : 0.0;
-  update(world.targets, elapsed, targetHistory_, targets_, fastestTargets_);
-  update(world.obstacles, elapsed, obstacleHistory_, obstacles_, fastestObstacles_);
-  seen_ = true;
+  const double elapsed = lastTime_ ? world.time - *lastTime_ : 0.0;
+  targets_.update(world.targets, elapsed);
+  obstacles_.update(world.obstacles, elapsed);
   lastTime_ = world.time;
 }
 

@@ -8,6 +8,7 @@
 //
 // A speed, not a velocity, on purpose: the safety layer assumes the vertex may go in any
 // direction at that speed, so a path corner that turns an object towards a camera is covered.
+#include <optional>
 #include <vector>
 
 #include "geometry/ring.h"
@@ -21,25 +22,24 @@ class ObservedSpeeds {
   void observe(const kinematics::World& world);
 
   // Speed bound of vertex v of target i / obstacle i, m/s.
-  double target(std::size_t i, std::size_t v) const { return targets_[i][v]; }
-  double obstacle(std::size_t i, std::size_t v) const { return obstacles_[i][v]; }
+  double target(std::size_t i, std::size_t v) const { return targets_.speeds[i][v]; }
+  double obstacle(std::size_t i, std::size_t v) const { return obstacles_.speeds[i][v]; }
   // The fastest vertex of the object, m/s.
-  double fastestTarget(std::size_t i) const { return fastestTargets_[i]; }
-  double fastestObstacle(std::size_t i) const { return fastestObstacles_[i]; }
+  double fastestTarget(std::size_t i) const { return targets_.fastest[i]; }
+  double fastestObstacle(std::size_t i) const { return obstacles_.fastest[i]; }
 
  private:
+  // Targets, or obstacles: per object and vertex.
   struct Kind {
     std::vector<geometry::Ring> previous;       // the rings at the last observation
-    std::vector<std::vector<double>> lastStep;  // per vertex: speed over the last step
+    std::vector<std::vector<double>> lastStep;  // speed over the last step
+    std::vector<std::vector<double>> speeds;    // the larger of the last two steps'
+    std::vector<double> fastest;                // the largest of `speeds`
+    void update(const std::vector<geometry::Ring>& now, double elapsed);
   };
-  static void update(const std::vector<geometry::Ring>& now, double elapsed, Kind& kind,
-                     std::vector<std::vector<double>>& speeds, std::vector<double>& fastest);
 
-  bool seen_ = false;
-  double lastTime_ = 0.0;
-  Kind targetHistory_, obstacleHistory_;
-  std::vector<std::vector<double>> targets_, obstacles_;
-  std::vector<double> fastestTargets_, fastestObstacles_;
+  std::optional<double> lastTime_;  // of the last observation; none yet
+  Kind targets_, obstacles_;
 };
 
 }  // namespace camcov::safety

@@ -150,7 +150,7 @@ std::vector<HalfPlane> SafetyFilter::planes(bool comfortable) const {
   return result;
 }
 
-Verdict SafetyFilter::explain(std::size_t j, double vmax) const {
+Verdict SafetyFilter::explain(std::size_t j, double vmax, std::span<const HalfPlane> hard) const {
   auto name = [](const Threat& t) {
     switch (t.source) {
       case Threat::Source::Target:
@@ -164,7 +164,6 @@ Verdict SafetyFilter::explain(std::size_t j, double vmax) const {
     }
     return fmt::format("boundary edge {}", t.index);
   };
-  const std::vector<HalfPlane> hard = planes(false);
   Verdict verdict{false, ContactReason::None, {}};
   const Threat* nearest = nullptr;
   for (const Threat& t : std::span(threats_).subspan(hardCount_)) {
@@ -216,7 +215,7 @@ void SafetyFilter::apply(const kinematics::World& world, std::span<const geometr
     const bool withinDelta =
         std::any_of(threats_.begin() + static_cast<std::ptrdiff_t>(hardCount_), threats_.end(),
                     [this](const Threat& t) { return t.distance < delta_; });
-    if (!keeping || withinDelta) verdicts_[j] = explain(j, vmax);
+    if (!keeping || withinDelta) verdicts_[j] = explain(j, vmax, hard);
     if (!u) u = leastViolatingVelocity(hard, hardCount_, vmax, desired).velocity;
     if (enabled_) velocities[j] = *u;
   }

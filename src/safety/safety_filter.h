@@ -82,7 +82,8 @@ class SafetyFilter {
   void addObject(const geometry::Ring& ring, bool isTarget, std::size_t index,
                  geometry::Vec2 position, double reach);
   std::vector<HalfPlane> planes(bool comfortable) const;
-  Verdict explain(std::size_t camera, double maxSpeed) const;
+  // Why no velocity keeps δ, from the half-planes of level 2 (`hard`, one per threat).
+  Verdict explain(std::size_t camera, double maxSpeed, std::span<const HalfPlane> hard) const;
 
   std::vector<double> maxSpeeds_;
   bool enabled_;
