@@ -34,7 +34,7 @@ void foldRange(SeriesBand& band, const std::vector<double>& values, bool first) 
 }
 
 bool isContact(const control::ControlEvent& e) {
-  return e.kind == "avoidable-contact" || e.kind == "unavoidable-contact";
+  return e.kind == sim::kAvoidableContact || e.kind == sim::kUnavoidableContact;
 }
 
 MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string& scene,

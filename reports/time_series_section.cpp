@@ -48,18 +48,18 @@ std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const
 
 // Colours of contacts closer than δ: avoidable ones are failures of the method, in red;
 // unavoidable ones (no admissible velocity kept δ) in slate.
-constexpr std::string_view kAvoidableContact = "#d62728";
-constexpr std::string_view kUnavoidableContact = "#5b6472";
+constexpr std::string_view kAvoidableColour = "#d62728";
+constexpr std::string_view kUnavoidableColour = "#5b6472";
 
 // Every seed's contacts, merged per (instant, kind), as diamonds along the top.
 std::vector<std::pair<double, Mark>> contactMarks(const std::string& method,
                                                   const MethodRuns& runs) {
   std::map<std::pair<double, bool>, Mark> marks;  // (time, unavoidable)
   for (const auto& [seed, e] : runs.contacts) {
-    const bool unavoidable = e.kind == "unavoidable-contact";
+    const bool unavoidable = e.kind == sim::kUnavoidableContact;
     Mark& m = marks[{e.time, unavoidable}];
     if (m.tooltip.empty()) {
-      m = {Swatch::Diamond, std::string(unavoidable ? kUnavoidableContact : kAvoidableContact),
+      m = {Swatch::Diamond, std::string(unavoidable ? kUnavoidableColour : kAvoidableColour),
            fmt::format("t = {} s, {}", fixed(e.time, 2), method)};
     }
     m.tooltip += fmt::format("\nseed {}, {} camera {}{}: {}", seed, e.kind, e.camera + 1,
@@ -100,8 +100,8 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
     });
     if (it != marks.end()) spec.legend.push_back({text, it->second.color, shape});
   }
-  for (const auto& [color, text] : {std::pair{kAvoidableContact, "avoidable contact < δ"},
-                                    std::pair{kUnavoidableContact, "unavoidable contact < δ"}}) {
+  for (const auto& [color, text] : {std::pair{kAvoidableColour, "avoidable contact < δ"},
+                                    std::pair{kUnavoidableColour, "unavoidable contact < δ"}}) {
     if (std::any_of(marks.begin(), marks.end(),
                     [color = color](const auto& m) { return m.second.color == color; }))
       spec.legend.push_back({text, std::string(color), Swatch::Diamond});

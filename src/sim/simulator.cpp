@@ -75,7 +75,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
       if (c.unavoidable) {
         ++summary.unavoidableContacts;
         events.push_back({stepStart + step.contactStart[j],
-                          "unavoidable-contact",
+                          std::string(kUnavoidableContact),
                           camera,
                           verdicts[j].detail,
                           {},
@@ -83,7 +83,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
       } else {
         ++summary.avoidableContacts;
         events.push_back({stepStart + step.contactStart[j],
-                          "avoidable-contact",
+                          std::string(kAvoidableContact),
                           camera,
                           "camera " + std::to_string(j) +
                               " came closer than δ although an admissible velocity kept δ",

@@ -7,6 +7,7 @@
 // only on its inputs.
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "control/controller.h"
@@ -34,6 +35,10 @@ struct StepRecord {
   // controller's events at t.
   std::span<const control::ControlEvent> events;
 };
+
+// The kinds of the events that mark where a camera came closer than δ (see RunSummary).
+inline constexpr std::string_view kAvoidableContact = "avoidable-contact";
+inline constexpr std::string_view kUnavoidableContact = "unavoidable-contact";
 
 struct RunSummary {
   int steps = 0;                    // recorded steps, including t = 0
