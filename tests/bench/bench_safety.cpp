@@ -20,6 +20,7 @@
 #include "safety/safety_filter.h"
 #include "safety/step_contacts.h"
 #include "scene/scene_loader.h"
+#include "support/bench_scenes_dir.h"
 
 namespace camcov::safety {
 namespace {
@@ -82,18 +83,13 @@ void accounting(benchmark::State& state, const scene::Scene& scene) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(r.steps.size() - 1));
 }
 
-std::filesystem::path scenesDir() {
-  const char* dir = std::getenv("COVERAGE_SCENES_DIR");
-  return dir != nullptr && *dir != '\0' ? dir : CAMCOV_DEFAULT_SCENES_DIR;
-}
-
 }  // namespace
 }  // namespace camcov::safety
 
 int main(int argc, char** argv) {
   using namespace camcov;
   for (const std::string name : {"dynamic9", "dynamic13", "static1"}) {
-    const scene::Scene s = scene::loadScene(safety::scenesDir() / (name + ".json"));
+    const scene::Scene s = scene::loadScene(testing::benchScenesDir() / (name + ".json"));
     for (const std::string method : {"paper", "local"}) {
       for (const bool on : {true, false}) {
         benchmark::RegisterBenchmark(

@@ -84,6 +84,15 @@ std::vector<const control::ControlEvent*> eventsOf(const Outcome& o, const std::
   return out;
 }
 
+// A run whose every contact the proof says is unavoidable: some time below δ, none of it
+// avoidable, no avoidable-contact event. Returns the unavoidable-contact events.
+std::vector<const control::ControlEvent*> onlyUnavoidableContacts(const Outcome& o) {
+  EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
+  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
+  EXPECT_TRUE(eventsOf(o, "avoidable-contact").empty());
+  return eventsOf(o, "unavoidable-contact");
+}
+
 // OUTPACED. A corridor 30 × 4 m; a bar target 0.2 m × 3.6 m (y from 0.2 to 3.8) shuttles along
 // it at 3 m/s from x = 2 to x = 28; the camera (0.5 m/s) starts at x = 15 in the middle.
 // Proof that contact is unavoidable: where the bar's centre line is at the camera's x, every
@@ -92,17 +101,13 @@ std::vector<const control::ControlEvent*> eventsOf(const Outcome& o, const std::
 // and it cannot stay out of the bar's way, since the bar crosses every x in [2, 28].
 // The layer must say so: "outpaced" (the bar alone closes faster than the camera can move
 // away; the walls, 2 m off, play no part) — and no time below δ may count as avoidable.
-
 TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOutpacedContact) {
   ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
   const Outcome o = run("corridor_outpaced", stay, 10.0);
-  EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
-  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
-  const auto contacts = eventsOf(o, "unavoidable-contact");
+  const auto contacts = onlyUnavoidableContacts(o);
   ASSERT_FALSE(contacts.empty());
   EXPECT_EQ(contacts.front()->reason, "outpaced") << contacts.front()->detail;
   EXPECT_NE(contacts.front()->detail.find("target 0"), std::string::npos);
-  EXPECT_TRUE(eventsOf(o, "avoidable-contact").empty());
 }
 
 // CORNERED. A 10 m square room; a target 9.4 m wide (x from 0.3 to 9.7) and 2 m tall comes
@@ -113,13 +118,10 @@ TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOut
 // its bottom edge, and the corners of the room within √(0.3² + 0.2²) = 0.36 m of its corners.
 // Yet no single threat outpaces the camera (1 m/s > 0.8 m/s): it is the wall that traps it,
 // so the layer must call it "cornered" and count nothing as avoidable.
-
 TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorneredContact) {
   ScriptedController stay([](std::size_t, geometry::Vec2) { return geometry::Vec2{}; });
   const Outcome o = run("wall_press_cornered", stay, 9.0);
-  EXPECT_GT(o.summary.unavoidableContactTime, 0.0);
-  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
-  const auto contacts = eventsOf(o, "unavoidable-contact");
+  const auto contacts = onlyUnavoidableContacts(o);
   ASSERT_FALSE(contacts.empty());
   EXPECT_EQ(contacts.front()->reason, "cornered") << contacts.front()->detail;
   EXPECT_NE(contacts.front()->detail.find("boundary"), std::string::npos)
@@ -136,7 +138,6 @@ TEST(SafetyScenarios, ATargetPressingTheCameraAgainstTheWallIsAnUnavoidableCorne
 // Proof that contact is avoidable: standing still is always admissible and keeps their
 // distance, so a velocity that keeps δ exists at every step. The layer must keep them
 // at least δ apart in continuous time, which the samples alone would not show.
-
 TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
   ScriptedController collide([](std::size_t j, geometry::Vec2) {
     return geometry::Vec2{j == 0 ? 2.0 : -2.0, 0.0};
@@ -162,7 +163,6 @@ TEST(SafetyScenarios, TwoCamerasCommandedHeadOnStopAtLeastDeltaApart) {
 // bar does, and the walls are over 10 m from the bar's reach, so a velocity keeping δ always
 // exists. The layer must therefore keep δ for the whole run, against a rotating object
 // whose speed it only knows from what it has seen.
-
 TEST(SafetyScenarios, ACameraPressingTowardsTheHubOfASweepingArmKeepsDelta) {
   ScriptedController seek(towards({15.0, 15.0}, 1.5));
   const Outcome o = run("sweeping_arm", seek, 30.0);
@@ -179,7 +179,6 @@ TEST(SafetyScenarios, ACameraPressingTowardsTheHubOfASweepingArmKeepsDelta) {
 // Proof that contact is avoidable: the pillar does not move, so standing still keeps the
 // 0.8 m. The layer must stop the camera between δ and δ + margin, and the paper's method,
 // which starts there with no valid state, must not hit it either.
-
 TEST(SafetyScenarios, ACameraStartingInsideD1CommandedIntoAPillarStopsBeyondDelta) {
   ScriptedController ram(towards({5.0, 5.0}, 2.0));
   const Outcome o = run("inside_d1_pillar", ram, 3.0);
@@ -200,15 +199,13 @@ TEST(SafetyScenarios, ACameraStartingInsideD1CommandedIntoAPillarStopsBeyondDelt
 // WITHIN δ FROM THE START. A camera placed 0.3 m from a pillar (allowed: it is not inside it)
 // is in contact at t = 0, before anything could be done: unavoidable, "within-delta". The
 // layer must then take it out to δ (2 m/s against a static pillar: one step) and keep it.
-
 TEST(SafetyScenarios, ACameraStartingWithinDeltaIsAnUnavoidableContactAndIsTakenOut) {
   ScriptedController ram(towards({5.0, 5.0}, 2.0));
   const Outcome o = run("starts_within_delta", ram, 3.0);
-  const auto contacts = eventsOf(o, "unavoidable-contact");
+  const auto contacts = onlyUnavoidableContacts(o);
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_EQ(contacts.front()->reason, "within-delta");
   EXPECT_EQ(contacts.front()->time, 0.0);
-  EXPECT_EQ(o.summary.avoidableContactTime, 0.0);
   EXPECT_LE(o.summary.unavoidableContactTime, 0.1 + 1e-12) << "out within one step";
   EXPECT_GE(o.minObjectDistance.back(), 0.5);
 }

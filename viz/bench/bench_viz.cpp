@@ -24,6 +24,7 @@
 #include "control/paper_controller.h"
 #include "records/run_record.h"
 #include "scene/scene_loader.h"
+#include "support/bench_scenes_dir.h"
 #include "viz/argb_to_yuv420.h"
 #include "viz/frame.h"
 #include "viz/frame_renderer.h"
@@ -163,18 +164,13 @@ void convert(benchmark::State& state, const scene::Scene& scene, bool libswscale
   state.SetItemsProcessed(state.iterations());
 }
 
-std::filesystem::path scenesDir() {
-  const char* dir = std::getenv("COVERAGE_SCENES_DIR");
-  return dir != nullptr && *dir != '\0' ? dir : CAMCOV_DEFAULT_SCENES_DIR;
-}
-
 }  // namespace
 }  // namespace camcov::viz
 
 int main(int argc, char** argv) {
   using namespace camcov;
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(viz::scenesDir())) {
+  for (const auto& entry : std::filesystem::directory_iterator(testing::benchScenesDir())) {
     if (entry.path().extension() == ".json") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
