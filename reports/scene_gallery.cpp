@@ -212,6 +212,18 @@ std::string objects(const WorldToSvg& map, const std::vector<scene::MovingObject
   return paths + shapes;
 }
 
+// "field of view 60°", or the range of a team of unlike cameras: "fields of view 40°–90°".
+std::string fieldsOfView(const scene::Scene& s) {
+  double lo = s.cameras.front().halfFov, hi = lo;
+  for (const auto& c : s.cameras) {
+    lo = std::min(lo, c.halfFov);
+    hi = std::max(hi, c.halfFov);
+  }
+  const auto degrees = [](double halfFov) { return 2 * halfFov * 180.0 / std::numbers::pi; };
+  if (lo == hi) return fmt::format("field of view {:g}°", degrees(lo));
+  return fmt::format("fields of view {:g}°–{:g}°", degrees(lo), degrees(hi));
+}
+
 // Field-of-view wedges and camera bodies; their labels go to `labels`.
 std::string cameras(const WorldToSvg& map, const scene::Scene& s, LabelPlacer& labels) {
   const double reach = 34.0;  // px: the wedge shows a direction, not a range
@@ -223,7 +235,7 @@ std::string cameras(const WorldToSvg& map, const scene::Scene& s, LabelPlacer& l
     std::vector<Vec2> wedge{at};
     constexpr int kArcSteps = 12;
     for (int k = 0; k <= kArcSteps; ++k) {
-      const double a = c.initial.yaw - s.fovHalfAngle + 2 * s.fovHalfAngle * k / kArcSteps;
+      const double a = c.initial.yaw - c.halfFov + 2 * c.halfFov * k / kArcSteps;
       wedge.push_back(at + Vec2{std::cos(a), -std::sin(a)} * reach);
     }
     return wedge;
@@ -275,9 +287,9 @@ std::string sceneCard(const SceneData& data) {
     out += sceneSvg(s);
     out += fmt::format(
         "<figcaption><b><a href=\"#{}\">{}</a></b> <span class=\"muted\">{} · {} camera{}, "
-        "field of view {:g}°, {} target{}, {} obstacle{}, {} moving</span>{}</figcaption>\n",
+        "{}, {} target{}, {} obstacle{}, {} moving</span>{}</figcaption>\n",
         anchorId("ts", data.name), escapeXml(data.name), groupName(data.group), s.cameras.size(),
-        s.cameras.size() == 1 ? "" : "s", 2 * s.fovHalfAngle * 180.0 / std::numbers::pi,
+        s.cameras.size() == 1 ? "" : "s", fieldsOfView(s),
         s.targets.size(), s.targets.size() == 1 ? "" : "s", s.obstacles.size(),
         s.obstacles.size() == 1 ? "" : "s", moving,
         s.description.empty() ? std::string() : fmt::format("<br>{}", escapeXml(s.description)));

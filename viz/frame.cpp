@@ -17,7 +17,7 @@ void addPaths(const std::vector<scene::MovingObject>& objects, std::vector<Objec
 }  // namespace
 
 FrameBuilder::FrameBuilder(const scene::Scene& scene)
-    : kinematics_(scene), sceneName_(scene.name), halfFov_(scene.fovHalfAngle) {
+    : kinematics_(scene), sceneName_(scene.name), halfFovs_(scene::halfFovs(scene)) {
   addPaths(scene.targets, paths_);
   addPaths(scene.obstacles, paths_);
 }
@@ -25,13 +25,13 @@ FrameBuilder::FrameBuilder(const scene::Scene& scene)
 void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, Frame& out) {
   kinematics_.worldAt(time, out.world);
   occluders_.build(out.world);
-  sweep_.segments(occluders_, cameras, halfFov_, out.segments);
+  sweep_.segments(occluders_, cameras, halfFovs_, out.segments);
 
   out.cameras.resize(cameras.size());
   for (std::size_t j = 0; j < cameras.size(); ++j) {
     CameraView& c = out.cameras[j];
     c.pose = cameras[j];
-    sweep_.fieldOfViewPolygon(occluders_, c.pose, halfFov_, c.view);
+    sweep_.fieldOfViewPolygon(occluders_, c.pose, halfFovs_[j], c.view);
     c.goal.reset();
     c.plan.clear();
   }
@@ -41,7 +41,7 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.caption.subtitle.clear();
   out.caption.time = time;
   out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
-  out.caption.utilization = reward::utilization(out.segments, cameras, halfFov_);
+  out.caption.utilization = reward::utilization(out.segments, cameras, halfFovs_);
 }
 
 }  // namespace camcov::viz

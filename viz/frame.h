@@ -61,13 +61,13 @@ class FrameBuilder {
 
   // The world at `time`, visibility from `cameras` (at most Sweep::kMaxCameras), coverage and
   // utilization, the caption's title and time. Plans, goals and the subtitle are left empty.
-  // Reuses the buffers of `out`.
+  // Reuses the buffers of `out`. Camera j is the scene's camera j.
   void build(double time, std::span<const geometry::Pose> cameras, Frame& out);
 
  private:
   kinematics::Kinematics kinematics_;
   std::string sceneName_;
-  double halfFov_;
+  std::vector<double> halfFovs_;  // θ_j
   std::vector<ObjectPath> paths_;
   visibility::Occluders occluders_;
   visibility::Sweep sweep_;

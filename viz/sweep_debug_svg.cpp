@@ -530,8 +530,9 @@ SweepDebug buildSweepDebug(const scene::Scene& scene, double time,
   d.camera = camera;
   const visibility::Occluders occluders(d.world);
   visibility::Sweep sweep;
-  sweep.segments(occluders, cameras, scene.fovHalfAngle, d.segments);
-  sweep.trace(occluders, cameras[camera], scene.fovHalfAngle, d.trace);
+  const std::vector<double> halfFovs = scene::halfFovs(scene);
+  sweep.segments(occluders, cameras, halfFovs, d.segments);
+  sweep.trace(occluders, cameras[camera], halfFovs[camera], d.trace);
   sweep.visibilityPolygon(occluders, cameras[camera].position(), d.visibility);
   return d;
 }

@@ -48,6 +48,11 @@ int inspect(const InspectOptions& o) {
       cameras.push_back(c.initial);
   } else {
     cameras = scene::loadCameraPoses(o.camerasFile);
+    if (cameras.size() > s.cameras.size()) {
+      throw InputError(fmt::format("{}: {} poses, but the scene has {} cameras (pose j is camera j, "
+                                   "with its field of view)",
+                                   o.camerasFile, cameras.size(), s.cameras.size()));
+    }
   }
   if (!o.debugSvg.empty()) {
     if (o.camera >= cameras.size()) {
@@ -57,7 +62,7 @@ int inspect(const InspectOptions& o) {
     records::writeFileAtomically(
         o.debugSvg, viz::sweepDebugSvg(viz::buildSweepDebug(s, o.time, cameras, o.camera)));
   }
-  reward::RewardModel model(p.reward, s.fovHalfAngle);
+  reward::RewardModel model(p.reward, scene::halfFovs(s));
   model.setWorld(kinematics::Kinematics(s).worldAt(o.time));
   const reward::RewardTerms terms = model.evaluate(cameras);
   const auto segments = model.segments();

@@ -44,7 +44,6 @@ Registration addStateCommand(CLI::App& app) {
             nlohmann::json out;
             out["scene"] = s.name;
             out["time"] = *time;
-            out["fovHalfAngleDeg"] = geometry::radToDeg(s.fovHalfAngle);
             out["boundary"] = ring(world.boundary);
             out["targets"] = nlohmann::json::array();
             for (std::size_t i = 0; i < world.targets.size(); ++i) {
@@ -60,7 +59,8 @@ Registration addStateCommand(CLI::App& app) {
                                         {"y", c.initial.y},
                                         {"yawDeg", geometry::radToDeg(c.initial.yaw)},
                                         {"maxVelocity", c.maxVelocity},
-                                        {"maxAngularVelocity", c.maxAngularVelocity}});
+                                        {"maxAngularVelocity", c.maxAngularVelocity},
+                                        {"fovHalfAngleDeg", geometry::radToDeg(c.halfFov)}});
             }
             std::cout << out.dump(2) << "\n";
             return 0;

@@ -21,7 +21,7 @@ std::uint64_t allCameras(std::size_t count) {
 LocalController::LocalController(const scene::Scene& scene, const params::Parameters& params)
     : limits_(stepLimits(scene, params.sim.dt)),
       dt_(params.sim.dt),
-      model_(params.reward, scene.fovHalfAngle),
+      model_(params.reward, scene::halfFovs(scene)),
       local_(params.local) {}
 
 void LocalController::control(const Observation& observation,

@@ -14,12 +14,12 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
     : scene_(scene),
       params_(params),
       limits_(stepLimits(scene, params.sim.dt)),
-      model_(params.reward, scene.fovHalfAngle),
+      model_(params.reward, scene::halfFovs(scene)),
       validity_(params.planner.d1),
       local_(params.local),
       random_(seed),
-      executors_(scene.cameras.size(), planners::PlanExecutor(params.potential, params.reward.d2)) {
-}
+      executors_(scene.cameras.size(), planners::PlanExecutor(params.potential, params.reward.d2)),
+      roadmapOf_(scene.cameras.size()) {}
 
 PaperController::~PaperController() = default;
 
@@ -78,11 +78,18 @@ void PaperController::globalOptimization(const Observation& observation) {
 PaperController::Assignment PaperController::assign(
     const Observation& observation, const std::vector<geometry::Pose>& goals) const {
   // Section V-B: estimated travel time, obstacles ignored.
+  // Goal g was sampled for camera g's field of view: only a camera with the same θ takes it
+  // (in a team of like cameras, any camera takes any goal, as in the paper).
+  constexpr double kOtherFieldOfView = 1e12;  // s: never chosen while the identity is possible
   const std::size_t m = goals.size();
   std::vector<double> cost(m * m);
   for (std::size_t j = 0; j < m; ++j) {
     const auto& camera = scene_.cameras[j];
     for (std::size_t g = 0; g < m; ++g) {
+      if (scene_.cameras[g].halfFov != camera.halfFov) {
+        cost[j * m + g] = kOtherFieldOfView;
+        continue;
+      }
       const double travel =
           geometry::distance(observation.cameras[j].position(), goals[g].position()) /
           camera.maxVelocity;
@@ -102,12 +109,22 @@ PaperController::Assignment PaperController::assign(
 void PaperController::plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
                            const Assignment& assignment) {
   const std::size_t m = goals.size();
-  // Section V-C: one roadmap for this planning event, queried by every camera.
-  roadmap_ = std::make_unique<planners::Roadmap>(observation.world, params_, scene_.fovHalfAngle,
-                                                 random_.fork());
+  // Section V-C: one roadmap for this planning event, queried by every camera — one per
+  // field of view in a team of unlike cameras, since eq. (10)'s cost depends on θ.
+  for (std::size_t j = 0; j < m; ++j) {
+    const double theta = scene_.cameras[j].halfFov;
+    roadmapOf_[j] = nullptr;
+    for (std::size_t i = 0; i < j && !roadmapOf_[j]; ++i) {
+      if (scene_.cameras[i].halfFov == theta) roadmapOf_[j] = roadmapOf_[i];
+    }
+    if (!roadmapOf_[j]) {
+      roadmapOf_[j] =
+          std::make_shared<planners::Roadmap>(observation.world, params_, theta, random_.fork());
+    }
+  }
   for (std::size_t j = 0; j < m; ++j) {
     const geometry::Pose& target = goals[assignment.goalOf[j]];
-    auto path = roadmap_->query(observation.cameras[j], target);
+    auto path = roadmapOf_[j]->query(observation.cameras[j], target);
     if (!path) {
       executors_[j].stop();
       raise(observation.time, "plan-failed", static_cast<int>(j),
@@ -117,7 +134,7 @@ void PaperController::plan(const Observation& observation, const std::vector<geo
     raise(observation.time, "plan", static_cast<int>(j),
           fmt::format("{} waypoints to ({:.2f}, {:.2f}, {:.1f}°), roadmap of {} milestones",
                       path->size(), target.x, target.y, geometry::radToDeg(target.yaw),
-                      roadmap_->milestones()),
+                      roadmapOf_[j]->milestones()),
           *path);
     executors_[j].start(std::move(*path), observation.time);
   }
@@ -139,9 +156,9 @@ void PaperController::refineGoals(const Observation& observation) {
     const geometry::Pose planned = executor.path().back();
     executor.refineGoal(team[j]);
     // A goal that wandered off the plan is reached through the roadmap again.
-    if (roadmap_ &&
+    if (roadmapOf_[j] &&
         geometry::distance(planned.position(), team[j].position()) > params_.planner.d1) {
-      if (auto path = roadmap_->query(observation.cameras[j], team[j])) {
+      if (auto path = roadmapOf_[j]->query(observation.cameras[j], team[j])) {
         raise(observation.time, "replan", static_cast<int>(j), "refined goal moved beyond d1",
               *path);
         executor.start(std::move(*path), observation.time);

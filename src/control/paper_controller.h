@@ -64,7 +64,8 @@ class PaperController final : public Controller {
   planners::LocalOptimizer local_;
   Random random_;
   std::vector<planners::PlanExecutor> executors_;
-  std::unique_ptr<planners::Roadmap> roadmap_;
+  // The last planning event's roadmap each camera queries (shared by cameras of equal θ).
+  std::vector<std::shared_ptr<planners::Roadmap>> roadmapOf_;
   double nextGlobalTime_ = 0.0;
   std::vector<ControlEvent> events_;
 };

@@ -53,7 +53,7 @@ struct PlanningWorld {
                 std::uint64_t seed)
       : world(w),
         validity(params.planner.d1),
-        reward(params.reward, halfFov),
+        reward(params.reward, std::vector{halfFov}),
         random(seed),
         uniformProbability(params.planner.p),
         halfFov(halfFov),

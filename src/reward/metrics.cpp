@@ -26,17 +26,22 @@ double coverage(std::span<const visibility::Segment> segments, double perimeter)
 }
 
 double utilization(std::span<const visibility::Segment> segments,
-                   std::span<const geometry::Pose> cameras, double halfFov) {
+                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs) {
   if (cameras.empty()) return 0.0;
+  // Σ_j angle_j / 2θ_j, summed as Σ_j angle_j · (θ_0/θ_j), then over 2θ_0: for a team of
+  // like cameras every weight is exactly 1, so the sum is eq. (5) as written, to the bit.
+  const double theta0 = halfFovs[0];
   double angles = 0.0;
   for (const auto& s : segments) {
     for (std::uint64_t bits = s.visibleBy; bits != 0; bits &= bits - 1) {
-      const geometry::Vec2 p = cameras[std::countr_zero(bits)].position();
+      const int j = std::countr_zero(bits);
+      const geometry::Vec2 p = cameras[j].position();
       const geometry::Vec2 u = s.a - p, v = s.b - p;
-      angles += std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
+      const double weight = halfFovs[j] == theta0 ? 1.0 : theta0 / halfFovs[j];
+      angles += weight * std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
     }
   }
-  return angles / (2.0 * halfFov) / static_cast<double>(cameras.size());
+  return angles / (2.0 * theta0) / static_cast<double>(cameras.size());
 }
 
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera) {

@@ -25,9 +25,9 @@ double targetPerimeter(const kinematics::World& world);
 // Coverage, eq. (3). 0 when the targets have no boundary length.
 double coverage(std::span<const visibility::Segment> segments, double perimeter);
 // Utilization, eq. (5): mean over cameras of the angle ∠ s¹ p_j s² of every segment camera j
-// sees, over the field of view 2θ.
+// sees, over its field of view 2θ_j (halfFovs[j]).
 double utilization(std::span<const visibility::Segment> segments,
-                   std::span<const geometry::Pose> cameras, double halfFov);
+                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs);
 // Length of the target boundary camera j sees (what it contributes before overlaps).
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera);
 

@@ -1,9 +1,14 @@
 #include "reward/reward_model.h"
 
+#include <utility>
+
 namespace camcov::reward {
 
+RewardModel::RewardModel(const params::RewardParams& params, std::vector<double> halfFovs)
+    : params_(params), halfFovs_(std::move(halfFovs)) {}
+
 RewardModel::RewardModel(const params::RewardParams& params, double halfFov)
-    : params_(params), halfFov_(halfFov) {}
+    : RewardModel(params, std::vector<double>(visibility::Sweep::kMaxCameras, halfFov)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
@@ -12,10 +17,10 @@ void RewardModel::setWorld(const kinematics::World& world) {
 }
 
 RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
-  sweep_.segments(occluders_, cameras, halfFov_, segments_);
+  sweep_.segments(occluders_, cameras, halfFovs_, segments_);
   RewardTerms t;
   t.coverage = coverage(segments_, perimeter_);
-  t.utilization = utilization(segments_, cameras, halfFov_);
+  t.utilization = utilization(segments_, cameras, halfFovs_);
   t.repulsion = repulsion(world_, cameras, params_.d2);
   t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
   return t;

@@ -16,16 +16,20 @@ namespace camcov::reward {
 
 class RewardModel {
  public:
+  // Camera j of every evaluated team has half-angle halfFovs[j] (θ_j, scene::halfFovs()).
+  RewardModel(const params::RewardParams& params, std::vector<double> halfFovs);
+  // For teams of like cameras (up to Sweep::kMaxCameras), every one with half-angle `halfFov`.
   RewardModel(const params::RewardParams& params, double halfFov);
 
   // The instant to evaluate at. The world is copied: callers may change theirs afterwards.
   void setWorld(const kinematics::World& world);
   const kinematics::World& world() const { return world_; }
   const visibility::Occluders& occluders() const { return occluders_; }
-  double halfFov() const { return halfFov_; }
+  double halfFov(std::size_t camera) const { return halfFovs_[camera]; }
   const params::RewardParams& params() const { return params_; }
 
-  // All terms for the camera set; S is kept and readable through segments() until next call.
+  // All terms for the camera set (camera j has θ_j; at most as many as there are θs); S is kept
+  // and readable through segments() until the next call.
   RewardTerms evaluate(std::span<const geometry::Pose> cameras);
   double reward(std::span<const geometry::Pose> cameras) { return evaluate(cameras).reward; }
   std::span<const visibility::Segment> segments() const { return segments_; }
@@ -35,7 +39,7 @@ class RewardModel {
 
  private:
   params::RewardParams params_;
-  double halfFov_;
+  std::vector<double> halfFovs_;
   kinematics::World world_;
   double perimeter_ = 0.0;
   visibility::Occluders occluders_;

@@ -8,4 +8,11 @@ geometry::Ring initialPolygon(const MovingObject& object) {
   return out;
 }
 
+std::vector<double> halfFovs(const Scene& scene) {
+  std::vector<double> out;
+  for (const CameraSpec& camera : scene.cameras)
+    out.push_back(camera.halfFov);
+  return out;
+}
+
 }  // namespace camcov::scene

@@ -37,10 +37,14 @@ struct MovingObject {
   }
 };
 
+// One camera: the only place that says what a camera is. Every stage reads a camera's field
+// of view and limits from here, so a team of unlike cameras (our extension: a camera's own
+// "cameraFoV" in the file) needs no change anywhere else.
 struct CameraSpec {
   geometry::Pose initial;           // p_j(0); yaw γ in radians, wrapped to [-π, π]
   double maxVelocity = 0.0;         // v_j^max, m/s, > 0
   double maxAngularVelocity = 0.0;  // γ̇_j^max, rad/s, > 0
+  double halfFov = 0.0;             // θ_j, radians, in (0, π): the scene's θ unless its own
 };
 
 struct Scene {
@@ -49,9 +53,11 @@ struct Scene {
   geometry::Ring boundary;  // B: time-invariant simple polygon, CCW
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;
-  double fovHalfAngle = 0.0;  // θ, radians, in (0, π)
   std::vector<CameraSpec> cameras;
 };
+
+// θ_j of every camera, in camera order: what the visibility and reward stages take.
+std::vector<double> halfFovs(const Scene& scene);
 
 // Placement of an object at t = 0: the shape about the first waypoint, unrotated, undeformed.
 geometry::Ring initialPolygon(const MovingObject& object);

@@ -224,9 +224,19 @@ std::vector<MovingObject> objects(const Node& node) {
   return result;
 }
 
-CameraSpec camera(const Node& node) {
-  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity"});
+// θ in radians from a half-angle in degrees.
+double halfFov(const Node& node) {
+  const double degrees = node.number();
+  if (degrees <= 0.0 || degrees >= 180.0)
+    node.fail(fmt::format("half-angle field of view must be in (0, 180) degrees, is {}", degrees));
+  return geometry::degToRad(degrees);
+}
+
+// `sceneHalfFov` is the scene's "cameraFoV", which a camera's own key overrides.
+CameraSpec camera(const Node& node, double sceneHalfFov) {
+  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV"});
   CameraSpec camera;
+  camera.halfFov = node.has("cameraFoV") ? halfFov(node.child("cameraFoV")) : sceneHalfFov;
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
@@ -257,13 +267,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   if (scene.targets.empty()) targets.fail("a scene needs at least one target");
   if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"));
 
-  const Node fov = root.child("cameraFoV");
-  const double fovDegrees = fov.number();
-  if (fovDegrees <= 0.0 || fovDegrees >= 180.0) {
-    fov.fail(
-        fmt::format("half-angle field of view must be in (0, 180) degrees, is {}", fovDegrees));
-  }
-  scene.fovHalfAngle = geometry::degToRad(fovDegrees);
+  const double sceneHalfFov = halfFov(root.child("cameraFoV"));
 
   const Node cameras = root.child("cameras");
   const std::size_t cameraCount = cameras.arraySize();
@@ -273,7 +277,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
                  std::to_string(cameraCount));
   }
   for (std::size_t i = 0; i < cameraCount; ++i)
-    scene.cameras.push_back(camera(cameras.element(i)));
+    scene.cameras.push_back(camera(cameras.element(i), sceneHalfFov));
 
   if (const PlacementDefect defect = findPlacementDefect(scene); !defect.jsonPath.empty()) {
     throw SceneError(sourceName, defect.jsonPath, defect.problem);

@@ -103,7 +103,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
                     control::Controller& controller, Recorder& recorder) {
   const kinematics::Kinematics kinematics(scene);
-  reward::RewardModel measure(params.reward, scene.fovHalfAngle);
+  reward::RewardModel measure(params.reward, scene::halfFovs(scene));
   safety::SafetyFilter safety(scene, params);
   const safety::StepAccounting accounting(kinematics, params.sim.delta);
   const double dt = params.sim.dt;

@@ -1,5 +1,6 @@
 #include "visibility/sweep.h"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <numbers>
@@ -204,20 +205,32 @@ const CullingCounts& Sweep::counts() const {
 }
 
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
-                     double halfFov, std::vector<Segment>& out) {
+                     std::span<const double> halfFovs, std::vector<Segment>& out) {
   if (cameras.size() > kMaxCameras) {
     throw std::invalid_argument("visibility: at most 64 cameras, got " +
                                 std::to_string(cameras.size()));
   }
-  for (const geometry::Pose& camera : cameras)
-    checkCamera(camera, halfFov);
+  if (halfFovs.size() < cameras.size()) {
+    throw std::invalid_argument("visibility: " + std::to_string(cameras.size()) +
+                                " cameras but " + std::to_string(halfFovs.size()) +
+                                " fields of view");
+  }
+  for (std::size_t j = 0; j < cameras.size(); ++j)
+    checkCamera(cameras[j], halfFovs[j]);
   impl_->tessellation.clear();
   for (std::size_t j = 0; j < cameras.size(); ++j) {  // Algorithm 1, line 2
-    const FieldOfView fov{cameras[j].yaw, halfFov};
+    const FieldOfView fov{cameras[j].yaw, halfFovs[j]};
     TargetSink sink(impl_->edges, impl_->tessellation, static_cast<unsigned>(j));
     impl_->sweepFrom(occluders, cameras[j].position(), &fov, sink);
   }
   impl_->tessellation.build(occluders, out);
+}
+
+void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
+                     double halfFov, std::vector<Segment>& out) {
+  std::array<double, kMaxCameras> halfFovs;
+  halfFovs.fill(halfFov);
+  segments(occluders, cameras, halfFovs, out);
 }
 
 void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::Ring& out) {

@@ -4,7 +4,7 @@
 //
 // Usage, per instant t:
 //   Occluders occluders(world);            // Algorithm 1 line 1, shared by all queries
-//   sweep.segments(occluders, poses, theta, s);      // S and visibleBy (lines 2–18)
+//   sweep.segments(occluders, poses, thetas, s);     // S and visibleBy (lines 2–18)
 //   sweep.visibilityPolygon(occluders, q1, polygon); // Algorithm 2 line 6
 // A Sweep is a workspace: it keeps every buffer between calls, so after the first few calls
 // it allocates nothing (as long as the caller reuses its output vectors too). One Sweep per
@@ -56,11 +56,14 @@ class Sweep {
   Sweep& operator=(Sweep&&) noexcept;
 
   // S(T, O, C) and visibleBy(s_l) (paper equation (1), Algorithm 1) for `cameras` (camera j
-  // is bit j of visibleBy), all with half-angle `halfFov` θ in radians. Writes into `out`
+  // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into `out`
   // (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
-  // Throws std::invalid_argument for more than kMaxCameras cameras, θ outside (0, π), or a
-  // non-finite pose.
+  // Throws std::invalid_argument for more than kMaxCameras cameras, fewer half-angles than
+  // cameras, θ_j outside (0, π), or a non-finite pose.
+  void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
+                std::span<const double> halfFovs, std::vector<Segment>& out);
+  // The same for a team of like cameras, every one with half-angle `halfFov`.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
                 std::vector<Segment>& out);
 

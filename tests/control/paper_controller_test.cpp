@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "control/local_controller.h"
+#include "kinematics/kinematics.h"
+#include "reward/reward_model.h"
 #include "sim/simulator.h"
 #include "support/small_worlds.h"
 
@@ -74,6 +76,38 @@ TEST(PaperController, HorizonKeepsSlowCamerasFromChasingFarGoals) {
   EXPECT_EQ(log.events[0].kind, "global");
   EXPECT_EQ(log.events[0].reason, "keep") << log.events[0].detail;
   EXPECT_NE(log.events[0].detail.find("keep"), std::string::npos) << log.events[0].detail;
+}
+
+TEST(PaperController, GivesEachCameraAGoalSampledForItsOwnFieldOfView) {
+  // Goal g of global optimization is sampled to see a point with camera g's θ: a 4° camera
+  // sent to a goal sampled for 80° would mostly look past the target. With three cameras of
+  // two kinds, every plan's goal sees the target with its own camera's θ alone.
+  const scene::Scene s = testing::sceneFromJson(R"js({
+    "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+    "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((0 0))"}],
+    "cameraFoV": 4,
+    "cameras": [{"pos": "POINT(-6 -6)", "angle": 225, "maxVelocity": 2, "maxAngularVelocity": 1},
+                {"pos": "POINT(6 6)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1,
+                 "cameraFoV": 80},
+                {"pos": "POINT(6 -6)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1}]})js");
+  const params::Parameters p = quick();
+  int plans = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    PaperController controller(s, p, seed);
+    EventLog log;
+    sim::simulate(s, p, controller, log);
+    for (const auto& e : log.events) {
+      if (e.kind != "plan") continue;
+      ++plans;
+      reward::RewardModel alone(p.reward, s.cameras[e.camera].halfFov);
+      kinematics::World w;
+      kinematics::Kinematics(s).worldAt(e.time, w);
+      alone.setWorld(w);
+      EXPECT_GT(alone.evaluate(std::span(&e.path.back(), 1)).coverage, 0.0)
+          << "seed " << seed << ", camera " << e.camera << " at t = " << e.time;
+    }
+  }
+  EXPECT_GE(plans, 3);
 }
 
 }  // namespace

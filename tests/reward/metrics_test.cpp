@@ -47,6 +47,30 @@ TEST(RewardModel, TwoOpposedCamerasSeeTwoSidesAndAverageUtilization) {
   EXPECT_NEAR(t.utilization, kSideAngle / (2 * kTheta), 1e-12);  // mean of two equal views
 }
 
+TEST(RewardModel, UnlikeCamerasEachSeeWithTheirOwnFieldOfViewAndUtilizationAveragesThem) {
+  // Camera 0 sees the bottom side with θ = 30°; camera 1, above and to the left, would see
+  // nothing with 30° (the top and left sides lie 32° to 43° off its axis) but sees both
+  // with its own 60°.
+  const std::vector<Pose> cameras{{0.5, -5.0, std::numbers::pi / 2},
+                                  {0.5 - 5.0 * std::tan(0.7), 6.0, -std::numbers::pi / 2}};
+  const double wide = std::numbers::pi / 3;
+  RewardModel unlike(params::RewardParams{}, std::vector{kTheta, wide});
+  unlike.setWorld(unitSquareWorld());
+  const RewardTerms t = unlike.evaluate(cameras);
+  EXPECT_NEAR(visibleLengthOf(unlike.segments(), 0), 1.0, 1e-12);
+  EXPECT_NEAR(visibleLengthOf(unlike.segments(), 1), 2.0, 1e-12);
+  EXPECT_NEAR(t.coverage, 0.75, 1e-12);
+  // Each camera alone, with its own θ: the team's utilization is their mean (eq. (5)).
+  RewardModel narrow(params::RewardParams{}, kTheta), wideOnly(params::RewardParams{}, wide);
+  narrow.setWorld(unitSquareWorld());
+  wideOnly.setWorld(unitSquareWorld());
+  const double u0 = narrow.evaluate(std::span(&cameras[0], 1)).utilization;
+  const double u1 = wideOnly.evaluate(std::span(&cameras[1], 1)).utilization;
+  EXPECT_GT(u1, 0.0);
+  EXPECT_NEAR(t.utilization, 0.5 * (u0 + u1), 1e-12);
+  EXPECT_EQ(narrow.evaluate(std::span(&cameras[1], 1)).coverage, 0.0) << "30° sees nothing";
+}
+
 TEST(RewardModel, CameraLookingAwaySeesNothing) {
   RewardModel model(params::RewardParams{}, kTheta);
   model.setWorld(unitSquareWorld());

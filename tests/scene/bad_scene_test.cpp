@@ -51,6 +51,7 @@ const BadCase kBadCases[] = {
     {"negative_max_angular_velocity", "cameras[0].maxAngularVelocity", "must be positive"},
     {"fov_zero", "cameraFoV", "(0, 180)"},
     {"fov_180", "cameraFoV", "(0, 180)"},
+    {"camera_fov_180", "cameras[0].cameraFoV", "(0, 180)"},
     {"no_cameras", "cameras", "at least one camera"},
     {"no_targets", "targets", "at least one target"},
     {"too_many_cameras", "cameras", "at most 64"},

@@ -75,9 +75,24 @@ TEST(LoadScene, NormalisesClockwiseShapesAndAppliesDefaults) {
   EXPECT_EQ(s.targets[0].velocity, 1.0);
   EXPECT_EQ(s.targets[0].angularVelocity, 0.0);
   EXPECT_TRUE(s.targets[0].isStatic());
-  EXPECT_NEAR(s.fovHalfAngle, std::numbers::pi / 6, 1e-15);
+  for (const auto& c : s.cameras)
+    EXPECT_NEAR(c.halfFov, std::numbers::pi / 6, 1e-15);
   EXPECT_NEAR(s.cameras[0].initial.yaw, -50.0 * std::numbers::pi / 180.0, 1e-12);  // 310° wraps
   EXPECT_TRUE(s.obstacles.empty());
+}
+
+TEST(LoadScene, ACamerasOwnFieldOfViewOverridesTheScenes) {
+  const Scene s = parseScene(R"js({
+    "boundary": "POLYGON((-5 -5,5 -5,5 5,-5 5))",
+    "targets": [{"shape": "POLYGON((0 0,1 0,1 1,0 1))", "path": "POLYGON((0 0))"}],
+    "cameraFoV": 30,
+    "cameras": [{"pos": "POINT(-4 -4)", "angle": 45, "maxVelocity": 1, "maxAngularVelocity": 1},
+                {"pos": "POINT(4 -4)", "angle": 135, "maxVelocity": 1, "maxAngularVelocity": 1,
+                 "cameraFoV": 60}]})js",
+                             "unlike.json");
+  EXPECT_NEAR(s.cameras[0].halfFov, std::numbers::pi / 6, 1e-15);
+  EXPECT_NEAR(s.cameras[1].halfFov, std::numbers::pi / 3, 1e-15);
+  EXPECT_EQ(halfFovs(s), (std::vector{s.cameras[0].halfFov, s.cameras[1].halfFov}));
 }
 
 TEST(LoadScene, ObstaclesKeyIsOptionalAndDescriptionIsKept) {
