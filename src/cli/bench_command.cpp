@@ -20,17 +20,17 @@
 namespace camcov::cli {
 namespace {
 
-// Every method of the table, comma-separated: the default of --methods.
-std::string allMethods() {
+// The default batch's methods, comma-separated: the default of --methods.
+std::string defaultMethods() {
   std::string names;
-  for (const control::Method& m : control::methods())
-    names += (names.empty() ? "" : ",") + std::string(m.name);
+  for (const std::string& m : control::defaultMethods())
+    names += (names.empty() ? "" : ",") + m;
   return names;
 }
 
 struct BenchOptions {
   std::vector<std::string> scenes{"scenes"};
-  std::string methods = allMethods();
+  std::string methods = defaultMethods();
   std::uint64_t seeds = 5;
   double duration = -1.0;
   unsigned jobs = 0;
@@ -82,6 +82,7 @@ int bench(const BenchOptions& o) {
       o.scenes, splitList(o.methods), o.seeds, o.parameters.resolve(), batch::parseShard(o.shard),
       o.argv};
   if (o.duration >= 0.0) request.parameters.sim.duration = o.duration;
+  o.outputs.referenceAmong(request.methods);  // and a bad --reference too
   const batch::BatchPlan plan = batch::planBatch(request, kVersion);
   const records::BatchFolder folder(o.out);
   batch::prepareFolder(folder, plan.manifest, o.force);

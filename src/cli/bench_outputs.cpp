@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 
@@ -9,6 +10,7 @@
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
+#include "util/input_error.h"
 
 namespace camcov::cli {
 
@@ -18,6 +20,16 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
                  "videos/ for the report: none; median (per scene and method, the seed with the "
                  "median average coverage); best (the highest); all")
       ->capture_default_str();
+  cmd.add_option("--reference", reference,
+                 "the method every other is tested against (default: the baseline, local, if "
+                 "run; else the first method)");
+}
+
+std::string BenchOutputOptions::referenceAmong(const std::vector<std::string>& methods) const {
+  if (reference.empty()) return control::referenceAmong(methods);
+  if (std::find(methods.begin(), methods.end(), reference) == methods.end())
+    throw InputError("--reference " + reference + ": not among the batch's methods");
+  return reference;
 }
 
 namespace {
@@ -66,7 +78,7 @@ int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchMa
                       const std::vector<records::JobOutcome>& outcomes,
                       const BenchOutputOptions& options, unsigned workers) {
   const records::BatchSummary summary =
-      records::summarize(outcomes, control::referenceAmong(manifest.methods));
+      records::summarize(outcomes, options.referenceAmong(manifest.methods));
   folder.writeSummary(summary);
   const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
   printSummary(summary, manifest.methods);

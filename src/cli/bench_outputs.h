@@ -15,9 +15,12 @@ namespace camcov::cli {
 struct BenchOutputOptions {
   bool noReport = false;
   std::string videos = "median";
+  std::string reference;  // the method the others are tested against; empty: the baseline
   void addTo(CLI::App& cmd);
   // InputError for a bad --videos: called before any job runs.
   records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
+  // The reference among `methods`; InputError if --reference names another.
+  std::string referenceAmong(const std::vector<std::string>& methods) const;
 };
 
 // Returns the exit code: 0, or 1 if some job failed. Videos are made on `workers` threads.

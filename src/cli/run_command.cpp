@@ -54,7 +54,10 @@ Registration addRunCommand(CLI::App& app) {
       app.add_subcommand("run", "Simulate one scene with one method and seed; write its results");
   auto o = std::make_shared<RunOptions>();
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
-  cmd->add_option("--method,-m", o->method, "paper (section V) or local (the baseline)")
+  std::string names;
+  for (const control::Method& m : control::methods())
+    names += fmt::format("{}{} ({})", names.empty() ? "" : ", ", m.name, m.description);
+  cmd->add_option("--method,-m", o->method, "one of: " + names)
       ->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "random seed of the run")->capture_default_str();
   cmd->add_option("--duration", o->duration, "simulated seconds (default: sim.duration, 30 s)")

@@ -10,13 +10,23 @@
 #include "geometry/vec2.h"
 #include "kinematics/camera_command.h"
 #include "kinematics/world.h"
+#include "reward/metrics.h"
+#include "visibility/segment.h"
 
 namespace camcov::control {
 
+// What a method sees at step t. Its cameras' limits and fields of view are the scene's
+// (scene::CameraSpec), given when the controller is made (methods.h), with the parameters and
+// the seed of its own random generator.
 struct Observation {
   double time = 0.0;  // t, s
   const kinematics::World& world;
   std::span<const geometry::Pose> cameras;
+  // S(t) for `cameras` (eq. (1): every target edge, split where visibility changes, with
+  // visibleBy) and the reward's terms, as the simulator measured them at t: shared so that
+  // a method need not sweep again to know what is seen now. Empty where nobody measured.
+  std::span<const visibility::Segment> seen = {};
+  reward::RewardTerms terms = {};
 };
 
 // Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",

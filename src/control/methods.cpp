@@ -1,6 +1,8 @@
 #include "control/methods.h"
 
+#include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <string>
 
 #include "control/local_controller.h"
@@ -10,25 +12,46 @@
 namespace camcov::control {
 namespace {
 
-constexpr std::array kMethods{
-    Method{"paper", "paper (global + local)", "#ff7f0e", false,
+constexpr std::array kBuiltIn{
+    Method{"paper", "paper (global + local)", "#ff7f0e", Role::method,
            [](const scene::Scene& s, const params::Parameters& p,
               std::uint64_t seed) -> std::unique_ptr<Controller> {
              return std::make_unique<PaperController>(s, p, seed);
            }},
-    Method{"local", "local optimization", "#1f77b4", true,
+    Method{"local", "local optimization", "#1f77b4", Role::baseline,
            [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
                -> std::unique_ptr<Controller> { return std::make_unique<LocalController>(s, p); }},
 };
 
+// Built on first use, so registrations from other files' static initialization find it.
+std::vector<Method>& table() {
+  static std::vector<Method> all(kBuiltIn.begin(), kBuiltIn.end());
+  return all;
+}
+
+bool fileNameSafe(std::string_view name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+  });
+}
+
 }  // namespace
 
 std::span<const Method> methods() {
-  return kMethods;
+  return table();
+}
+
+bool registerMethod(const Method& method) {
+  if (!fileNameSafe(method.name))
+    throw std::logic_error("method name '" + std::string(method.name) + "' is not [a-z0-9-]+");
+  if (findMethod(method.name) != nullptr)
+    throw std::logic_error("method '" + std::string(method.name) + "' registered twice");
+  table().push_back(method);
+  return true;
 }
 
 const Method* findMethod(std::string_view name) {
-  for (const Method& m : kMethods) {
+  for (const Method& m : table()) {
     if (m.name == name) return &m;
   }
   return nullptr;
@@ -37,15 +60,23 @@ const Method* findMethod(std::string_view name) {
 const Method& requireMethod(std::string_view name) {
   if (const Method* m = findMethod(name)) return *m;
   std::string known;
-  for (const Method& m : kMethods)
+  for (const Method& m : table())
     known += (known.empty() ? "" : ", ") + std::string(m.name);
   throw InputError("unknown method '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<std::string> defaultMethods() {
+  std::vector<std::string> names;
+  for (const Method& m : table()) {
+    if (m.role != Role::example) names.emplace_back(m.name);
+  }
+  return names;
 }
 
 std::string referenceAmong(const std::vector<std::string>& methods) {
   for (const std::string& name : methods) {
     const Method* m = findMethod(name);
-    if (m != nullptr && m->baseline) return name;
+    if (m != nullptr && m->role == Role::baseline) return name;
   }
   return methods.front();
 }

@@ -1,8 +1,13 @@
 #pragma once
 // The table of methods: the one place that knows which methods exist. A method is a name (in
-// files and on the command line), what it is, its colour in every figure, and how to make its
-// controller. Adding a method is one controller file plus one row in methods.cpp; the batch,
-// the summary's tables and the report take it from here.
+// files and on the command line), what it is, its colour in every figure, its role, and how
+// to make its controller. The built-in methods are the rows of methods.cpp; a method defined
+// elsewhere (examples/) registers itself with one line,
+//
+//   const bool kRegistered = camcov::control::registerMethod({"name", ..., &make});
+//
+// in its own file, compiled into an object library that the programs link (examples/
+// CMakeLists.txt). The batch, the summary's tables and the report take every method from here.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -16,22 +21,38 @@
 
 namespace camcov::control {
 
+enum class Role {
+  method,    // in the default batch
+  baseline,  // in the default batch, and what the others are compared with by default
+  example,   // run only when asked for by name (--methods)
+};
+
+// The controller of one run: the scene (which outlives it), the run's parameters, and the seed
+// of the run's own random generator.
+using MakeController = std::unique_ptr<Controller> (*)(const scene::Scene& scene,
+                                                       const params::Parameters& params,
+                                                       std::uint64_t seed);
+
 struct Method {
   std::string_view name;         // "paper": in results file names, --method, --methods
   std::string_view description;  // for legends and tables
   std::string_view color;        // CSS colour in every figure (the paper's Fig. 4 colours)
-  bool baseline;                 // what the others are compared with by default
-  // The controller of one run. It may keep a reference to `scene`, which outlives it.
-  std::unique_ptr<Controller> (*make)(const scene::Scene& scene, const params::Parameters& params,
-                                      std::uint64_t seed);
+  Role role;
+  MakeController make;
 };
 
-// Every method, in the order figures and tables list them.
+// Every method: the built-in rows in order, then registered ones in registration order.
 std::span<const Method> methods();
+// Adds a method defined outside src/control (static initialization of its own file). Returns
+// true, to initialize a constant with; std::logic_error if the name is taken or not a
+// file-name-safe word ([a-z0-9-]).
+bool registerMethod(const Method& method);
 // The method called `name`, or nullptr.
 const Method* findMethod(std::string_view name);
 // The same, or InputError naming the known methods.
 const Method& requireMethod(std::string_view name);
+// The methods a batch runs when not told which: every one but the examples.
+std::vector<std::string> defaultMethods();
 // What a batch of these methods compares the others with: the first baseline among them,
 // else the first of them. `methods` must not be empty.
 std::string referenceAmong(const std::vector<std::string>& methods);
