@@ -1,9 +1,11 @@
 #include "reports/method_style.h"
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 
 #include "control/methods.h"
+#include "util/fnv1a.h"
 
 namespace camcov::reports {
 namespace {
@@ -21,7 +23,10 @@ std::size_t rank(std::string_view method) {
 
 MethodStyle methodStyle(std::string_view method) {
   if (const control::Method* m = control::findMethod(method)) return {m->description, m->color};
-  return {method, "#7f7f7f"};
+  // The rest of the Tableau 10 palette the table's colours come from.
+  static constexpr std::array<std::string_view, 6> kOthers{"#d62728", "#9467bd", "#8c564b",
+                                                           "#e377c2", "#bcbd22", "#17becf"};
+  return {method, kOthers[fnv1a(method) % kOthers.size()]};
 }
 
 std::vector<std::string> orderedMethods(std::vector<std::string> methods) {

@@ -1,6 +1,9 @@
 #pragma once
 // How each method looks in every figure and table, from the table of methods
-// (control/methods.h); a method it does not know is grey.
+// (control/methods.h). A method it does not know (a Python controller's, or one of another
+// version) is labelled by its name and coloured by it: a colour no method of the table has,
+// chosen by a hash of the name, so it is the same in every report (two such methods may
+// share one in 1 of 6 cases).
 #include <string>
 #include <string_view>
 #include <vector>

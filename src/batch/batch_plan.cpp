@@ -39,6 +39,17 @@ std::vector<fs::path> sceneFiles(const std::vector<std::string>& inputs) {
   return files;
 }
 
+// The method `name` that the caller brought, or nullptr when it is the table's; InputError
+// (naming every known method) when it is neither.
+const control::Method* broughtMethod(const std::string& name,
+                                     std::span<const control::Method> extra) {
+  for (const control::Method& m : extra) {
+    if (m.name == name) return &m;
+  }
+  control::requireMethod(name, extra);
+  return nullptr;
+}
+
 }  // namespace
 
 Shard parseShard(const std::string& text) {
@@ -54,8 +65,9 @@ Shard parseShard(const std::string& text) {
 
 BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   if (r.methods.empty()) throw InputError("--methods: name at least one method");
+  std::vector<const control::Method*> brought;  // per name in r.methods; nullptr: the table's
   for (const auto& m : r.methods)
-    control::requireMethod(m);
+    brought.push_back(broughtMethod(m, r.extraMethods));
   if (r.seeds == 0) throw InputError("--seeds must be at least 1");
   BatchPlan plan;
   plan.manifest = {toolVersion, r.parameters, r.methods, r.seeds, {}, r.command};
@@ -65,10 +77,11 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   }
   std::size_t i = 0;
   for (const auto& entry : plan.manifest.scenes) {
-    for (const auto& method : r.methods) {
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+      const std::string& method = r.methods[m];
       for (std::uint64_t seed = 1; seed <= r.seeds; ++seed, ++i) {
         if (i % r.shard.count != r.shard.index) continue;
-        plan.jobs.push_back({{entry.file, method, seed, r.parameters},
+        plan.jobs.push_back({{entry.file, method, seed, r.parameters, brought[m]},
                              entry.name,
                              entry.hash,
                              records::runStem(entry.name, method, seed)});

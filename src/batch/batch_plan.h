@@ -22,11 +22,14 @@ Shard parseShard(const std::string& text);
 
 struct BatchRequest {
   std::vector<std::string> scenes;   // scene files, or folders (their *.json, natural order)
-  std::vector<std::string> methods;  // names in the table of methods
+  std::vector<std::string> methods;  // names in the table of methods or in extraMethods
   std::uint64_t seeds = 1;           // 1..seeds per scene and method
   params::Parameters parameters;
   Shard shard;
   std::vector<std::string> command;  // how it was asked for, for batch.json
+  // Methods the caller brings for this batch (Python's controllers), found before the table's;
+  // they must outlive the batch's run.
+  std::span<const control::Method> extraMethods;
 };
 
 struct BatchPlan {

@@ -9,7 +9,8 @@
 namespace camcov::batch {
 
 records::RunRecord runJob(const JobSpec& job) {
-  const control::Method& method = control::requireMethod(job.method);
+  const control::Method& method =
+      job.brought != nullptr ? *job.brought : control::requireMethod(job.method);
   const scene::SceneFile file = scene::loadSceneFile(job.sceneFile);
   const scene::Scene& scene = file.scene;
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "control/methods.h"
 #include "params/parameters.h"
 #include "records/run_record.h"
 
@@ -14,6 +15,9 @@ struct JobSpec {
   std::string method;  // a name in the table of methods (control/methods.h)
   std::uint64_t seed = 0;
   params::Parameters parameters;
+  // The method itself when the caller brings it (BatchRequest::extraMethods); else the name
+  // is looked up in the table. Must outlive the job.
+  const control::Method* brought = nullptr;
 };
 
 // Throws InputError for an unknown method or a bad scene.

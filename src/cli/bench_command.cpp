@@ -78,9 +78,13 @@ class ProgressLine final : public batch::BatchObserver {
 
 int bench(const BenchOptions& o) {
   o.outputs.videoChoice();  // a bad --videos fails now, not after the runs
-  batch::BatchRequest request{
-      o.scenes, splitList(o.methods), o.seeds, o.parameters.resolve(), batch::parseShard(o.shard),
-      o.argv};
+  batch::BatchRequest request{o.scenes,
+                              splitList(o.methods),
+                              o.seeds,
+                              o.parameters.resolve(),
+                              batch::parseShard(o.shard),
+                              o.argv,
+                              {}};
   if (o.duration >= 0.0) request.parameters.sim.duration = o.duration;
   o.outputs.referenceAmong(request.methods);  // and a bad --reference too
   const batch::BatchPlan plan = batch::planBatch(request, kVersion);

@@ -1,7 +1,6 @@
 #include "control/methods.h"
 
 #include <algorithm>
-#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -12,37 +11,35 @@
 namespace camcov::control {
 namespace {
 
-constexpr std::array kBuiltIn{
-    Method{"paper", "paper (global + local)", "#ff7f0e", Role::method,
-           [](const scene::Scene& s, const params::Parameters& p,
-              std::uint64_t seed) -> std::unique_ptr<Controller> {
-             return std::make_unique<PaperController>(s, p, seed);
-           }},
-    Method{"local", "local optimization", "#1f77b4", Role::baseline,
-           [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
-               -> std::unique_ptr<Controller> { return std::make_unique<LocalController>(s, p); }},
-};
-
 // Built on first use, so registrations from other files' static initialization find it.
 std::vector<Method>& table() {
-  static std::vector<Method> all(kBuiltIn.begin(), kBuiltIn.end());
+  static std::vector<Method> all{
+      {"paper", "paper (global + local)", "#ff7f0e", Role::method,
+       [](const scene::Scene& s, const params::Parameters& p,
+          std::uint64_t seed) -> std::unique_ptr<Controller> {
+         return std::make_unique<PaperController>(s, p, seed);
+       }},
+      {"local", "local optimization", "#1f77b4", Role::baseline,
+       [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
+           -> std::unique_ptr<Controller> { return std::make_unique<LocalController>(s, p); }},
+  };
   return all;
 }
 
-bool fileNameSafe(std::string_view name) {
+}  // namespace
+
+bool isMethodName(std::string_view name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
   });
 }
-
-}  // namespace
 
 std::span<const Method> methods() {
   return table();
 }
 
 bool registerMethod(const Method& method) {
-  if (!fileNameSafe(method.name))
+  if (!isMethodName(method.name))
     throw std::logic_error("method name '" + std::string(method.name) + "' is not [a-z0-9-]+");
   if (findMethod(method.name) != nullptr)
     throw std::logic_error("method '" + std::string(method.name) + "' registered twice");
@@ -57,11 +54,16 @@ const Method* findMethod(std::string_view name) {
   return nullptr;
 }
 
-const Method& requireMethod(std::string_view name) {
+const Method& requireMethod(std::string_view name, std::span<const Method> extra) {
+  for (const Method& m : extra) {
+    if (m.name == name) return m;
+  }
   if (const Method* m = findMethod(name)) return *m;
   std::string known;
+  for (const Method& m : extra)
+    known += (known.empty() ? "" : ", ") + m.name;
   for (const Method& m : table())
-    known += (known.empty() ? "" : ", ") + std::string(m.name);
+    known += (known.empty() ? "" : ", ") + m.name;
   throw InputError("unknown method '" + std::string(name) + "' (known: " + known + ")");
 }
 

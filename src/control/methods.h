@@ -9,6 +9,7 @@
 // in its own file, compiled into an object library that the programs link (examples/
 // CMakeLists.txt). The batch, the summary's tables and the report take every method from here.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -28,16 +29,15 @@ enum class Role {
 };
 
 // The controller of one run: the scene (which outlives it), the run's parameters, and the seed
-// of the run's own random generator.
-using MakeController = std::unique_ptr<Controller> (*)(const scene::Scene& scene,
-                                                       const params::Parameters& params,
-                                                       std::uint64_t seed);
+// of the run's own random generator. Called from the batch's worker threads.
+using MakeController = std::function<std::unique_ptr<Controller>(
+    const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed)>;
 
 struct Method {
-  std::string_view name;         // "paper": in results file names, --method, --methods
-  std::string_view description;  // for legends and tables
-  std::string_view color;        // CSS colour in every figure (the paper's Fig. 4 colours)
-  Role role;
+  std::string name;         // "paper": in results file names, --method, --methods
+  std::string description;  // for legends and tables
+  std::string color;        // CSS colour in every figure (the paper's Fig. 4 colours)
+  Role role = Role::method;
   MakeController make;
 };
 
@@ -45,12 +45,15 @@ struct Method {
 std::span<const Method> methods();
 // Adds a method defined outside src/control (static initialization of its own file). Returns
 // true, to initialize a constant with; std::logic_error if the name is taken or not a
-// file-name-safe word ([a-z0-9-]).
+// method name. Not for use while a batch runs: the table is read without a lock.
 bool registerMethod(const Method& method);
+// A name can be a method's: [a-z0-9-]+, as it goes into file names.
+bool isMethodName(std::string_view name);
 // The method called `name`, or nullptr.
 const Method* findMethod(std::string_view name);
-// The same, or InputError naming the known methods.
-const Method& requireMethod(std::string_view name);
+// The method called `name` among `extra` (methods a caller brings for one batch, such as
+// Python's) and then the table, or InputError naming the known methods.
+const Method& requireMethod(std::string_view name, std::span<const Method> extra = {});
 // The methods a batch runs when not told which: every one but the examples.
 std::vector<std::string> defaultMethods();
 // What a batch of these methods compares the others with: the first baseline among them,

@@ -80,7 +80,9 @@ TEST(IncludeOrder, TheTreeReadsTheStagesInOrder) {
   const std::vector<std::string> order = stageOrder(root);
   ASSERT_GE(order.size(), 10u) << "the stage lists were not found";
   EXPECT_EQ(order.front(), "src/geometry");
-  EXPECT_EQ(order.back(), "src/cli") << "the CLI wires everything, so it comes last";
+  ASSERT_GE(order.size(), 2u);
+  EXPECT_EQ(order[order.size() - 2], "src/cli") << "the programs wire everything: they come last";
+  EXPECT_EQ(order.back(), "src/python");
   std::string report;
   for (const std::string& line : wrongWayIncludes(root))
     report += line + "\n";

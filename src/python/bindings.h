@@ -1,0 +1,12 @@
+#pragma once
+// The parts of the `camcov` Python module, each defined in its own file (module.cpp calls
+// them in order: later parts use the classes of earlier ones).
+#include <pybind11/pybind11.h>
+
+namespace camcov::python {
+
+void bindScene(pybind11::module_& m);       // scene_bindings.cpp: Scene, World, parameters
+void bindVisibility(pybind11::module_& m);  // visibility_bindings.cpp: S, visibleBy, reward
+void bindRuns(pybind11::module_& m);        // run_bindings.cpp: runs, Python controllers, bench
+
+}  // namespace camcov::python

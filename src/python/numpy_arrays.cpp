@@ -1,0 +1,121 @@
+#include "python/numpy_arrays.h"
+
+#include <string>
+
+namespace camcov::python {
+
+Array ringToArray(const geometry::Ring& ring) {
+  Array out({static_cast<py::ssize_t>(ring.size()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    a(i, 0) = ring[i].x;
+    a(i, 1) = ring[i].y;
+  }
+  return out;
+}
+
+py::list ringsToList(const std::vector<geometry::Ring>& rings) {
+  py::list out;
+  for (const auto& ring : rings)
+    out.append(ringToArray(ring));
+  return out;
+}
+
+Array posesToArray(std::span<const geometry::Pose> poses) {
+  Array out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    a(j, 0) = poses[j].x;
+    a(j, 1) = poses[j].y;
+    a(j, 2) = poses[j].yaw;
+  }
+  return out;
+}
+
+std::vector<geometry::Pose> posesFromArray(const py::handle& poses, const char* what) {
+  // A list or tuple of rows is read directly: a controller's few rows cost less so than
+  // through a numpy array made for them.
+  if (py::isinstance<py::list>(poses) || py::isinstance<py::tuple>(poses)) {
+    std::vector<geometry::Pose> out;
+    for (const py::handle row : py::reinterpret_borrow<py::sequence>(poses)) {
+      if (!py::isinstance<py::sequence>(row) || py::len(row) != 3)
+        throw py::value_error(std::string(what) + ": expected rows of x, y, yaw");
+      const auto r = py::reinterpret_borrow<py::sequence>(row);
+      out.push_back({r[0].cast<double>(), r[1].cast<double>(), r[2].cast<double>()});
+    }
+    return out;
+  }
+  const Array a = Array::ensure(poses);
+  if (!a || a.ndim() != 2 || a.shape(1) != 3) {
+    throw py::value_error(std::string(what) + ": expected an (M, 3) array of x, y, yaw");
+  }
+  std::vector<geometry::Pose> out(static_cast<std::size_t>(a.shape(0)));
+  const auto v = a.unchecked<2>();
+  for (std::size_t j = 0; j < out.size(); ++j)
+    out[j] = {v(j, 0), v(j, 1), v(j, 2)};
+  return out;
+}
+
+std::vector<geometry::Pose> teamsFromArray(const py::handle& teams, std::size_t& teamSize) {
+  const Array a = Array::ensure(teams);
+  if (!a || (a.ndim() != 2 && a.ndim() != 3) || a.shape(a.ndim() - 1) != 3) {
+    throw py::value_error(
+        "teams: expected an (N, M, 3) array of poses, or (N, 3) for single "
+        "cameras");
+  }
+  teamSize = a.ndim() == 3 ? static_cast<std::size_t>(a.shape(1)) : 1;
+  const std::size_t poses = static_cast<std::size_t>(a.size() / 3);
+  std::vector<geometry::Pose> out(poses);
+  const double* v = a.data();
+  for (std::size_t k = 0; k < poses; ++k)
+    out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+  return out;
+}
+
+std::vector<double> valuesFromArray(const py::handle& values, std::size_t count, const char* what) {
+  const Array a = Array::ensure(values);
+  if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != count) {
+    throw py::value_error(std::string(what) + ": expected " + std::to_string(count) + " numbers");
+  }
+  return {a.data(), a.data() + count};
+}
+
+py::dict segmentsToDict(std::span<const visibility::Segment> segments,
+                        std::span<const std::int64_t> team) {
+  const auto n = static_cast<py::ssize_t>(segments.size());
+  Array a({n, py::ssize_t{2}}), b({n, py::ssize_t{2}});
+  py::array_t<std::int64_t> target(n), edge(n);
+  py::array_t<std::uint64_t> visibleBy(n);
+  auto av = a.mutable_unchecked<2>(), bv = b.mutable_unchecked<2>();
+  auto tv = target.mutable_unchecked<1>(), ev = edge.mutable_unchecked<1>();
+  auto vv = visibleBy.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const visibility::Segment& s = segments[static_cast<std::size_t>(i)];
+    av(i, 0) = s.a.x;
+    av(i, 1) = s.a.y;
+    bv(i, 0) = s.b.x;
+    bv(i, 1) = s.b.y;
+    tv(i) = s.target;
+    ev(i) = s.edge;
+    vv(i) = s.visibleBy;
+  }
+  py::dict out;
+  out["a"] = a;
+  out["b"] = b;
+  out["target"] = target;
+  out["edge"] = edge;
+  out["visible_by"] = visibleBy;
+  if (!team.empty()) out["team"] = py::array_t<std::int64_t>(n, team.data());
+  return out;
+}
+
+py::dict termsToDict(const reward::RewardTerms& terms) {
+  py::dict d;
+  d["coverage"] = terms.coverage;
+  d["utilization"] = terms.utilization;
+  d["repulsion"] = terms.repulsion;
+  d["reward"] = terms.reward;
+  return d;
+}
+
+}  // namespace camcov::python

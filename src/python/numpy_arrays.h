@@ -1,0 +1,36 @@
+#pragma once
+// Conversions between camcov's values and Python's (numpy arrays, dicts): rings as (n, 2) arrays of
+// x, y, poses as (M, 3) arrays of x, y, yaw (radians), both float64 and C-contiguous.
+#include <pybind11/numpy.h>
+
+#include <span>
+#include <vector>
+
+#include "geometry/ring.h"
+#include "geometry/vec2.h"
+#include "reward/metrics.h"
+#include "visibility/segment.h"
+
+namespace camcov::python {
+
+namespace py = pybind11;
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+Array ringToArray(const geometry::Ring& ring);
+py::list ringsToList(const std::vector<geometry::Ring>& rings);
+Array posesToArray(std::span<const geometry::Pose> poses);
+// An (M, 3) array-like (list of lists too); ValueError naming `what` for another shape.
+std::vector<geometry::Pose> posesFromArray(const py::handle& poses, const char* what);
+// Camera teams: an (N, M, 3) array-like is N teams of M poses; an (N, 3) one is N teams of one
+// camera. Returns the poses team after team and sets `teamSize` to M. ValueError otherwise.
+std::vector<geometry::Pose> teamsFromArray(const py::handle& teams, std::size_t& teamSize);
+// An (n,) array-like of floats; ValueError naming `what` unless it has `count` entries.
+std::vector<double> valuesFromArray(const py::handle& values, std::size_t count, const char* what);
+// S as a dict of arrays: a, b (S, 2); target, edge (S,) int64; visible_by (S,) uint64; and,
+// when `team` is given, team (S,) int64: which team each segment belongs to.
+py::dict segmentsToDict(std::span<const visibility::Segment> segments,
+                        std::span<const std::int64_t> team = {});
+// The reward's terms: coverage, utilization, repulsion, reward.
+py::dict termsToDict(const reward::RewardTerms& terms);
+
+}  // namespace camcov::python

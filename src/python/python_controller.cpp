@@ -1,0 +1,79 @@
+#include "python/python_controller.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "python/numpy_arrays.h"
+#include "python/python_scene.h"
+#include "util/input_error.h"
+
+namespace camcov::python {
+
+PythonController::PythonController(py::object callable) : callable_(std::move(callable)) {}
+
+PythonController::~PythonController() {
+  // The reference goes back to Python, which needs the GIL, wherever the run ends.
+  py::gil_scoped_acquire gil;
+  callable_ = py::object();
+}
+
+void PythonController::control(const control::Observation& o,
+                               std::span<kinematics::CameraCommand> commands) {
+  py::gil_scoped_acquire gil;
+  try {
+    auto observation = std::make_unique<PythonObservation>();
+    observation->time = o.time;
+    observation->world = o.world;
+    observation->cameras.assign(o.cameras.begin(), o.cameras.end());
+    observation->seen.assign(o.seen.begin(), o.seen.end());
+    observation->terms = o.terms;
+    const py::object result = callable_(py::cast(std::move(observation)));
+    const bool withGoals = py::isinstance<py::tuple>(result) && py::len(result) == 2;
+    const auto velocities =
+        posesFromArray(withGoals ? result[py::int_(0)] : result, "controller's velocities");
+    if (velocities.size() != commands.size()) {
+      throw py::value_error("the controller returned " + std::to_string(velocities.size()) +
+                            " velocities for " + std::to_string(commands.size()) + " cameras");
+    }
+    for (std::size_t j = 0; j < commands.size(); ++j)
+      commands[j] = {{velocities[j].x, velocities[j].y}, velocities[j].yaw};
+    goals_.assign(commands.size(), std::nullopt);
+    if (withGoals) {
+      const auto goals = posesFromArray(result[py::int_(1)], "controller's goals");
+      if (goals.size() != commands.size()) throw py::value_error("one goal row per camera");
+      for (std::size_t j = 0; j < goals.size(); ++j) {
+        if (std::isfinite(goals[j].x) && std::isfinite(goals[j].y) && std::isfinite(goals[j].yaw))
+          goals_[j] = goals[j];
+      }
+    }
+  } catch (const py::error_already_set& e) {
+    // The Python error as text: the exception object must not outlive the GIL.
+    throw std::runtime_error(std::string("Python controller: ") + e.what());
+  }
+}
+
+control::Method pythonMethod(const std::string& name, py::object factory) {
+  if (!control::isMethodName(name))
+    throw InputError("method name '" + name + "': use lowercase letters, digits and '-'");
+  if (control::findMethod(name) != nullptr)
+    throw InputError("method name '" + name + "' is a built-in method's");
+  // Copies of the method share the factory; the last one lets it go with the GIL.
+  const std::shared_ptr<py::object> shared(new py::object(std::move(factory)), [](py::object* f) {
+    py::gil_scoped_acquire gil;
+    delete f;
+  });
+  return {
+      name, name + " (Python)", "", control::Role::method,
+      [shared](const scene::Scene& s, const params::Parameters& p,
+               std::uint64_t seed) -> std::unique_ptr<control::Controller> {
+        py::gil_scoped_acquire gil;
+        try {
+          auto scene = std::make_shared<PythonScene>(s, 0, "");
+          return std::make_unique<PythonController>((*shared)(scene, parametersToPython(p), seed));
+        } catch (const py::error_already_set& e) {
+          throw std::runtime_error(std::string("Python controller factory: ") + e.what());
+        }
+      }};
+}
+
+}  // namespace camcov::python

@@ -1,0 +1,53 @@
+#pragma once
+// A method written in Python: each step the simulator calls a Python callable with the step's
+// Observation (as the C++ controllers see it) and takes back the velocities. The simulator
+// runs without the GIL; the controller takes it only for the call.
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/controller.h"
+#include "control/methods.h"
+#include "kinematics/world.h"
+#include "visibility/segment.h"
+
+namespace camcov::python {
+
+namespace py = pybind11;
+
+// What a Python controller gets each step (camcov.Observation): copies, so a controller may
+// keep it beyond the call.
+struct PythonObservation {
+  double time = 0.0;
+  kinematics::World world;
+  std::vector<geometry::Pose> cameras;
+  std::vector<visibility::Segment> seen;
+  reward::RewardTerms terms;
+};
+
+class PythonController final : public control::Controller {
+ public:
+  // `callable(observation)` returns velocities (M, 3) — vx, vy (m/s), yaw rate (rad/s) — or a
+  // pair (velocities, goals) with goals (M, 3), a row of NaN for a camera without a goal.
+  explicit PythonController(py::object callable);
+  ~PythonController() override;
+
+  void control(const control::Observation& observation,
+               std::span<kinematics::CameraCommand> commands) override;
+  std::optional<geometry::Pose> goal(std::size_t camera) const override { return goals_[camera]; }
+  void takeEvents(std::vector<control::ControlEvent>&) override {}
+
+ private:
+  py::object callable_;
+  std::vector<std::optional<geometry::Pose>> goals_;
+};
+
+// A method whose controllers `factory(scene, params, seed)` makes (a camcov.Scene, the run's
+// parameters as camcov.parameters() gives them, and its seed; returning a callable as above),
+// for camcov.bench. InputError for a bad name.
+control::Method pythonMethod(const std::string& name, py::object factory);
+
+}  // namespace camcov::python

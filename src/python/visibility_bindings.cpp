@@ -1,0 +1,160 @@
+// Visibility (S and visibleBy, eq. (1)) and the reward's terms (eq. (2)–(8)) for camera poses
+// given as numpy arrays, at one instant: the services the built-in methods use.
+#include <mutex>
+
+#include "python/bindings.h"
+#include "python/numpy_arrays.h"
+#include "python/python_scene.h"
+#include "reward/reward_model.h"
+
+namespace camcov::python {
+namespace {
+
+// What a call leaves for its caller to convert: kept between calls, so that a large batch
+// does not grow fresh memory every time.
+struct Scratch {
+  std::vector<visibility::Segment> segments;
+  std::vector<std::int64_t> team;  // per segment, for many teams at once
+  std::vector<reward::RewardTerms> terms;
+};
+
+// A RewardModel for one instant. Its buffers are reused between calls, so calls on one object
+// take turns (the lock). The lock is only ever waited for without the GIL, so a thread that
+// holds it can always take the GIL back; the sweeps run without the GIL, and objects in
+// several threads sweep in parallel.
+class Visibility {
+ public:
+  Visibility(const kinematics::World& world, std::vector<double> halfFovs,
+             const params::Parameters& params)
+      : cameras_(halfFovs.size()), model_(params.reward, std::move(halfFovs)) {
+    model_.setWorld(world);
+  }
+
+  // Evaluates the teams of `teamSize` poses each in `poses` (camera j with θ_j) without the
+  // GIL, writing their terms, and their segments if `withSegments`, into the scratch. Returns
+  // with the GIL and the lock held: the scratch is the caller's until it lets the lock go.
+  std::unique_lock<std::mutex> evaluate(const std::vector<geometry::Pose>& poses,
+                                        std::size_t teamSize, bool withSegments) {
+    if (teamSize > cameras_) {
+      throw py::value_error(std::to_string(teamSize) + " poses per team, but " +
+                            std::to_string(cameras_) + " fields of view");
+    }
+    py::gil_scoped_release free;
+    std::unique_lock lock(mutex_);
+    scratch_.segments.clear();
+    scratch_.team.clear();
+    scratch_.terms.clear();
+    for (std::size_t k = 0; k * teamSize < poses.size() || (k == 0 && poses.empty()); ++k) {
+      scratch_.terms.push_back(model_.evaluate(std::span(poses).subspan(k * teamSize, teamSize)));
+      if (!withSegments) continue;
+      scratch_.segments.insert(scratch_.segments.end(), model_.segments().begin(),
+                               model_.segments().end());
+      scratch_.team.resize(scratch_.segments.size(), static_cast<std::int64_t>(k));
+    }
+    return lock;
+  }
+  const Scratch& scratch() const { return scratch_; }
+
+  Array visibilityPolygon(geometry::Vec2 point) {
+    geometry::Ring polygon;
+    {
+      py::gil_scoped_release free;
+      const std::lock_guard lock(mutex_);
+      model_.visibilityPolygon(point, polygon);
+    }
+    return ringToArray(polygon);
+  }
+
+ private:
+  std::size_t cameras_;
+  reward::RewardModel model_;
+  Scratch scratch_;
+  std::mutex mutex_;
+};
+
+std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
+                                           const py::handle& halfFovs, const py::handle& values) {
+  const Array thetas = Array::ensure(halfFovs);
+  if (!thetas || thetas.ndim() != 1 || thetas.shape(0) == 0)
+    throw py::value_error("half_fovs: expected one half-angle (radians) per camera");
+  return std::make_unique<Visibility>(
+      world, valuesFromArray(thetas, static_cast<std::size_t>(thetas.shape(0)), "half_fovs"),
+      parametersFrom(values));
+}
+
+// The terms of every team as arrays (N,).
+py::dict termsToArrays(std::span<const reward::RewardTerms> terms) {
+  const auto n = static_cast<py::ssize_t>(terms.size());
+  Array coverage(n), utilization(n), repulsion(n), reward(n);
+  for (py::ssize_t k = 0; k < n; ++k) {
+    coverage.mutable_at(k) = terms[k].coverage;
+    utilization.mutable_at(k) = terms[k].utilization;
+    repulsion.mutable_at(k) = terms[k].repulsion;
+    reward.mutable_at(k) = terms[k].reward;
+  }
+  py::dict d;
+  d["coverage"] = coverage;
+  d["utilization"] = utilization;
+  d["repulsion"] = repulsion;
+  d["reward"] = reward;
+  return d;
+}
+
+}  // namespace
+
+void bindVisibility(py::module_& m) {
+  py::class_<Visibility>(m, "Visibility",
+                         "Visibility and reward at one instant for cameras with the given "
+                         "half-angles θ_j (radians): scene.half_fovs for the scene's team.")
+      .def(py::init(&makeVisibility), py::arg("world"), py::arg("half_fovs"),
+           py::arg("params") = py::none())
+      .def(
+          "segments",
+          [](Visibility& v, const py::handle& poses) {
+            const auto team = posesFromArray(poses, "poses");
+            const auto lock = v.evaluate(team, team.size(), true);
+            return segmentsToDict(v.scratch().segments);
+          },
+          py::arg("poses"),
+          "S for poses (M, 3): every target edge split where visibility changes, as arrays a, "
+          "b (S, 2), target, edge (S,), visible_by (S,) with bit j for camera j.")
+      .def(
+          "terms",
+          [](Visibility& v, const py::handle& poses) {
+            const auto team = posesFromArray(poses, "poses");
+            const auto lock = v.evaluate(team, team.size(), false);
+            return termsToDict(v.scratch().terms.front());
+          },
+          py::arg("poses"), "coverage, utilization, repulsion and reward (eq. (3)–(8)).")
+      .def(
+          "segments_each",
+          [](Visibility& v, const py::handle& teams) {
+            std::size_t m = 0;
+            const auto poses = teamsFromArray(teams, m);
+            const auto lock = v.evaluate(poses, m, true);
+            return segmentsToDict(v.scratch().segments, v.scratch().team);
+          },
+          py::arg("teams"),
+          "segments() of many teams in one call: (N, M, 3), or (N, 3) for N single cameras "
+          "(camera 0's θ). Every team's arrays one after the other, with `team` saying whose.")
+      .def(
+          "terms_each",
+          [](Visibility& v, const py::handle& teams) {
+            std::size_t m = 0;
+            const auto poses = teamsFromArray(teams, m);
+            const auto lock = v.evaluate(poses, m, false);
+            return termsToArrays(v.scratch().terms);
+          },
+          py::arg("teams"),
+          "terms() of many teams in one call, as arrays (N,): (N, M, 3), or (N, 3) for N "
+          "single cameras (camera 0's θ).")
+      .def(
+          "visibility_polygon",
+          [](Visibility& v, const py::handle& point) {
+            const auto p = valuesFromArray(point, 2, "point");
+            return v.visibilityPolygon({p[0], p[1]});
+          },
+          py::arg("point"), "The region seen from a point in every direction (Algorithm 2).");
+}
+
+}  // namespace camcov::python

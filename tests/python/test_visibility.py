@@ -1,0 +1,68 @@
+"""Visibility and reward from Python agree with `camcov inspect`, and batches with single calls."""
+import json
+
+import numpy as np
+import pytest
+
+import camcov
+
+
+def inspect(cli, scene_file, t):
+    result = cli("inspect", scene_file, "--time", t, "--json")
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+@pytest.mark.parametrize("name, t", [("dynamic9", 3.0), ("static1", 0.0), ("dynamic1", 12.5)])
+def test_segments_and_terms_agree_with_the_cli(cli, published, name, t):
+    scene = camcov.load_scene(published(name))
+    visibility = camcov.Visibility(scene.world_at(t), scene.half_fovs)
+    segments = visibility.segments(scene.initial_poses)
+    terms = visibility.terms(scene.initial_poses)
+    reference = inspect(cli, published(name), t)
+    for key in ("coverage", "utilization", "repulsion", "reward"):
+        assert terms[key] == reference[key], key
+    assert len(segments["a"]) == len(reference["segments"])
+    for k, s in enumerate(reference["segments"]):
+        assert segments["a"][k].tolist() == s["a"] and segments["b"][k].tolist() == s["b"]
+        assert (segments["target"][k], segments["edge"][k]) == (s["target"], s["edge"])
+        bits = [j for j in range(64) if (int(segments["visible_by"][k]) >> j) & 1]
+        assert bits == s["visibleBy"]
+
+
+def test_many_teams_in_one_call_are_each_team_on_its_own(published):
+    scene = camcov.load_scene(published("dynamic9"))
+    visibility = camcov.Visibility(scene.world_at(7.0), scene.half_fovs)
+    rng = np.random.default_rng(3)
+    teams = scene.initial_poses + rng.normal(0.0, 1.0, (20, *scene.initial_poses.shape))
+    each = visibility.terms_each(teams)
+    segments = visibility.segments_each(teams)
+    for k, team in enumerate(teams):
+        one = visibility.terms(team)
+        assert each["coverage"][k] == one["coverage"] and each["reward"][k] == one["reward"]
+        mine = segments["team"] == k
+        alone = visibility.segments(team)
+        assert np.array_equal(segments["a"][mine], alone["a"])
+        assert np.array_equal(segments["visible_by"][mine], alone["visible_by"])
+    singles = visibility.terms_each(teams[:, 0, :])  # (N, 3): one camera each, camera 0's θ
+    assert singles["coverage"][4] == visibility.terms(teams[4, :1])["coverage"]
+
+
+def test_the_visibility_polygon_holds_its_point(published):
+    scene = camcov.load_scene(published("static1"))
+    polygon = camcov.Visibility(scene.world_at(0.0), scene.half_fovs).visibility_polygon(
+        scene.initial_poses[0, :2])
+    assert polygon.shape[1] == 2 and len(polygon) >= 3
+    x, y = polygon[:, 0], polygon[:, 1]
+    assert 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y) > 0  # counter-clockwise
+
+
+def test_bad_shapes_raise_value_errors(tiny):
+    scene = camcov.load_scene(tiny("tiny_static"))
+    visibility = camcov.Visibility(scene.world_at(0.0), scene.half_fovs)
+    with pytest.raises(ValueError, match=r"\(M, 3\)"):
+        visibility.terms(np.zeros((2, 2)))
+    with pytest.raises(ValueError, match="fields of view"):
+        visibility.terms(np.zeros((5, 3)))
+    with pytest.raises(ValueError, match="half_fovs"):
+        camcov.Visibility(scene.world_at(0.0), [])
