@@ -28,7 +28,10 @@ namespace {
 class NearestUnseenController final : public control::Controller {
  public:
   NearestUnseenController(const scene::Scene& scene, const params::Parameters& params)
-      : scene_(scene), dt_(params.sim.dt), standoff_(params.reward.d2), goals_(scene.cameras.size()) {}
+      : scene_(scene),
+        dt_(params.sim.dt),
+        standoff_(params.reward.d2),
+        goals_(scene.cameras.size()) {}
 
   void control(const control::Observation& o,
                std::span<kinematics::CameraCommand> commands) override {

@@ -289,9 +289,9 @@ std::string sceneCard(const SceneData& data) {
         "<figcaption><b><a href=\"#{}\">{}</a></b> <span class=\"muted\">{} · {} camera{}, "
         "{}, {} target{}, {} obstacle{}, {} moving</span>{}</figcaption>\n",
         anchorId("ts", data.name), escapeXml(data.name), groupName(data.group), s.cameras.size(),
-        s.cameras.size() == 1 ? "" : "s", fieldsOfView(s),
-        s.targets.size(), s.targets.size() == 1 ? "" : "s", s.obstacles.size(),
-        s.obstacles.size() == 1 ? "" : "s", moving,
+        s.cameras.size() == 1 ? "" : "s", fieldsOfView(s), s.targets.size(),
+        s.targets.size() == 1 ? "" : "s", s.obstacles.size(), s.obstacles.size() == 1 ? "" : "s",
+        moving,
         s.description.empty() ? std::string() : fmt::format("<br>{}", escapeXml(s.description)));
   } else {
     out += fmt::format("<figcaption><b>{}</b></figcaption>\n", escapeXml(data.name));

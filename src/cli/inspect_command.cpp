@@ -49,9 +49,10 @@ int inspect(const InspectOptions& o) {
   } else {
     cameras = scene::loadCameraPoses(o.camerasFile);
     if (cameras.size() > s.cameras.size()) {
-      throw InputError(fmt::format("{}: {} poses, but the scene has {} cameras (pose j is camera j, "
-                                   "with its field of view)",
-                                   o.camerasFile, cameras.size(), s.cameras.size()));
+      throw InputError(
+          fmt::format("{}: {} poses, but the scene has {} cameras (pose j is camera j, "
+                      "with its field of view)",
+                      o.camerasFile, cameras.size(), s.cameras.size()));
     }
   }
   if (!o.debugSvg.empty()) {

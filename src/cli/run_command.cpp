@@ -57,8 +57,7 @@ Registration addRunCommand(CLI::App& app) {
   std::string names;
   for (const control::Method& m : control::methods())
     names += fmt::format("{}{} ({})", names.empty() ? "" : ", ", m.name, m.description);
-  cmd->add_option("--method,-m", o->method, "one of: " + names)
-      ->capture_default_str();
+  cmd->add_option("--method,-m", o->method, "one of: " + names)->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "random seed of the run")->capture_default_str();
   cmd->add_option("--duration", o->duration, "simulated seconds (default: sim.duration, 30 s)")
       ->check(CLI::Range(0.0, 1e6));

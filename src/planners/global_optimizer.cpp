@@ -26,7 +26,7 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
     double best = -std::numeric_limits<double>::infinity();
     std::optional<geometry::Pose> bestPose;
     result.poses.emplace_back();
-    for (int k = 0; k < samplesPerCamera; ++k) {                            // lines 5-11
+    for (int k = 0; k < samplesPerCamera; ++k) {                             // lines 5-11
       const auto pose = sampler.sample(random, validity, model.halfFov(j));  // lines 7-9
       if (!pose) continue;
       result.poses.back() = *pose;

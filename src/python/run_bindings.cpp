@@ -3,8 +3,10 @@
 // files are the CLI's to the byte. The GIL is let go while C++ works.
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include "batch/batch_plan.h"
 #include "batch/batch_runner.h"
@@ -154,7 +156,8 @@ void bindRuns(py::module_& m) {
         {
           py::gil_scoped_release free;
           batch::prepareFolder(folder, plan.manifest, force);
-          const unsigned workers = jobs > 0 ? jobs : 1;
+          const unsigned workers =
+              jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
           Quiet quiet;
           const batch::BatchRun run = batch::runBatch(plan.jobs, folder, workers, quiet);
           std::cout.flush();
@@ -165,10 +168,11 @@ void bindRuns(py::module_& m) {
       },
       py::arg("scenes"), py::arg("methods") = std::vector<std::string>{}, py::arg("seeds") = 5,
       py::arg("out") = "bench-results", py::arg("params") = py::none(),
-      py::arg("controllers") = py::dict(), py::arg("jobs") = 1, py::arg("reference") = "",
+      py::arg("controllers") = py::dict(), py::arg("jobs") = 0, py::arg("reference") = "",
       py::arg("videos") = "none", py::arg("report") = true, py::arg("force") = false,
       "`camcov bench` with Python controllers beside the table's methods: controllers maps a "
-      "method name to factory(scene, params, seed) -> controller. Returns the summary.");
+      "method name to factory(scene, params, seed) -> controller; jobs = 0 is every core. "
+      "Returns the summary.");
   m.def(
       "report",
       [](const std::string& folder, const std::string& out) {

@@ -211,9 +211,8 @@ void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose>
                                 std::to_string(cameras.size()));
   }
   if (halfFovs.size() < cameras.size()) {
-    throw std::invalid_argument("visibility: " + std::to_string(cameras.size()) +
-                                " cameras but " + std::to_string(halfFovs.size()) +
-                                " fields of view");
+    throw std::invalid_argument("visibility: " + std::to_string(cameras.size()) + " cameras but " +
+                                std::to_string(halfFovs.size()) + " fields of view");
   }
   for (std::size_t j = 0; j < cameras.size(); ++j)
     checkCamera(cameras[j], halfFovs[j]);

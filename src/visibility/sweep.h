@@ -56,8 +56,8 @@ class Sweep {
   Sweep& operator=(Sweep&&) noexcept;
 
   // S(T, O, C) and visibleBy(s_l) (paper equation (1), Algorithm 1) for `cameras` (camera j
-  // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into `out`
-  // (cleared first) every target's boundary as segments, ordered by target, edge and along
+  // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into
+  // `out` (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
   // Throws std::invalid_argument for more than kMaxCameras cameras, fewer half-angles than
   // cameras, θ_j outside (0, π), or a non-finite pose.
