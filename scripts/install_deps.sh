@@ -22,6 +22,7 @@ packages=(
   clang libclang-rt-14-dev          # fuzzers: clang with libFuzzer (scripts/fuzz.sh)
   chromium                          # headless browser test of the HTML report
   pybind11-dev python3-dev python3-numpy python3-pytest  # the camcov Python module and its tests
+  slurmctld slurmd slurm-client munge  # a one-node Slurm cluster for tests/cluster
 )
 
 missing=()

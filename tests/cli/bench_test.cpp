@@ -160,19 +160,31 @@ TEST(CliBench, ShardsPlusMergeEqualOneProcess) {
 }
 
 TEST(CliBench, SlurmArrayRecipeShardsAndMerges) {
-  // scripts/slurm_bench.sh as Slurm would start it: one task per shard, environment set.
+  // scripts/slurm_bench.sh as Slurm would start it: one task per shard, environment set; then
+  // task 2 resubmitted alone (an array of one), which must run shard 2 of 3 again, not the
+  // whole batch. tests/cluster does the same on a real Slurm cluster.
   const fs::path one = freshDir("slurm_one"), base = freshDir("slurm");
   ASSERT_EQ(runCamcov(benchArgs(one, 2)).exitCode, 0);
   const std::string script = std::string(CAMCOV_SOURCE_DIR) + "/scripts/slurm_bench.sh";
   const std::string options = benchArgs(base, 2).substr(std::string("bench").size());
   const std::string optionsWithoutOut = options.substr(0, options.find(" --out "));
-  for (int task = 4; task <= 6; ++task) {  // an array 4-6: shards 1..3
-    const auto r =
-        runShell("CAMCOV=" + camcovBinary() + " SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
-                 " SLURM_ARRAY_TASK_MIN=4 SLURM_ARRAY_TASK_MAX=6 SLURM_CPUS_PER_TASK=1 " + script +
-                 " " + base.string() + optionsWithoutOut);
+  const auto task = [&](int id, int count) {
+    return runShell("CAMCOV=" + camcovBinary() + " SLURM_ARRAY_TASK_ID=" + std::to_string(id) +
+                    " SLURM_ARRAY_TASK_COUNT=" + std::to_string(count) +
+                    " SLURM_CPUS_PER_TASK=1 " + script + " " + base.string() + optionsWithoutOut);
+  };
+  for (int id = 1; id <= 3; ++id) {
+    const auto r = task(id, 3);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   }
+  const auto again = task(2, 1);
+  ASSERT_EQ(again.exitCode, 0) << again.out << again.err;
+  EXPECT_NE(again.out.find("shard 2/3 done"), std::string::npos) << again.out;
+  EXPECT_FALSE(fs::exists(base / "shard-1" / "runs" / "tiny_static-paper-seed1.json") &&
+               fs::exists(base / "shard-2" / "runs" / "tiny_static-paper-seed1.json"))
+      << "a run belongs to one shard";
+  const auto wrongSize = task(1, 5);
+  EXPECT_EQ(wrongSize.exitCode, 2) << "the same folder as another number of shards";
   const auto merged =
       runCamcov("merge " + (base / "shard-1").string() + " " + (base / "shard-2").string() + " " +
                 (base / "shard-3").string() + " --out " + (base / "merged").string());
