@@ -28,9 +28,13 @@ void PythonController::control(const control::Observation& o,
     observation->seen.assign(o.seen.begin(), o.seen.end());
     observation->terms = o.terms;
     const py::object result = callable_(py::cast(std::move(observation)));
-    const bool withGoals = py::isinstance<py::tuple>(result) && py::len(result) == 2;
+    // velocities, or a tuple (velocities, goals) or (velocities, goals, events)
+    const std::size_t parts =
+        py::isinstance<py::tuple>(result) && py::len(result) >= 2 && py::len(result) <= 3
+            ? py::len(result)
+            : 1;
     const auto velocities =
-        posesFromArray(withGoals ? result[py::int_(0)] : result, "controller's velocities");
+        posesFromArray(parts > 1 ? result[py::int_(0)] : result, "controller's velocities");
     if (velocities.size() != commands.size()) {
       throw py::value_error("the controller returned " + std::to_string(velocities.size()) +
                             " velocities for " + std::to_string(commands.size()) + " cameras");
@@ -38,7 +42,7 @@ void PythonController::control(const control::Observation& o,
     for (std::size_t j = 0; j < commands.size(); ++j)
       commands[j] = {{velocities[j].x, velocities[j].y}, velocities[j].yaw};
     goals_.assign(commands.size(), std::nullopt);
-    if (withGoals) {
+    if (parts > 1 && !result[py::int_(1)].is_none()) {
       const auto goals = posesFromArray(result[py::int_(1)], "controller's goals");
       if (goals.size() != commands.size()) throw py::value_error("one goal row per camera");
       for (std::size_t j = 0; j < goals.size(); ++j) {
@@ -46,10 +50,37 @@ void PythonController::control(const control::Observation& o,
           goals_[j] = goals[j];
       }
     }
+    if (parts > 2) takeEventsFrom(result[py::int_(2)], o.time, commands.size());
   } catch (const py::error_already_set& e) {
     // The Python error as text: the exception object must not outlive the GIL.
     throw std::runtime_error(std::string("Python controller: ") + e.what());
   }
+}
+
+void PythonController::takeEventsFrom(const py::handle& events, double time, std::size_t cameras) {
+  for (const py::handle item : events) {
+    if (!py::isinstance<py::dict>(item))
+      throw py::value_error("controller's events: expected dicts with at least a 'kind'");
+    const auto e = py::reinterpret_borrow<py::dict>(item);
+    if (!e.contains("kind")) throw py::value_error("controller's events: an event without 'kind'");
+    control::ControlEvent event;
+    event.time = time;
+    event.kind = py::str(e["kind"]);
+    event.camera = e.contains("camera") ? e["camera"].cast<int>() : -1;
+    if (event.camera < -1 || event.camera >= static_cast<int>(cameras))
+      throw py::value_error("controller's events: camera " + std::to_string(event.camera) + " of " +
+                            std::to_string(cameras));
+    if (e.contains("detail")) event.detail = py::str(e["detail"]);
+    if (e.contains("reason")) event.reason = py::str(e["reason"]);
+    if (e.contains("path")) event.path = posesFromArray(e["path"], "controller's event path");
+    events_.push_back(std::move(event));
+  }
+}
+
+void PythonController::takeEvents(std::vector<control::ControlEvent>& out) {
+  for (auto& e : events_)
+    out.push_back(std::move(e));
+  events_.clear();
 }
 
 control::Method pythonMethod(const std::string& name, py::object factory) {

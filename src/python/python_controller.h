@@ -30,19 +30,25 @@ struct PythonObservation {
 
 class PythonController final : public control::Controller {
  public:
-  // `callable(observation)` returns velocities (M, 3) — vx, vy (m/s), yaw rate (rad/s) — or a
-  // pair (velocities, goals) with goals (M, 3), a row of NaN for a camera without a goal.
+  // `callable(observation)` returns velocities (M, 3) — vx, vy (m/s), yaw rate (rad/s) — or
+  // (velocities, goals) with goals (M, 3), a row of NaN for a camera without a goal (None: no
+  // goals), or (velocities, goals, events) with events a list of dicts: "kind", and optionally
+  // "camera" (-1: the team), "detail", "reason" and "path" (n, 3), kept in the results like a
+  // C++ method's events (a "plan" event's path is drawn in frames).
   explicit PythonController(py::object callable);
   ~PythonController() override;
 
   void control(const control::Observation& observation,
                std::span<kinematics::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t camera) const override { return goals_[camera]; }
-  void takeEvents(std::vector<control::ControlEvent>&) override {}
+  void takeEvents(std::vector<control::ControlEvent>& out) override;
 
  private:
+  void takeEventsFrom(const py::handle& events, double time, std::size_t cameras);
+
   py::object callable_;
   std::vector<std::optional<geometry::Pose>> goals_;
+  std::vector<control::ControlEvent> events_;
 };
 
 // A method whose controllers `factory(scene, params, seed)` makes (a camcov.Scene, the run's

@@ -127,7 +127,8 @@ void bindRuns(py::module_& m) {
       py::arg("scene_file"), py::arg("controller"), py::arg("method") = "python",
       py::arg("seed") = 1, py::arg("params") = py::none(),
       "One run with a Python controller: controller(observation) -> velocities (M, 3), or "
-      "(velocities, goals). Its results files are a method's like any other.");
+      "(velocities, goals), or (velocities, goals, events) (see the README). Its results files "
+      "are a method's like any other.");
   m.def(
       "bench",
       [](const std::vector<std::string>& scenes, const std::vector<std::string>& methods,

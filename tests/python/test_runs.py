@@ -147,3 +147,27 @@ def test_the_example_script_writes_a_report_of_both_methods(published, tmp_path)
     assert {c["method"] for c in summary["comparisons"]} == {"nearest-unseen-py"}
     report = (out / "report.html").read_text()
     assert 'data-method="nearest-unseen-py"' in report and 'data-method="paper"' in report
+
+
+def test_a_python_controllers_goals_and_events_are_kept_in_its_results(tiny, tmp_path):
+    scene = camcov.load_scene(tiny("tiny_static"))
+    m = len(scene.cameras)
+
+    def control(observation):
+        goals = np.full((m, 3), np.nan)
+        goals[0] = (1.0, -5.0, 0.5)
+        events = []
+        if observation.time == 0.0:
+            events.append({"kind": "plan", "camera": 0, "detail": "toward (1, -5)",
+                           "reason": "start", "path": [[-6.0, -6.0, 0.0], [1.0, -5.0, 0.5]]})
+        return np.zeros((m, 3)), goals, events
+
+    run = json.loads(pathlib.Path(camcov.simulate(
+        tiny("tiny_static"), control, method="planner-py", params={"sim.duration": 1.0}
+    ).write(str(tmp_path))).read_text())
+    event = run["events"][0]
+    assert (event["kind"], event["camera"], event["reason"]) == ("plan", 0, "start")
+    assert event["time"] == 0.0 and len(event["path"]) == 2
+    with pytest.raises(ValueError, match="without 'kind'"):
+        camcov.simulate(tiny("tiny_static"), lambda o: (np.zeros((m, 3)), None, [{}]),
+                        method="bad-events", params={"sim.duration": 1.0})
