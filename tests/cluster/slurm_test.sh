@@ -4,6 +4,8 @@
 #     every run file are byte-identical to one `camcov bench` process.
 #  2. One array task is cancelled (scancel) in the middle of its shard and resubmitted: what it
 #     had finished is kept, the rest is run, and the merge is still identical.
+#  3. scripts/slurm_sweep.sh: a 2 x 2 grid as an array of 4, each setting's folder the bytes of
+#     `camcov bench --set ...` in one process.
 # Usage: slurm_test.sh CAMCOV_BINARY. Exits 77 (skipped) where Slurm cannot run.
 set -euo pipefail
 camcov=${1:?usage: slurm_test.sh CAMCOV_BINARY}
@@ -64,3 +66,19 @@ grep -q "1 of 2 jobs already done" "$work/long-again.log" ||
 "$camcov" merge "$work"/long/shard-* --out "$work/long/merged" --videos none --no-report >/dev/null
 same "$work/one-long" "$work/long/merged"
 echo "ok: cancelled after $written run, resubmitted, merged to the bytes of one process"
+
+echo "== 3. a parameter sweep, one array task per setting"
+grid=(global.K=20,40 global.tau=1.1,1.3)
+settings=$(scripts/slurm_sweep.sh --count "${grid[@]}")
+[ "$settings" -eq 4 ] || { echo "FAIL: --count says $settings settings, not 4" >&2; exit 1; }
+sbatch --array=1-"$settings" --wait --quiet --output="$work/sweep-%a.log" \
+  scripts/slurm_sweep.sh "$work/sweep" "${grid[@]}" -- "${small[@]}" --no-report
+for k in 20 40; do
+  for tau in 1.1 1.3; do
+    folder=$work/sweep/global.K=${k}_global.tau=$tau
+    "$camcov" bench "${small[@]}" --no-report --set global.K=$k --set global.tau=$tau \
+      --out "$work/one-$k-$tau" >/dev/null
+    same "$work/one-$k-$tau" "$folder"
+  done
+done
+echo "ok: 4 settings, each the bytes of one process with its --set"
