@@ -16,19 +16,10 @@
 #include "reward/reward_model.h"
 #include "scene/scene_loader.h"
 #include "support/bench_scenes_dir.h"
+#include "support/splitmix64.h"
 
 namespace camcov {
 namespace {
-
-struct SplitMix64 {
-  std::uint64_t state;
-  double uniform(double lo, double hi) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return lo + (hi - lo) * static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53;
-  }
-};
 
 const scene::Scene& dynamic9() {
   static const scene::Scene s = scene::loadScene(testing::benchScenesDir() / "dynamic9.json");
@@ -37,7 +28,7 @@ const scene::Scene& dynamic9() {
 
 std::vector<geometry::Pose> randomPoses(const kinematics::World& world, int count) {
   const geometry::Box box = geometry::boundingBox(world.boundary);
-  SplitMix64 random{1};
+  testing::SplitMix64 random{1};
   std::vector<geometry::Pose> poses;
   for (int i = 0; i < count; ++i) {
     const double x = random.uniform(box.min.x, box.max.x);

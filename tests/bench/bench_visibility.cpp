@@ -27,6 +27,7 @@
 
 #include "geometry/ring.h"
 #include "kinematics/world.h"
+#include "support/splitmix64.h"
 #include "visibility/sweep.h"
 
 #ifdef CAMCOV_BENCH_WITH_CGAL
@@ -50,16 +51,7 @@ namespace vis = camcov::visibility;
 
 constexpr double kCell = 10.0;  // one hole per cell of this side
 
-// splitmix64: the same scenes on every machine.
-struct Random {
-  std::uint64_t state;
-  double uniform(double lo, double hi) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return lo + (hi - lo) * static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53;
-  }
-};
+using Random = camcov::testing::SplitMix64;  // the same scenes on every machine
 
 struct Scene {
   camcov::kinematics::World world;
