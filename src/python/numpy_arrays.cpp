@@ -109,6 +109,10 @@ py::dict segmentsToDict(std::span<const visibility::Segment> segments,
   return out;
 }
 
+py::object jsonToPython(const nlohmann::json& value) {
+  return py::module_::import("json").attr("loads")(value.dump());
+}
+
 py::dict termsToDict(const reward::RewardTerms& terms) {
   py::dict d;
   d["coverage"] = terms.coverage;

@@ -3,6 +3,7 @@
 // x, y, poses as (M, 3) arrays of x, y, yaw (radians), both float64 and C-contiguous.
 #include <pybind11/numpy.h>
 
+#include <nlohmann/json.hpp>
 #include <span>
 #include <vector>
 
@@ -30,6 +31,8 @@ std::vector<double> valuesFromArray(const py::handle& values, std::size_t count,
 // when `team` is given, team (S,) int64: which team each segment belongs to.
 py::dict segmentsToDict(std::span<const visibility::Segment> segments,
                         std::span<const std::int64_t> team = {});
+// A JSON value (a run's summary, the parameters) as Python's json module would read it.
+py::object jsonToPython(const nlohmann::json& value);
 // The reward's terms: coverage, utilization, repulsion, reward.
 py::dict termsToDict(const reward::RewardTerms& terms);
 

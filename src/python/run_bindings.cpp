@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <iostream>
+#include <fstream>
 #include <thread>
 
 #include "batch/batch_plan.h"
@@ -22,10 +22,6 @@
 
 namespace camcov::python {
 namespace {
-
-py::object jsonToPython(const nlohmann::json& j) {
-  return py::module_::import("json").attr("loads")(j.dump());
-}
 
 records::RunRecord runWithoutGil(const batch::JobSpec& job) {
   py::gil_scoped_release free;
@@ -161,11 +157,9 @@ void bindRuns(py::module_& m) {
               jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
           Quiet quiet;
           const batch::BatchRun run = batch::runBatch(plan.jobs, folder, workers, quiet);
-          std::cout.flush();
           cli::writeBenchOutputs(folder, plan.manifest, run.outcomes, outputs, workers);
         }
-        return py::module_::import("json").attr("loads")(
-            py::module_::import("pathlib").attr("Path")(out + "/summary.json").attr("read_text")());
+        return jsonToPython(nlohmann::json::parse(std::ifstream(folder.root() / "summary.json")));
       },
       py::arg("scenes"), py::arg("methods") = std::vector<std::string>{}, py::arg("seeds") = 5,
       py::arg("out") = "bench-results", py::arg("params") = py::none(),

@@ -27,7 +27,7 @@ params::Parameters parametersFrom(const py::handle& values) {
 }
 
 py::object parametersToPython(const params::Parameters& p) {
-  return py::module_::import("json").attr("loads")(params::toJson(p).dump());
+  return jsonToPython(params::toJson(p));
 }
 
 namespace {

@@ -44,7 +44,9 @@ class Visibility {
     scratch_.segments.clear();
     scratch_.team.clear();
     scratch_.terms.clear();
-    for (std::size_t k = 0; k * teamSize < poses.size() || (k == 0 && poses.empty()); ++k) {
+    // A team of no cameras is one (empty) team; otherwise the poses are teams of teamSize.
+    const std::size_t teams = teamSize == 0 ? 1 : poses.size() / teamSize;
+    for (std::size_t k = 0; k < teams; ++k) {
       scratch_.terms.push_back(model_.evaluate(std::span(poses).subspan(k * teamSize, teamSize)));
       if (!withSegments) continue;
       scratch_.segments.insert(scratch_.segments.end(), model_.segments().begin(),

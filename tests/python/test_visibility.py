@@ -66,3 +66,11 @@ def test_bad_shapes_raise_value_errors(tiny):
         visibility.terms(np.zeros((5, 3)))
     with pytest.raises(ValueError, match="half_fovs"):
         camcov.Visibility(scene.world_at(0.0), [])
+
+
+def test_no_teams_give_no_terms_and_an_empty_team_sees_nothing(tiny):
+    scene = camcov.load_scene(tiny("tiny_static"))
+    visibility = camcov.Visibility(scene.world_at(0.0), scene.half_fovs)
+    assert len(visibility.terms_each(np.zeros((0, 2, 3)))["coverage"]) == 0
+    assert len(visibility.segments_each(np.zeros((0, 2, 3)))["a"]) == 0
+    assert visibility.terms(np.zeros((0, 3)))["coverage"] == 0.0
