@@ -1,8 +1,11 @@
 #include "reward/metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+
+#include "visibility/sweep.h"
 
 namespace camcov::reward {
 
@@ -28,17 +31,20 @@ double coverage(std::span<const visibility::Segment> segments, double perimeter)
 double utilization(std::span<const visibility::Segment> segments,
                    std::span<const geometry::Pose> cameras, std::span<const double> halfFovs) {
   if (cameras.empty()) return 0.0;
-  // Σ_j angle_j / 2θ_j, summed as Σ_j angle_j · (θ_0/θ_j), then over 2θ_0: for a team of
-  // like cameras every weight is exactly 1, so the sum is eq. (5) as written, to the bit.
+  // Σ_j angle_j / 2θ_j, summed as Σ_j (θ_0/θ_j) · angle_j, then over 2θ_0: for a team of
+  // like cameras every weight θ_0/θ_0 is exactly 1 (IEEE division), so the sum is eq. (5)
+  // as written, to the bit.
   const double theta0 = halfFovs[0];
+  std::array<double, visibility::Sweep::kMaxCameras> weight;  // θ_0/θ_j, once per camera
+  for (std::size_t j = 0; j < cameras.size(); ++j)
+    weight[j] = theta0 / halfFovs[j];
   double angles = 0.0;
   for (const auto& s : segments) {
     for (std::uint64_t bits = s.visibleBy; bits != 0; bits &= bits - 1) {
       const int j = std::countr_zero(bits);
       const geometry::Vec2 p = cameras[j].position();
       const geometry::Vec2 u = s.a - p, v = s.b - p;
-      const double weight = halfFovs[j] == theta0 ? 1.0 : theta0 / halfFovs[j];
-      angles += weight * std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
+      angles += weight[j] * std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
     }
   }
   return angles / (2.0 * theta0) / static_cast<double>(cameras.size());
