@@ -14,4 +14,13 @@ esac
 # still shows why a build failed.
 cmake -S "$repo" -B "$dir" -G Ninja "${flags[@]}" >/dev/null
 cmake --build "$dir" --parallel "$(nproc)" >&2
+# `import camcov` for Debian's python3, from anywhere (the sanitizer build has no module).
+if [ "$kind" = release ]; then
+  if [ -w /usr/local/lib ]; then
+    cmake --install "$dir" --component python >/dev/null
+  else
+    echo "build.sh: the Python module is not installed (no write access to /usr/local):" \
+      "use PYTHONPATH=$dir/python" >&2
+  fi
+fi
 echo "$dir"
