@@ -1,5 +1,7 @@
 #include "reports/build_context.h"
 
+#include <fmt/format.h>
+
 #include <unistd.h>
 
 #include <array>
@@ -37,6 +39,11 @@ BuildContext currentBuildContext() {
   std::array<char, 32> date{};
   std::strftime(date.data(), date.size(), "%Y-%m-%d %H:%M UTC", &utc);
   return {date.data(), hostname(), cpuModel(), std::thread::hardware_concurrency()};
+}
+
+std::string machineDescription(const BuildContext& context) {
+  return fmt::format("{} — {}, {} hardware threads", context.hostname,
+                     context.cpuModel.empty() ? "CPU unknown" : context.cpuModel, context.cores);
 }
 
 }  // namespace camcov::reports

@@ -14,5 +14,7 @@ struct BuildContext {
 };
 
 BuildContext currentBuildContext();
+// "host — CPU model, N hardware threads", for a report's header.
+std::string machineDescription(const BuildContext& context);
 
 }  // namespace camcov::reports

@@ -100,9 +100,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   fact("Compute time", fmt::format("{} wall, {} CPU, summed over {} jobs", duration(wall),
                                    duration(cpu), data.timings.size()));
   fact("Report built", escapeXml(context.date));
-  fact("Machine", escapeXml(fmt::format("{} — {}, {} hardware threads", context.hostname,
-                                        context.cpuModel.empty() ? "CPU unknown" : context.cpuModel,
-                                        context.cores)));
+  fact("Machine", escapeXml(machineDescription(context)));
   return out + "</dl>\n</header>\n";
 }
 

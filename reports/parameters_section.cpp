@@ -22,11 +22,6 @@ const char* groupOf(std::string_view key) {
   return "Other";
 }
 
-std::string value(const params::ParamField& f, double v) {
-  if (f.boolean) return v != 0.0 ? "true" : "false";
-  return f.integer ? fmt::format("{:.0f}", v) : fmt::format("{:g}", v);
-}
-
 }  // namespace
 
 std::string parametersSection(const ReportData& data) {
@@ -46,12 +41,14 @@ std::string parametersSection(const ReportData& data) {
     rows += fmt::format(
         "<tr{}><td class=\"symbol\">{}</td><td><code>{}</code></td><td class=\"num\">{}{}</td>"
         "<td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-        changed ? " class=\"override\"" : "", escapeXml(f.symbol), escapeXml(f.key), value(f, used),
+        changed ? " class=\"override\"" : "", escapeXml(f.symbol), escapeXml(f.key),
+        params::formatValue(f, used),
         changed ? " <span class=\"badge\" style=\"--c:#b45309\">set</span>" : "",
-        value(f, standard), escapeXml(f.unit), escapeXml(f.description));
+        params::formatValue(f, standard), escapeXml(f.unit), escapeXml(f.description));
     if (changed) {
       overrides.push_back(fmt::format("<code>{}</code> = {} (default {})", escapeXml(f.key),
-                                      value(f, used), value(f, standard)));
+                                      params::formatValue(f, used),
+                                      params::formatValue(f, standard)));
     }
   }
   return fmt::format(

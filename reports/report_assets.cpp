@@ -1,6 +1,29 @@
 #include "reports/report_assets.h"
 
+#include <fmt/format.h>
+
+#include "reports/markup.h"
+
 namespace camcov::reports {
+namespace {
+
+// Everything the page may load is inline, or a local video next to it ('self' when served,
+// file: when opened from disk); anything else is blocked and reported by the browser.
+constexpr const char* kContentSecurityPolicy =
+    "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; "
+    "img-src data:; media-src 'self' file:";
+
+}  // namespace
+
+std::string documentHead(std::string_view title, std::string_view toolVersion) {
+  return fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
+      "<meta name=\"generator\" content=\"camcov {}\">\n"
+      "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n",
+      kContentSecurityPolicy, escapeXml(toolVersion), escapeXml(title), reportStyle());
+}
 
 std::string_view reportStyle() {
   return R"css(
@@ -63,7 +86,7 @@ figure.series { border-top: 1px solid var(--line); padding-top: .55rem; margin: 
 .scene-card { margin: 0; padding: 10px 12px; border: 1px solid var(--line); border-radius: 6px; }
 .scene-card svg { margin: 0 auto 8px; }
 .note { color: #9a3412; font-size: .85rem; margin: .3rem 0 0; }
-table.parameters tr.group th { background: #eceef2; }
+table.parameters tr.group th, table.settings-scenes tr.group th { background: #eceef2; }
 tr.override td { background: #fff3dc; }
 td.symbol { font-style: italic; white-space: nowrap; }
 .videos { display: grid; grid-template-columns: repeat(auto-fill, minmax(360px, 1fr)); gap: 16px; }

@@ -10,12 +10,6 @@
 namespace camcov::reports {
 namespace {
 
-// Everything the page may load is inline, or a local video next to it ('self' when served,
-// file: when opened from disk); anything else is blocked and reported by the browser.
-constexpr const char* kContentSecurityPolicy =
-    "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; "
-    "img-src data:; media-src 'self' file:";
-
 std::string navigation(const ReportData& data) {
   std::string links =
       "<li><a href=\"#summary\">Summary</a></li><li><a href=\"#box-plots\">Per scene (Fig. 4)"
@@ -33,14 +27,9 @@ std::string navigation(const ReportData& data) {
 }  // namespace
 
 std::string buildReportHtml(const ReportData& data, const BuildContext& context) {
-  std::string html = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
-      "<meta name=\"generator\" content=\"camcov {}\">\n"
-      "<title>camcov report: {} scenes × {} seeds</title>\n<style>{}</style>\n</head>\n<body>\n",
-      kContentSecurityPolicy, escapeXml(data.manifest.toolVersion), data.manifest.scenes.size(),
-      data.manifest.seeds, reportStyle());
+  std::string html = documentHead(fmt::format("camcov report: {} scenes × {} seeds",
+                                              data.manifest.scenes.size(), data.manifest.seeds),
+                                  data.manifest.toolVersion);
   html += navigation(data);
   html += "<div class=\"page\">\n";
   html += headerSection(data, context);

@@ -8,6 +8,7 @@
 #   n=$(scripts/slurm_sweep.sh --count global.K=50,200,800 global.tau=1.1,1.2)     # 6
 #   sbatch --array=1-$n --cpus-per-task=2 --wait scripts/slurm_sweep.sh /shared/sweep \
 #          global.K=50,200,800 global.tau=1.1,1.2 -- --scenes /shared/coverage_scenes --seeds 20
+#   build/src/cli/camcov report /shared/sweep     # the settings side by side, sweep/report.html
 #
 # Settings are numbered with the first key varying slowest. Submit from the repository's root
 # or set CAMCOV=/path/to/camcov (Slurm runs a copy of this script from its spool folder).

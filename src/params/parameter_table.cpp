@@ -138,6 +138,11 @@ const ParamField* findParameter(std::string_view key) {
   return nullptr;
 }
 
+std::string formatValue(const ParamField& field, double value) {
+  if (field.boolean) return value != 0.0 ? "true" : "false";
+  return field.integer ? fmt::format("{:.0f}", value) : fmt::format("{:g}", value);
+}
+
 nlohmann::json toJson(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& f : kTable) {

@@ -27,6 +27,8 @@ struct ParamField {
 
 std::span<const ParamField> parameterTable();
 const ParamField* findParameter(std::string_view key);
+// A value as a person writes it: "true"/"false" for switches, "200" for integers, "0.05".
+std::string formatValue(const ParamField& field, double value);
 
 // Nested JSON: {"reward": {"lambda1": 1.0, ...}, ...}, every field, table order.
 nlohmann::json toJson(const Parameters& p);

@@ -105,21 +105,25 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
       if (method == reference) continue;
       Comparison c{scene, method, "", 1.0, false, 0.0};
       if (base != byMethod.end() && !base->second.empty() && !coverage.empty()) {
-        const MannWhitney test = mannWhitneyU(coverage, base->second);
-        c.pValue = test.pValue;
-        c.exact = test.exact;
-        c.meanDifference = describe(coverage).mean - describe(base->second).mean;
+        const RunsComparison r = compareRuns(coverage, base->second);
+        c.pValue = r.pValue;
+        c.exact = r.exact;
+        c.meanDifference = r.meanDifference;
         Tally& t = tallies[method];
         t.method = method;
-        if (c.pValue >= kSignificance || c.meanDifference == 0.0) {
-          c.winner = "tie";
-          ++t.ties;
-        } else if (c.meanDifference > 0.0) {
-          c.winner = method;
-          ++t.wins;
-        } else {
-          c.winner = reference;
-          ++t.losses;
+        switch (r.verdict) {
+          case Verdict::Tie:
+            c.winner = "tie";
+            ++t.ties;
+            break;
+          case Verdict::Better:
+            c.winner = method;
+            ++t.wins;
+            break;
+          case Verdict::Worse:
+            c.winner = reference;
+            ++t.losses;
+            break;
         }
       }
       summary.comparisons.push_back(std::move(c));
@@ -128,6 +132,17 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
   for (auto& [method, t] : tallies)
     summary.tallies.push_back(std::move(t));
   return summary;
+}
+
+RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference) {
+  const MannWhitney test = mannWhitneyU(runs, reference);
+  RunsComparison c;
+  c.pValue = test.pValue;
+  c.exact = test.exact;
+  c.meanDifference = describe(runs).mean - describe(reference).mean;
+  if (c.pValue < kSignificance && c.meanDifference != 0.0)
+    c.verdict = c.meanDifference > 0.0 ? Verdict::Better : Verdict::Worse;
+  return c;
 }
 
 const Comparison* BatchSummary::comparison(const std::string& scene,

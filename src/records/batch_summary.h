@@ -6,6 +6,7 @@
 // give the same bytes.
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct MethodSummary {
   std::uint64_t bestSeed = 0;
 };
 
+inline constexpr double kSignificance = 0.05;
+
 // One method against the reference method on one scene: the two-sided Mann-Whitney U test of
 // their runs' average coverage.
 struct Comparison {
@@ -60,6 +63,19 @@ struct Comparison {
   bool exact = false;
   double meanDifference = 0.0;  // mean coverage of the method minus the reference's
 };
+
+// One sample of runs' average coverage against a reference sample: the two-sided Mann-Whitney
+// U test and the verdict the summary and the report of settings both use. A difference counts
+// when p < kSignificance and the means differ; otherwise it is a tie.
+enum class Verdict { Better, Tie, Worse };
+struct RunsComparison {
+  Verdict verdict = Verdict::Tie;
+  double pValue = 1.0;
+  bool exact = false;
+  double meanDifference = 0.0;  // mean of the runs minus the reference's
+};
+// Both samples must be non-empty.
+RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
 
 // How one method fared against the reference over the scenes where both ran.
 struct Tally {
@@ -78,8 +94,6 @@ struct BatchSummary {
   // The comparison of `method` on `scene`, or nullptr (the reference, or a method not run).
   const Comparison* comparison(const std::string& scene, const std::string& method) const;
 };
-
-inline constexpr double kSignificance = 0.05;
 
 // Compares every method with `reference` (the baseline, by default).
 BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference);

@@ -5,7 +5,7 @@
 #  2. One array task is cancelled (scancel) in the middle of its shard and resubmitted: what it
 #     had finished is kept, the rest is run, and the merge is still identical.
 #  3. scripts/slurm_sweep.sh: a 2 x 2 grid as an array of 4, each setting's folder the bytes of
-#     `camcov bench --set ...` in one process.
+#     `camcov bench --set ...` in one process; `camcov report` over the sweep shows the 4 settings.
 # Usage: slurm_test.sh CAMCOV_BINARY. Exits 77 (skipped) where Slurm cannot run.
 set -euo pipefail
 camcov=${1:?usage: slurm_test.sh CAMCOV_BINARY}
@@ -82,3 +82,11 @@ for k in 20 40; do
   done
 done
 echo "ok: 4 settings, each the bytes of one process with its --set"
+"$camcov" report "$work/sweep" >/dev/null
+for k in 20 40; do
+  for tau in 1.1 1.3; do
+    grep -q "<tr data-setting=\"global.K=${k}_global.tau=$tau\"><th scope=\"row\">K=$k τ=$tau" \
+      "$work/sweep/report.html" || { echo "FAIL: the sweep's report lacks K=$k τ=$tau" >&2; exit 1; }
+  done
+done
+echo "ok: camcov report shows the 4 settings side by side"

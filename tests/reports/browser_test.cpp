@@ -115,6 +115,23 @@ TEST_F(Browser, OpensTheReportWithoutConsoleErrorsAndTakesScreenshots) {
   }
 }
 
+TEST_F(Browser, OpensTheSettingsReportWithoutConsoleErrors) {
+  ASSERT_EQ(benchFixture(dir_ / "sweep" / "global.K=30", "--no-report").exitCode, 0);
+  ASSERT_EQ(benchFixture(dir_ / "sweep" / "global.K=60", "--set global.K=60").exitCode, 0);
+  const auto r = runCamcov("report " + (dir_ / "sweep").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const fs::path report = dir_ / "sweep" / "report.html";
+  EXPECT_EQ(consoleErrors(report, dir_.path()), "");
+  fs::create_directories(kScreenshots);
+  const fs::path shot = kScreenshots / "settings-report.png";
+  fs::remove(shot);
+  const auto s = runChromium(dir_ / "profile-settings",
+                             "--window-size=1366,1800 --screenshot=" + shot.string() + " 'file://" +
+                                 report.string() + "'");
+  ASSERT_EQ(s.exitCode, 0) << s.err;
+  EXPECT_GT(fs::file_size(shot), 20000u) << "a blank page compresses to almost nothing";
+}
+
 TEST_F(Browser, TheCheckCatchesErrorsAndBlockedFetches) {
   // The harness must be able to fail: a page with a script error, a console error and an
   // image from the network, under the report's own policy.
