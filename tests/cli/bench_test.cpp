@@ -170,8 +170,8 @@ TEST(CliBench, SlurmArrayRecipeShardsAndMerges) {
   const std::string optionsWithoutOut = options.substr(0, options.find(" --out "));
   const auto task = [&](int id, int count) {
     return runShell("CAMCOV=" + camcovBinary() + " SLURM_ARRAY_TASK_ID=" + std::to_string(id) +
-                    " SLURM_ARRAY_TASK_COUNT=" + std::to_string(count) +
-                    " SLURM_CPUS_PER_TASK=1 " + script + " " + base.string() + optionsWithoutOut);
+                    " SLURM_ARRAY_TASK_COUNT=" + std::to_string(count) + " SLURM_CPUS_PER_TASK=1 " +
+                    script + " " + base.string() + optionsWithoutOut);
   };
   for (int id = 1; id <= 3; ++id) {
     const auto r = task(id, 3);
