@@ -167,6 +167,9 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
       scene.sceneNote = "not listed in batch.json";
     }
     scene.group = sceneGroup(scene.name, scene.scene ? &*scene.scene : nullptr);
+    if (const fs::path page = resultsDir / "explore" / (name + ".html"); fs::exists(page)) {
+      scene.explorerUrl = relativeUrl(page, reportFile.parent_path());
+    }
     for (const auto& m : data.summary.methods) {
       if (m.scene != scene.name || m.runs == 0) continue;
       scene.methods[m.method] =

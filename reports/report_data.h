@@ -48,6 +48,7 @@ struct SceneData {
   std::optional<scene::Scene> scene;          // empty if its file cannot be read any more
   std::string sceneNote;                      // why the scene is missing, or that its file changed
   std::map<std::string, MethodRuns> methods;  // by method name
+  std::string explorerUrl;  // explore/<scene>.html relative to the report; empty if none
 };
 
 struct ReportData {

@@ -131,10 +131,14 @@ std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& 
   const std::string caption = join(parts, "; ");
   return fmt::format(
       "<figure class=\"series\" id=\"{}\" data-figure=\"series\" data-scene=\"{}\">\n"
-      "<figcaption><b>{}</b> <span class=\"muted\">{} · <a href=\"#{}\">scene</a></span>"
+      "<figcaption><b>{}</b> <span class=\"muted\">{} · <a href=\"#{}\">scene</a>{}</span>"
       "</figcaption>\n<div class=\"pair\">{}{}</div>\n</figure>\n",
       anchorId("ts", scene.name), escapeXml(scene.name), escapeXml(scene.name), escapeXml(caption),
       anchorId("scene", scene.name),
+      scene.explorerUrl.empty()
+          ? std::string()
+          : fmt::format(" · <a class=\"explore\" href=\"{}\">explore these runs</a>",
+                        escapeXml(scene.explorerUrl)),
       chart(scene, methods, &MethodRuns::coverage, "coverage", duration),
       chart(scene, methods, &MethodRuns::utilization, "utilization", duration));
 }
@@ -157,7 +161,9 @@ std::string timeSeriesSection(const ReportData& data) {
       "found a pose set better by the factor τ, and paths were planned), crosses mark aborted "
       "plans. Diamonds along the top mark where a camera of any seed came closer than δ to an "
       "object or camera (continuous time): red when the safety layer could have avoided it, "
-      "slate when no admissible velocity could. Hover a mark for its details.</p>\n";
+      "slate when no admissible velocity could. Hover a mark for its details; <i>explore these "
+      "runs</i> opens the median runs in the run explorer, to scrub through them step by "
+      "step.</p>\n";
   for (const auto& scene : data.scenes) {
     if (!scene.methods.empty()) out += sceneFigure(scene, methods, duration);
   }

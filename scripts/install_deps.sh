@@ -21,6 +21,7 @@ packages=(
   libbenchmark-dev                  # Google Benchmark
   clang libclang-rt-14-dev          # fuzzers: clang with libFuzzer (scripts/fuzz.sh)
   chromium                          # headless browser test of the HTML report
+  chromium-driver python3-selenium  # Selenium test of the explorer page (tests/explorer)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the camcov Python module and its tests
   slurmctld slurmd slurm-client munge  # a one-node Slurm cluster for tests/cluster
 )

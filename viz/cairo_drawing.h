@@ -1,7 +1,7 @@
 #pragma once
 // Cairo drawing shared by the frames (frame_renderer) and the sweep debugger
-// (sweep_debug_svg): the palette, text, paths in world coordinates, the scene's pieces drawn
-// the same way in both, and SVG documents rendered in memory. Internal to viz/.
+// (sweep_debug_svg): colours (palette.h), text, paths in world coordinates, the scene's pieces
+// drawn the same way in both, and SVG documents rendered in memory. Internal to viz/.
 #include <cairo.h>
 
 #include <functional>
@@ -12,30 +12,11 @@
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
 #include "visibility/segment.h"
+#include "viz/palette.h"
 #include "viz/world_to_image.h"
 
 namespace camcov::viz {
 
-struct Rgb {
-  double r, g, b;
-};
-
-// Green and red differ in lightness as well as hue, so the two stay apart for readers with
-// red-green colour blindness; the views are amber, which clashes with neither nor with blue.
-inline constexpr Rgb kPage{0.925, 0.929, 0.937};  // outside the boundary, and the panel
-inline constexpr Rgb kFloor{1.0, 1.0, 1.0};       // free space inside the boundary
-inline constexpr Rgb kWall{0.42, 0.45, 0.50};
-inline constexpr Rgb kObstacle{0.22, 0.24, 0.28};
-inline constexpr Rgb kTarget{0.78, 0.79, 0.81};
-inline constexpr Rgb kSeen{0.09, 0.60, 0.26};
-inline constexpr Rgb kUnseen{0.87, 0.18, 0.16};
-inline constexpr Rgb kView{0.96, 0.65, 0.14};
-inline constexpr Rgb kCamera{0.13, 0.15, 0.19};
-inline constexpr Rgb kPlan{0.15, 0.42, 0.82};
-inline constexpr Rgb kText{0.13, 0.15, 0.19};
-inline constexpr Rgb kMutedText{0.38, 0.41, 0.46};
-
-inline constexpr double kViewAlpha = 0.28;
 // Line widths in em, shared by the drawing and its legend sample.
 inline constexpr double kSegmentWidth = 0.3;
 inline constexpr const char* kFont = "sans-serif";

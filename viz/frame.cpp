@@ -1,5 +1,7 @@
 #include "viz/frame.h"
 
+#include <fmt/format.h>
+
 #include "reward/metrics.h"
 
 namespace camcov::viz {
@@ -15,6 +17,16 @@ void addPaths(const std::vector<scene::MovingObject>& objects, std::vector<Objec
 }
 
 }  // namespace
+
+std::string ObjectPath::speedLabel() const {
+  std::string label;
+  if (velocity > 0.0) label = fmt::format("{:g} m/s", velocity);
+  if (angularVelocity != 0.0) {
+    if (!label.empty()) label += ", ";
+    label += fmt::format("{:g} rad/s", angularVelocity);
+  }
+  return label;
+}
 
 FrameBuilder::FrameBuilder(const scene::Scene& scene)
     : kinematics_(scene), sceneName_(scene.name), halfFovs_(scene::halfFovs(scene)) {

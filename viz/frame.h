@@ -35,6 +35,8 @@ struct ObjectPath {
   double angularVelocity = 0.0;           // rad/s, counter-clockwise
 
   bool operator==(const ObjectPath&) const = default;
+  // "1.5 m/s, 0.2 rad/s": what the frames write beside the path and the explorer shows.
+  std::string speedLabel() const;
 };
 
 struct Caption {

@@ -15,16 +15,14 @@ namespace {
 
 using geometry::Vec2;
 
-// Frame-only colours and widths; the shared palette is in cairo_drawing.h.
-constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
+// Frame-only colours and widths; the shared palette is palette.h.
 constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
 constexpr double kPlanWidth = 0.14;
 constexpr double kObjectPathWidth = 0.09;
 
 // The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
-// entry.
-enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
-constexpr PanelRows kPanelRows{5, 7};
+// entry (palette.h).
+constexpr PanelRows kPanelRows{5, std::size(kLegendEntries)};
 
 // Object paths are dashed: they are where things will be, not where they are.
 void setPathDash(cairo_t* cr, double em) {
@@ -68,16 +66,6 @@ PathAnchor anchorOf(const Painter& p, const ObjectPath& path) {
   return {(a + b) * 0.5, length > 0.0 ? (b - a) / length : Vec2{}};
 }
 
-std::string speedLabel(const ObjectPath& path) {
-  std::string label;
-  if (path.velocity > 0.0) label = fmt::format("{:g} m/s", path.velocity);
-  if (path.angularVelocity != 0.0) {
-    if (!label.empty()) label += ", ";
-    label += fmt::format("{:g} rad/s", path.angularVelocity);
-  }
-  return label;
-}
-
 // Drawn over every shape but the cameras and their plans, which matter more: text on a pale
 // box, beside the path.
 void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
@@ -99,7 +87,7 @@ void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
     // Beside the path on its left, or above a turning object's centre.
     const Vec2 side = d != Vec2{} ? Vec2{d.y, -d.x} : Vec2{0.0, -1.0};
     const Vec2 centre = anchor.point + side * (0.95 * em);
-    const std::string label = speedLabel(path);
+    const std::string label = path.speedLabel();
     cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, size);
     cairo_text_extents_t e;
@@ -223,26 +211,6 @@ void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
       cairo_set_dash(cr, nullptr, 0, 0.0);
       break;
   }
-}
-
-constexpr const char* legendText(Legend entry) {
-  switch (entry) {
-    case Legend::Seen:
-      return "target boundary seen";
-    case Legend::Unseen:
-      return "target boundary unseen";
-    case Legend::Target:
-      return "target";
-    case Legend::Obstacle:
-      return "obstacle";
-    case Legend::Camera:
-      return "camera and what it sees";
-    case Legend::Plan:
-      return "planned path and goal";
-    case Legend::ObjectPath:
-      return "object path and speed";
-  }
-  return "";
 }
 
 // Baseline of a panel row: text sits in the lower part of its 1.6 em.

@@ -48,6 +48,10 @@ void remainingPath(std::span<const geometry::Pose> path, geometry::Vec2 position
 RunScene loadRunScene(const records::RunMetadata& metadata, const std::filesystem::path& moved) {
   const std::filesystem::path file =
       moved.empty() ? std::filesystem::path(metadata.sceneFile) : moved;
+  if (moved.empty() && !std::filesystem::exists(file)) {
+    throw InputError(fmt::format("the run's scene file {} is not there; give it with --scene",
+                                 metadata.sceneFile));
+  }
   scene::SceneFile s = scene::loadSceneFile(file);
   return {std::move(s.scene), s.hash != metadata.sceneHash};
 }

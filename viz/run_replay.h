@@ -23,7 +23,7 @@ struct RunScene {
 };
 
 // The scene a run was made with: the file named in its metadata, or `moved` if given (the
-// file has moved since). SceneError if it is missing or invalid.
+// file has moved since). InputError if it is missing (saying to give --scene) or invalid.
 RunScene loadRunScene(const records::RunMetadata& metadata,
                       const std::filesystem::path& moved = {});
 

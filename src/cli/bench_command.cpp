@@ -77,7 +77,7 @@ class ProgressLine final : public batch::BatchObserver {
 };
 
 int bench(const BenchOptions& o) {
-  o.outputs.videoChoice();  // a bad --videos fails now, not after the runs
+  o.outputs.check();  // a bad --videos or --explorer fails now, not after the runs
   batch::BatchRequest request{o.scenes,
                               splitList(o.methods),
                               o.seeds,

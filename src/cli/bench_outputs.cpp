@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 
+#include "cli/bench_explorers.h"
 #include "cli/bench_videos.h"
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
@@ -20,9 +21,21 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
                  "videos/ for the report: none; median (per scene and method, the seed with the "
                  "median average coverage); best (the highest); all")
       ->capture_default_str();
+  cmd.add_option("--explorer", explorer,
+                 "explore/<scene>.html, the run explorer for the report: none; median (each "
+                 "method's median-seed run, side by side); best")
+      ->capture_default_str();
   cmd.add_option("--reference", reference,
                  "the method every other is tested against (default: the baseline, local, if "
                  "run; else the first method)");
+}
+
+records::VideoChoice BenchOutputOptions::explorerChoice() const {
+  const records::VideoChoice choice = records::parseVideoChoice(explorer);
+  if (choice == records::VideoChoice::All) {
+    throw InputError("--explorer " + explorer + ": one of none, median, best");
+  }
+  return choice;
 }
 
 std::string BenchOutputOptions::referenceAmong(const std::vector<std::string>& methods) const {
@@ -95,6 +108,13 @@ int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchMa
     std::cout << fmt::format("wrote {} videos in {}/videos ({} up to date{})\n", videos.written,
                              folder.root().string(), videos.upToDate,
                              videos.failed ? fmt::format(", {} not written", videos.failed) : "");
+  }
+  const auto explored = records::chooseVideoRuns(summary, outcomes, options.explorerChoice());
+  if (!explored.empty()) {
+    const ExplorerBatch pages = writeBenchExplorers(folder, explored);
+    std::cout << fmt::format("wrote {} run explorer pages in {}/explore{}\n", pages.written,
+                             folder.root().string(),
+                             pages.failed ? fmt::format(" ({} not written)", pages.failed) : "");
   }
   if (!options.noReport) {
     reports::writeReport(folder.root(), folder.root() / "report.html");

@@ -1,6 +1,6 @@
 #pragma once
 // What `camcov bench` and `camcov merge` write once the runs exist: the summary (JSON, CSV),
-// the OMPL benchmark logs, the videos, the report, and a table on stdout.
+// the OMPL benchmark logs, the videos, the explorer pages, the report, and a table on stdout.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -15,10 +15,18 @@ namespace camcov::cli {
 struct BenchOutputOptions {
   bool noReport = false;
   std::string videos = "median";
-  std::string reference;  // the method the others are tested against; empty: the baseline
+  std::string explorer = "median";  // explore/<scene>.html: none, median or best
+  std::string reference;            // the method the others are tested against; empty: the baseline
   void addTo(CLI::App& cmd);
-  // InputError for a bad --videos: called before any job runs.
+  // InputError for a bad --videos.
   records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
+  // InputError for a bad --explorer (all seeds of a scene on one page would not be read).
+  records::VideoChoice explorerChoice() const;
+  // Both checks, before any job runs.
+  void check() const {
+    videoChoice();
+    explorerChoice();
+  }
   // The reference among `methods`; InputError if --reference names another.
   std::string referenceAmong(const std::vector<std::string>& methods) const;
 };

@@ -30,5 +30,6 @@ Registration addVideoCommand(CLI::App& app);
 Registration addBenchCommand(CLI::App& app);
 Registration addMergeCommand(CLI::App& app);
 Registration addReportCommand(CLI::App& app);
+Registration addExploreCommand(CLI::App& app);
 
 }  // namespace camcov::cli

@@ -26,10 +26,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("camcov ") + kVersion);
   app.require_subcommand(1);
   const std::vector<cli::Registration> commands{
-      cli::addValidateCommand(app), cli::addStateCommand(app), cli::addParamsCommand(app),
-      cli::addInspectCommand(app),  cli::addRunCommand(app),   cli::addRenderCommand(app),
-      cli::addVideoCommand(app),    cli::addBenchCommand(app), cli::addMergeCommand(app),
-      cli::addReportCommand(app),
+      cli::addValidateCommand(app), cli::addStateCommand(app),   cli::addParamsCommand(app),
+      cli::addInspectCommand(app),  cli::addRunCommand(app),     cli::addRenderCommand(app),
+      cli::addVideoCommand(app),    cli::addBenchCommand(app),   cli::addMergeCommand(app),
+      cli::addReportCommand(app),   cli::addExploreCommand(app),
   };
   cli::setInvocation(argc, argv);
   try {

@@ -18,7 +18,7 @@ struct MergeOptions {
 };
 
 int merge(const MergeOptions& o) {
-  o.outputs.videoChoice();  // a bad --videos fails before anything is copied
+  o.outputs.check();  // a bad --videos or --explorer fails before anything is copied
   const records::BatchFolder target(o.out);
   const records::BatchManifest manifest = batch::mergeFolders(o.inputs, target, invocation());
   return writeBenchOutputs(target, manifest, target.allJobs(), o.outputs,

@@ -31,10 +31,6 @@ int video(const VideoOptions& o) {
         fmt::format("--width {} --height {}: H.264 (yuv420p) needs even sizes", o.width, o.height));
   }
   const records::RunRecord run = records::loadRunFile(o.results);
-  if (o.scene.empty() && !std::filesystem::exists(run.metadata.sceneFile)) {
-    throw InputError(fmt::format("{}: the run's scene file {} is not there; give it with --scene",
-                                 o.results, run.metadata.sceneFile));
-  }
   const viz::RunScene scene = viz::loadRunScene(run.metadata, o.scene);
   if (scene.changed) {
     std::cerr << "warning: the scene file has changed since the run; the video shows the scene "

@@ -130,7 +130,7 @@ void bindRuns(py::module_& m) {
       [](const std::vector<std::string>& scenes, const std::vector<std::string>& methods,
          std::uint64_t seeds, const std::string& out, const py::object& params,
          const py::dict& controllers, unsigned jobs, const std::string& reference,
-         const std::string& videos, bool report, bool force) {
+         const std::string& videos, const std::string& explorer, bool report, bool force) {
         std::vector<control::Method> brought;
         for (const auto& [name, factory] : controllers)
           brought.push_back(
@@ -143,8 +143,9 @@ void bindRuns(py::module_& m) {
         cli::BenchOutputOptions outputs;
         outputs.noReport = !report;
         outputs.videos = videos;
+        outputs.explorer = explorer;
         outputs.reference = reference;
-        outputs.videoChoice();
+        outputs.check();
         outputs.referenceAmong(names);
         batch::BatchRequest request{scenes, names,      seeds,  parametersFrom(params),
                                     {},     {"python"}, brought};
@@ -164,7 +165,8 @@ void bindRuns(py::module_& m) {
       py::arg("scenes"), py::arg("methods") = std::vector<std::string>{}, py::arg("seeds") = 5,
       py::arg("out") = "bench-results", py::arg("params") = py::none(),
       py::arg("controllers") = py::dict(), py::arg("jobs") = 0, py::arg("reference") = "",
-      py::arg("videos") = "none", py::arg("report") = true, py::arg("force") = false,
+      py::arg("videos") = "none", py::arg("explorer") = "median", py::arg("report") = true,
+      py::arg("force") = false,
       "`camcov bench` with Python controllers beside the table's methods: controllers maps a "
       "method name to factory(scene, params, seed) -> controller; jobs = 0 is every core. "
       "Returns the summary.");

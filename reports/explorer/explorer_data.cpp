@@ -1,0 +1,297 @@
+#include "reports/explorer/explorer_data.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "reports/explorer/packed_stream.h"
+#include "reports/method_style.h"
+#include "util/input_error.h"
+#include "visibility/unseen_reason.h"
+#include "viz/palette.h"
+#include "viz/run_replay.h"
+
+namespace camcov::reports::explorer {
+namespace {
+
+using geometry::Vec2;
+
+std::int64_t quantize(double value, double unitsPerMetre) {
+  return std::llround(value * unitsPerMetre);
+}
+
+// Writes a ring (or path) of points as differences from the previous one, the first from
+// `origin` (all in quantized units).
+void putPoints(PackedStream& out, std::span<const Vec2> points, double units, Vec2 origin) {
+  out.putUnsigned(points.size());
+  std::int64_t x = quantize(origin.x, units), y = quantize(origin.y, units);
+  for (const Vec2 p : points) {
+    const std::int64_t qx = quantize(p.x, units), qy = quantize(p.y, units);
+    out.putSigned(qx - x);
+    out.putSigned(qy - y);
+    x = qx;
+    y = qy;
+  }
+}
+
+// One run's steps, packed. Keeps what the differences are taken from.
+class StepPacker {
+ public:
+  StepPacker(const scene::Scene& scene, std::size_t objects)
+      : halfFovs_(scene::halfFovs(scene)),
+        objects_(objects),
+        poses_(scene.cameras.size(), {0, 0, 0}),
+        goals_(scene.cameras.size()) {}
+
+  void put(const viz::Frame& frame, PackedStream& out) {
+    putObjects(frame.world, out);
+    for (std::size_t j = 0; j < frame.cameras.size(); ++j)
+      putCamera(frame, j, out);
+    putSegments(frame, out);
+  }
+
+ private:
+  void putObjects(const kinematics::World& world, PackedStream& out) {
+    std::size_t k = 0;
+    for (const auto* rings : {&world.targets, &world.obstacles}) {
+      for (const geometry::Ring& ring : *rings) {
+        std::vector<std::int64_t>& previous = objects_[k++];
+        out.putUnsigned(ring.size());
+        const bool same = previous.size() == 2 * ring.size();
+        std::int64_t x = 0, y = 0;
+        std::vector<std::int64_t> now;
+        now.reserve(2 * ring.size());
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const std::int64_t qx = quantize(ring[i].x, kMillimetres);
+          const std::int64_t qy = quantize(ring[i].y, kMillimetres);
+          out.putSigned(qx - (same ? previous[2 * i] : x));
+          out.putSigned(qy - (same ? previous[2 * i + 1] : y));
+          x = qx;
+          y = qy;
+          now.push_back(qx);
+          now.push_back(qy);
+        }
+        previous = std::move(now);
+      }
+    }
+  }
+
+  void putCamera(const viz::Frame& frame, std::size_t j, PackedStream& out) {
+    const viz::CameraView& c = frame.cameras[j];
+    const std::array<std::int64_t, 3> pose{quantize(c.pose.x, kMillimetres),
+                                           quantize(c.pose.y, kMillimetres),
+                                           quantize(c.pose.yaw, kYawUnits)};
+    for (std::size_t k = 0; k < 3; ++k)
+      out.putSigned(pose[k] - poses_[j][k]);
+    poses_[j] = pose;
+
+    if (!c.goal) {
+      out.putUnsigned(0);
+      goals_[j].reset();
+    } else {
+      const std::array<std::int64_t, 3> goal{quantize(c.goal->x, kMillimetres),
+                                             quantize(c.goal->y, kMillimetres),
+                                             quantize(c.goal->yaw, kYawUnits)};
+      if (goals_[j] == goal) {
+        out.putUnsigned(1);
+      } else {
+        out.putUnsigned(2);
+        for (const std::int64_t v : goal)
+          out.putSigned(v);
+        goals_[j] = goal;
+      }
+    }
+    putPoints(out, c.plan, kMillimetres, c.pose.position());
+    // From the origin: the page knows the camera only to the millimetre, which may round to
+    // another centimetre than the camera itself.
+    putPoints(out, c.view, kCentimetres, {0.0, 0.0});
+
+    // The nearest object and camera, for the camera's details.
+    const Vec2 p = c.pose.position();
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t which = 0, k = 0;
+    for (const auto* rings : {&frame.world.targets, &frame.world.obstacles}) {
+      for (const geometry::Ring& ring : *rings) {
+        ++k;
+        const double d = geometry::distanceToPolygon(ring, p);
+        if (d < nearest) {
+          nearest = d;
+          which = k;
+        }
+      }
+    }
+    out.putUnsigned(which == 0 ? 0 : static_cast<std::uint64_t>(quantize(nearest, kMillimetres)));
+    out.putUnsigned(which);
+    double nearestCamera = std::numeric_limits<double>::infinity();
+    std::size_t other = 0;
+    for (std::size_t i = 0; i < frame.cameras.size(); ++i) {
+      const double d = geometry::distance(p, frame.cameras[i].pose.position());
+      if (i != j && d < nearestCamera) {
+        nearestCamera = d;
+        other = i + 1;
+      }
+    }
+    out.putUnsigned(other);
+    out.putUnsigned(other == 0 ? 0
+                               : static_cast<std::uint64_t>(quantize(nearestCamera, kMillimetres)));
+  }
+
+  void putSegments(const viz::Frame& frame, PackedStream& out) {
+    out.putUnsigned(frame.segments.size());
+    for (const visibility::Segment& s : frame.segments) {
+      const geometry::Ring& ring = frame.world.targets[s.target];
+      const Vec2 a = ring[s.edge], b = ring[(s.edge + 1) % ring.size()];
+      const double edge = geometry::distance(a, b);
+      const auto along = [&](Vec2 point) {
+        return static_cast<std::uint64_t>(
+            std::llround(std::clamp(geometry::distance(a, point) / edge, 0.0, 1.0) * kAlongEdge));
+      };
+      out.putUnsigned(s.target);
+      out.putUnsigned(s.edge);
+      out.putUnsigned(along(s.a));
+      out.putUnsigned(along(s.b));
+      out.putUnsigned(s.visibleBy);
+      for (std::size_t j = 0; j < frame.cameras.size(); ++j) {
+        if ((s.visibleBy >> j & 1u) != 0) continue;
+        const visibility::UnseenReason r =
+            visibility::whyUnseen(frame.world, frame.cameras[j].pose, halfFovs_[j], s);
+        out.putUnsigned(static_cast<std::uint64_t>(r.kind) +
+                        8 * (static_cast<std::uint64_t>(r.blocker.kind) +
+                             4 * static_cast<std::uint64_t>(r.blocker.index)));
+      }
+    }
+  }
+
+  std::vector<double> halfFovs_;
+  std::vector<std::vector<std::int64_t>> objects_;  // quantized vertices one step before
+  std::vector<std::array<std::int64_t, 3>> poses_;
+  std::vector<std::optional<std::array<std::int64_t, 3>>> goals_;
+};
+
+nlohmann::json paletteJson() {
+  nlohmann::json legend = nlohmann::json::array();
+  for (const viz::Legend entry : viz::kLegendEntries)
+    legend.push_back(viz::legendText(entry));
+  return {{"page", viz::cssColour(viz::kPage)},
+          {"floor", viz::cssColour(viz::kFloor)},
+          {"wall", viz::cssColour(viz::kWall)},
+          {"obstacle", viz::cssColour(viz::kObstacle)},
+          {"target", viz::cssColour(viz::kTarget)},
+          {"seenBy",
+           {viz::cssColour(viz::seenByColour(0)), viz::cssColour(viz::seenByColour(1)),
+            viz::cssColour(viz::seenByColour(2)), viz::cssColour(viz::seenByColour(3))}},
+          {"view", viz::cssColour(viz::kView)},
+          {"viewAlpha", viz::kViewAlpha},
+          {"camera", viz::cssColour(viz::kCamera)},
+          {"plan", viz::cssColour(viz::kPlan)},
+          {"objectPath", viz::cssColour(viz::kObjectPath)},
+          {"text", viz::cssColour(viz::kText)},
+          {"mutedText", viz::cssColour(viz::kMutedText)},
+          {"legend", legend}};
+}
+
+nlohmann::json ringJson(std::span<const Vec2> ring) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Vec2 p : ring)
+    out.push_back({static_cast<double>(quantize(p.x, kMillimetres)) / kMillimetres,
+                   static_cast<double>(quantize(p.y, kMillimetres)) / kMillimetres});
+  return out;
+}
+
+// The loops moving objects travel, as the frames draw them (dashed), with their speeds.
+nlohmann::json objectPathsJson(const scene::Scene& scene) {
+  viz::FrameBuilder builder(scene);
+  viz::Frame frame;
+  std::vector<geometry::Pose> initial;
+  for (const auto& c : scene.cameras)
+    initial.push_back(c.initial);
+  builder.build(0.0, initial, frame);
+  nlohmann::json out = nlohmann::json::array();
+  for (const viz::ObjectPath& path : frame.paths) {
+    if (path.waypoints.size() < 2) continue;
+    out.push_back({{"loop", ringJson(path.waypoints)}, {"speed", path.speedLabel()}});
+  }
+  return out;
+}
+
+nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene) {
+  viz::RunReplay replay(run, scene);
+  nlohmann::json series = {{"time", nlohmann::json::array()},
+                           {"coverage", nlohmann::json::array()},
+                           {"utilization", nlohmann::json::array()},
+                           {"reward", nlohmann::json::array()}};
+  for (const auto& step : run.steps) {
+    series["time"].push_back(step.time);
+    series["coverage"].push_back(step.terms.coverage);
+    series["utilization"].push_back(step.terms.utilization);
+    series["reward"].push_back(step.terms.reward);
+  }
+  nlohmann::json cameras = nlohmann::json::array();
+  for (const auto& c : scene.cameras) {
+    cameras.push_back({{"maxVelocity", c.maxVelocity},
+                       {"maxAngularVelocity", c.maxAngularVelocity},
+                       {"halfFov", c.halfFov}});
+  }
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : run.events) {
+    events.push_back({{"time", e.time},
+                      {"kind", e.kind},
+                      {"camera", e.camera},
+                      {"detail", e.detail},
+                      {"reason", e.reason}});
+  }
+  PackedStream packed;
+  StepPacker packer(scene, scene.targets.size() + scene.obstacles.size());
+  viz::Frame frame;
+  for (std::size_t k = 0; k < run.steps.size(); ++k) {
+    replay.build(k, frame);
+    packer.put(frame, packed);
+  }
+  const MethodStyle style = methodStyle(run.metadata.method);
+  return {{"method", run.metadata.method},
+          {"label", fmt::format("{} · seed {}", style.label, run.metadata.seed)},
+          {"color", style.color},
+          {"seed", run.metadata.seed},
+          {"dt", run.metadata.parameters.sim.dt},
+          {"series", series},
+          {"cameras", cameras},
+          {"targets", scene.targets.size()},
+          {"obstacles", scene.obstacles.size()},
+          {"events", events},
+          {"steps", packed.base64()}};
+}
+
+}  // namespace
+
+nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene) {
+  nlohmann::json out = {{"format", kExplorerFormat},
+                        {"scene",
+                         {{"name", scene.name},
+                          {"boundary", ringJson(scene.boundary)},
+                          {"paths", objectPathsJson(scene)}}},
+                        {"palette", paletteJson()},
+                        {"units",
+                         {{"millimetres", kMillimetres},
+                          {"centimetres", kCentimetres},
+                          {"yaw", kYawUnits},
+                          {"alongEdge", kAlongEdge}}},
+                        {"runs", nlohmann::json::array()}};
+  for (const records::RunRecord& run : runs) {
+    const records::RunMetadata& first = runs.front().metadata;
+    if (run.metadata.scene != first.scene || run.metadata.sceneHash != first.sceneHash) {
+      throw InputError(fmt::format(
+          "the runs are not of one scene: {} (method {}, seed {}) and {} (method {}, seed {}); "
+          "the explorer shows runs of one scene side by side",
+          first.scene, first.method, first.seed, run.metadata.scene, run.metadata.method,
+          run.metadata.seed));
+    }
+    out["runs"].push_back(runJson(run, scene));
+  }
+  return out;
+}
+
+}  // namespace camcov::reports::explorer

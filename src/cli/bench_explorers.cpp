@@ -1,0 +1,34 @@
+#include "cli/bench_explorers.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+
+#include "records/run_files.h"
+#include "reports/explorer/explorer_page.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+
+ExplorerBatch writeBenchExplorers(const records::BatchFolder& folder,
+                                  std::span<const records::VideoRun> runs) {
+  std::map<std::string, std::vector<std::filesystem::path>> byScene;  // in the runs' order
+  for (const auto& run : runs)
+    byScene[run.scene].push_back(folder.runFile(records::runStem(run.scene, run.method, run.seed)));
+  ExplorerBatch batch;
+  for (const auto& [scene, files] : byScene) {
+    const std::filesystem::path page = folder.root() / "explore" / (scene + ".html");
+    try {
+      std::filesystem::create_directories(page.parent_path());
+      reports::explorer::writeExplorer(files, page);
+      ++batch.written;
+    } catch (const InputError& e) {
+      std::cerr << fmt::format("warning: no explorer page for {}: {}\n", scene, e.what());
+      ++batch.failed;
+    }
+  }
+  return batch;
+}
+
+}  // namespace camcov::cli

@@ -1,0 +1,50 @@
+// `camcov explore RUN.json... -o run.html [--scene FILE]`: the run explorer (issue 21), one
+// offline HTML page replaying runs of one scene side by side (reports/explorer).
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/command.h"
+#include "reports/explorer/explorer_page.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+namespace {
+
+struct ExploreOptions {
+  std::vector<std::string> runs;
+  std::string out;
+  std::string scene;  // if the runs' scene file has moved
+};
+
+int explore(const ExploreOptions& o) {
+  if (std::filesystem::path(o.out).extension() != ".html") {
+    throw InputError(o.out + ": the explorer is an HTML page; name it *.html");
+  }
+  reports::explorer::writeExplorer({o.runs.begin(), o.runs.end()}, o.out, o.scene);
+  std::cout << fmt::format("wrote {}\n", o.out);
+  return 0;
+}
+
+}  // namespace
+
+Registration addExploreCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "explore",
+      "Write the run explorer: one offline HTML page that replays runs of one scene side by "
+      "side, with a timeline, each edge's visibleBy and why other cameras miss it");
+  auto o = std::make_shared<ExploreOptions>();
+  cmd->add_option("runs", o->runs,
+                  "results files of runs of one scene (JSON, from camcov run "
+                  "or a bench folder's runs/)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out,-o", o->out, "the page (.html)")->required();
+  cmd->add_option("--scene", o->scene,
+                  "scene file, if it is no longer where the runs' metadata says");
+  return {cmd, [o] { return explore(*o); }};
+}
+
+}  // namespace camcov::cli

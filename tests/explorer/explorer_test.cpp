@@ -1,0 +1,175 @@
+// The run explorer's page from the command line: `camcov explore` on recorded runs writes one
+// offline page whose embedded data is what the format says, is deterministic, fits the size
+// the issue asks for, and refuses bad requests with exit 2. What the page shows in a browser
+// is tests/explorer/test_explorer_browser.py.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+#include "reports/explorer/packed_stream.h"
+#include "support/run_camcov.h"
+#include "support/scratch.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(PackedStream, VarintsZigzagAndBase64AsTheStandardsGiveThem) {
+  reports::explorer::PackedStream s;
+  s.putUnsigned(300);  // LEB128: AC 02
+  s.putSigned(-1);     // zigzag 1
+  s.putSigned(1);      // zigzag 2
+  s.putSigned(-64);    // zigzag 127
+  EXPECT_EQ(s.bytes(), (std::vector<std::uint8_t>{0xAC, 0x02, 0x01, 0x02, 0x7F}));
+  // RFC 4648: "Man" → "TWFu", "Ma" → "TWE=", "M" → "TQ==".
+  for (const auto& [text, expected] :
+       {std::pair{"Man", "TWFu"}, std::pair{"Ma", "TWE="}, std::pair{"M", "TQ=="}}) {
+    reports::explorer::PackedStream t;
+    for (const char* c = text; *c != '\0'; ++c)
+      t.putUnsigned(static_cast<unsigned char>(*c));
+    EXPECT_EQ(t.base64(), expected) << text;
+  }
+}
+
+// The JSON the page embeds.
+nlohmann::json embeddedData(const fs::path& page) {
+  const std::string html = readFile(page);
+  const std::string open = "<script type=\"application/json\" id=\"camcov-data\">";
+  const auto start = html.find(open) + open.size();
+  return nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
+}
+
+class Explore : public ::testing::Test {
+ protected:
+  fs::path run(const std::string& scene, const std::string& method, const std::string& extra) {
+    const auto r = runCamcov("run " + scene + " --method " + method + " --seed 1 --out " +
+                             dir_.path().string() + " " + extra);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const fs::path file = dir_ / (fs::path(scene).stem().string() + "-" + method + "-seed1.json");
+    EXPECT_TRUE(fs::exists(file)) << r.out;
+    return file;
+  }
+  ScratchDir dir_;
+};
+
+TEST_F(Explore, WritesOneOfflinePageWithEveryRunAndStep) {
+  const std::string scene = (testDataDir() / "scenes" / "tiny_dynamic.json").string();
+  const fs::path paper = run(scene, "paper", "--set sim.duration=2");
+  const fs::path local = run(scene, "local", "--set sim.duration=2");
+  const fs::path page = dir_ / "page.html";
+  const auto r =
+      runCamcov("explore " + paper.string() + " " + local.string() + " -o " + page.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string html = readFile(page);
+  // The SVG namespace is a name, not an address: the script creates elements in it.
+  std::string fetchable = html;
+  const std::string svgNamespace = "http://www.w3.org/2000/svg";
+  for (auto at = fetchable.find(svgNamespace); at != std::string::npos;
+       at = fetchable.find(svgNamespace))
+    fetchable.erase(at, svgNamespace.size());
+  for (const char* external : {"http://", "https://", "<link", "src=", "@import", "url("})
+    EXPECT_EQ(fetchable.find(external), std::string::npos) << external;
+  EXPECT_NE(html.find("Content-Security-Policy\" content=\"default-src 'none'"), std::string::npos);
+
+  const nlohmann::json data = embeddedData(page);
+  EXPECT_EQ(data["format"], "camcov-explorer/1");
+  ASSERT_EQ(data["runs"].size(), 2u);
+  EXPECT_EQ(data["runs"][0]["method"], "paper");
+  EXPECT_EQ(data["runs"][1]["method"], "local");
+  const nlohmann::json recorded = nlohmann::json::parse(readFile(paper));
+  EXPECT_EQ(data["runs"][0]["series"]["coverage"], recorded["series"]["coverage"]);
+  EXPECT_EQ(data["runs"][0]["series"]["time"], recorded["series"]["time"]);
+
+  // Same runs, same bytes.
+  const auto again = runCamcov("explore " + paper.string() + " " + local.string() + " -o " +
+                               (dir_ / "again.html").string());
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_EQ(readFile(dir_ / "again.html"), html);
+}
+
+TEST_F(Explore, TwoMethodsOfDynamic9ForThirtySecondsFitWellUnderTwoMegabytes) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  const std::string scene = (publishedScenesDir() / "dynamic9.json").string();
+  const fs::path paper = run(scene, "paper", "");
+  const fs::path local = run(scene, "local", "");
+  const fs::path page = dir_ / "d9.html";
+  ASSERT_EQ(runCamcov("explore " + paper.string() + " " + local.string() + " -o " + page.string())
+                .exitCode,
+            0);
+  EXPECT_EQ(embeddedData(page)["runs"][0]["series"]["time"].size(), 301u);
+  EXPECT_LT(fs::file_size(page), 1'000'000u) << "issue 21: well under 2 MB";
+}
+
+TEST_F(Explore, BadRequestsExitWithTwoAndWriteNothing) {
+  const std::string tiny = (testDataDir() / "scenes" / "tiny_dynamic.json").string();
+  const std::string other = (testDataDir() / "scenes" / "tiny_static.json").string();
+  const fs::path a = run(tiny, "paper", "--set sim.duration=1");
+  const fs::path b = run(other, "paper", "--set sim.duration=1");
+  // A run whose scene file has moved.
+  fs::copy_file(tiny, dir_ / "moved.json");
+  const fs::path c = run((dir_ / "moved.json").string(), "local", "--set sim.duration=1");
+  fs::remove(dir_ / "moved.json");
+  struct Case {
+    std::string arguments, message;
+  };
+  const fs::path out = dir_ / "out.html";
+  for (const Case& k : {
+           Case{a.string() + " " + b.string() + " -o " + out.string(), "not of one scene"},
+           Case{c.string() + " -o " + out.string(), "give it with --scene"},
+           Case{a.string() + " -o " + (dir_ / "out.svg").string(), "name it *.html"},
+           Case{(dir_ / "nope.json").string() + " -o " + out.string(), "nope.json"},
+       }) {
+    const auto r = runCamcov("explore " + k.arguments);
+    EXPECT_EQ(r.exitCode, 2) << k.arguments;
+    EXPECT_NE(r.err.find(k.message), std::string::npos) << k.arguments << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const auto moved =
+      runCamcov("explore " + c.string() + " --scene " + tiny + " -o " + out.string());
+  EXPECT_EQ(moved.exitCode, 0) << moved.err;
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST(BenchExplorers, OnePagePerSceneWithEachMethodsMedianRunLinkedFromTheReport) {
+  const ScratchDir dir;
+  const auto bench = [&](const std::string& out, const std::string& extra) {
+    return runCamcov("bench --scenes " + (testDataDir() / "scenes").string() +
+                     " --seeds 3 --duration 2 --videos none --out " + (dir / out).string() + " " +
+                     extra);
+  };
+  ASSERT_EQ(bench("default", "").exitCode, 0);
+  const nlohmann::json summary = nlohmann::json::parse(readFile(dir / "default" / "summary.json"));
+  for (const std::string scene : {"tiny_dynamic", "tiny_static"}) {
+    const fs::path page = dir / "default" / "explore" / (scene + ".html");
+    ASSERT_TRUE(fs::exists(page)) << scene;
+    const nlohmann::json data = embeddedData(page);
+    std::vector<std::pair<std::string, std::uint64_t>> shown, median;
+    for (const auto& run : data["runs"])
+      shown.emplace_back(run["method"], run["seed"]);
+    for (const auto& m : summary["methods"]) {
+      if (m["scene"] == scene) median.emplace_back(m["method"], m["medianSeed"]);
+    }
+    std::sort(shown.begin(), shown.end());
+    std::sort(median.begin(), median.end());
+    EXPECT_EQ(shown, median) << scene;
+    EXPECT_NE(readFile(dir / "default" / "report.html")
+                  .find("class=\"explore\" href=\"explore/" + scene + ".html\""),
+              std::string::npos)
+        << scene;
+  }
+  ASSERT_EQ(bench("none", "--explorer none").exitCode, 0);
+  EXPECT_FALSE(fs::exists(dir / "none" / "explore"));
+  EXPECT_EQ(readFile(dir / "none" / "report.html").find("class=\"explore\""), std::string::npos);
+  const auto all = bench("all", "--explorer all");
+  EXPECT_EQ(all.exitCode, 2);
+  EXPECT_NE(all.err.find("--explorer all: one of none, median, best"), std::string::npos)
+      << all.err;
+  EXPECT_FALSE(fs::exists(dir / "all" / "runs")) << "refused before any job ran";
+}
+
+}  // namespace
+}  // namespace camcov::testing
