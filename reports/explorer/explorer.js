@@ -53,28 +53,35 @@
 
   function decodeRun(run) {
     const r = new PackedReader(run.steps);
-    const M = run.cameras.length, objects = run.targets + run.obstacles;
+    const M = run.cameras.length, objects = run.targets + run.obstacles;  // in the scene
     const previous = new Array(objects).fill(null);
     const pose = Array.from({length: M}, () => [0, 0, 0]);
     const goal = new Array(M).fill(null);
     const steps = [];
     for (let k = 0; k < run.series.time.length; ++k) {
-      const rings = [];
-      for (let o = 0; o < objects; ++o) {
-        const n = r.u(), before = previous[o], same = before && before.length === 2 * n;
-        const q = new Array(2 * n);
-        let x = 0, y = 0;
-        for (let i = 0; i < n; ++i) {
-          x = (same ? before[2 * i] : x) + r.s();
-          y = (same ? before[2 * i + 1] : y) + r.s();
-          q[2 * i] = x;
-          q[2 * i + 1] = y;
+      // Targets, then obstacles: those present, each with its scene index.
+      const present = [];
+      for (let group = 0; group < 2; ++group) {
+        const count = r.u(), list = [];
+        for (let o = 0; o < count; ++o) {
+          const id = r.u(), key = group * run.targets + id;
+          const n = r.u(), before = previous[key], same = before && before.length === 2 * n;
+          const q = new Array(2 * n);
+          let x = 0, y = 0;
+          for (let i = 0; i < n; ++i) {
+            x = (same ? before[2 * i] : x) + r.s();
+            y = (same ? before[2 * i + 1] : y) + r.s();
+            q[2 * i] = x;
+            q[2 * i + 1] = y;
+          }
+          previous[key] = q;
+          const ring = [];
+          for (let i = 0; i < n; ++i) ring.push([q[2 * i] / U.millimetres, q[2 * i + 1] / U.millimetres]);
+          list.push({id, ring});
         }
-        previous[o] = q;
-        const ring = [];
-        for (let i = 0; i < n; ++i) ring.push([q[2 * i] / U.millimetres, q[2 * i + 1] / U.millimetres]);
-        rings.push(ring);
+        present.push(list);
       }
+      const targetRing = new Map(present[0].map((t) => [t.id, t.ring]));
       const cameras = [];
       for (let j = 0; j < M; ++j) {
         for (let c = 0; c < 3; ++c) pose[j][c] += r.s();
@@ -98,12 +105,11 @@
         const target = r.u(), edge = r.u(), ta = r.u() / U.alongEdge, tb = r.u() / U.alongEdge;
         const visibleBy = r.bits(), reasons = new Array(M).fill(null);
         for (let j = 0; j < M; ++j) if (!visibleBy.includes(j)) reasons[j] = r.u();
-        const ring = rings[target], a = ring[edge], b = ring[(edge + 1) % ring.length];
+        const ring = targetRing.get(target), a = ring[edge], b = ring[(edge + 1) % ring.length];
         const at = (t) => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
         segments.push({target, edge, ta, tb, a: at(ta), b: at(tb), visibleBy, reasons});
       }
-      steps.push({targets: rings.slice(0, run.targets), obstacles: rings.slice(run.targets),
-                  cameras, segments});
+      steps.push({targets: present[0], obstacles: present[1], cameras, segments});
     }
     return steps;
   }
@@ -128,8 +134,8 @@
   const pts = (ring) => ring.map(([x, y]) => `${x.toFixed(3)},${(-y).toFixed(3)}`).join(" ");
   const deg = (rad) => (rad * 180 / Math.PI).toFixed(1);
   const length = (s) => Math.hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
-  const objectName = (code, run) => code === 0 ? "none"
-      : code <= run.targets ? `target ${code - 1}` : `obstacle ${code - 1 - run.targets}`;
+  const objectName = (code) => code === 0 ? "none"
+      : code % 2 === 1 ? `target ${(code - 1) / 2}` : `obstacle ${(code - 2) / 2}`;
   const blockerName = (kind, index) =>
       kind === 1 ? "the boundary" : kind === 2 ? `target ${index}` : `obstacle ${index}`;
   function reasonText(code) {
@@ -209,8 +215,14 @@
                        class: "view"}, svg);
       }
     }
-    for (const ring of step.obstacles) el("polygon", {points: pts(ring), fill: P.obstacle}, svg);
-    for (const ring of step.targets) el("polygon", {points: pts(ring), fill: P.target}, svg);
+    for (const o of step.obstacles) {
+      el("polygon", {points: pts(o.ring), fill: data.scene.colors.obstacles[o.id] || P.obstacle,
+                     "data-obstacle": String(o.id)}, svg);
+    }
+    for (const t of step.targets) {
+      el("polygon", {points: pts(t.ring), fill: data.scene.colors.targets[t.id] || P.target,
+                     "data-target": String(t.id)}, svg);
+    }
     step.segments.forEach((s, i) => {
       const line = el("line", {
         class: "segment", "data-segment": String(i), "data-target": String(s.target),
@@ -280,7 +292,7 @@
       }
       field(info, "sees", "sees", `${sees.toFixed(3)} m of ${total.toFixed(3)} m of target boundary`);
       field(info, "nearest-object", "nearest object", c.object === 0 ? "none"
-            : `${objectName(c.object, run)} at ${c.objectDistance.toFixed(3)} m`);
+            : `${objectName(c.object)} at ${c.objectDistance.toFixed(3)} m`);
       field(info, "nearest-camera", "nearest camera", c.other === 0 ? "none"
             : `camera ${c.other - 1} at ${c.cameraDistance.toFixed(3)} m`);
       field(info, "goal", "goal", c.goal

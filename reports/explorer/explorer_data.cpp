@@ -41,9 +41,10 @@ void putPoints(PackedStream& out, std::span<const Vec2> points, double units, Ve
 // One run's steps, packed. Keeps what the differences are taken from.
 class StepPacker {
  public:
-  StepPacker(const scene::Scene& scene, std::size_t objects)
+  explicit StepPacker(const scene::Scene& scene)
       : halfFovs_(scene::halfFovs(scene)),
-        objects_(objects),
+        targetCount_(scene.targets.size()),
+        objects_(scene.targets.size() + scene.obstacles.size()),
         poses_(scene.cameras.size(), {0, 0, 0}),
         goals_(scene.cameras.size()) {}
 
@@ -55,11 +56,16 @@ class StepPacker {
   }
 
  private:
+  // Targets then obstacles: how many are present, then each one's scene index and vertices.
   void putObjects(const kinematics::World& world, PackedStream& out) {
-    std::size_t k = 0;
-    for (const auto* rings : {&world.targets, &world.obstacles}) {
-      for (const geometry::Ring& ring : *rings) {
-        std::vector<std::int64_t>& previous = objects_[k++];
+    const std::size_t targets = targetCount_;
+    const auto put = [&](const std::vector<geometry::Ring>& rings, auto idOf, std::size_t offset) {
+      out.putUnsigned(rings.size());
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        const geometry::Ring& ring = rings[r];
+        const std::uint32_t id = idOf(world, r);
+        out.putUnsigned(id);
+        std::vector<std::int64_t>& previous = objects_[offset + id];
         out.putUnsigned(ring.size());
         const bool same = previous.size() == 2 * ring.size();
         std::int64_t x = 0, y = 0;
@@ -77,7 +83,9 @@ class StepPacker {
         }
         previous = std::move(now);
       }
-    }
+    };
+    put(world.targets, kinematics::targetId, 0);
+    put(world.obstacles, kinematics::obstacleId, targets);
   }
 
   void putCamera(const viz::Frame& frame, std::size_t j, PackedStream& out) {
@@ -113,15 +121,17 @@ class StepPacker {
     // The nearest object and camera, for the camera's details.
     const Vec2 p = c.pose.position();
     double nearest = std::numeric_limits<double>::infinity();
-    std::size_t which = 0, k = 0;
-    for (const auto* rings : {&frame.world.targets, &frame.world.obstacles}) {
-      for (const geometry::Ring& ring : *rings) {
-        ++k;
-        const double d = geometry::distanceToPolygon(ring, p);
-        if (d < nearest) {
-          nearest = d;
-          which = k;
-        }
+    std::uint64_t which = 0;  // 0 none, 1 + 2·id a target, 2 + 2·id an obstacle
+    for (std::size_t r = 0; r < frame.world.targets.size(); ++r) {
+      if (const double d = geometry::distanceToPolygon(frame.world.targets[r], p); d < nearest) {
+        nearest = d;
+        which = 1 + 2 * std::uint64_t{kinematics::targetId(frame.world, r)};
+      }
+    }
+    for (std::size_t r = 0; r < frame.world.obstacles.size(); ++r) {
+      if (const double d = geometry::distanceToPolygon(frame.world.obstacles[r], p); d < nearest) {
+        nearest = d;
+        which = 2 + 2 * std::uint64_t{kinematics::obstacleId(frame.world, r)};
       }
     }
     out.putUnsigned(which == 0 ? 0 : static_cast<std::uint64_t>(quantize(nearest, kMillimetres)));
@@ -150,15 +160,19 @@ class StepPacker {
         return static_cast<std::uint64_t>(
             std::llround(std::clamp(geometry::distance(a, point) / edge, 0.0, 1.0) * kAlongEdge));
       };
-      out.putUnsigned(s.target);
+      out.putUnsigned(kinematics::targetId(frame.world, s.target));
       out.putUnsigned(s.edge);
       out.putUnsigned(along(s.a));
       out.putUnsigned(along(s.b));
       out.putUnsigned(s.visibleBy);
       for (std::size_t j = 0; j < frame.cameras.size(); ++j) {
         if ((s.visibleBy >> j & 1u) != 0) continue;
-        const visibility::UnseenReason r =
+        visibility::UnseenReason r =
             visibility::whyUnseen(frame.world, frame.cameras[j].pose, halfFovs_[j], s);
+        if (r.blocker.kind == visibility::ObjectRef::Kind::Target)
+          r.blocker.index = kinematics::targetId(frame.world, r.blocker.index);
+        if (r.blocker.kind == visibility::ObjectRef::Kind::Obstacle)
+          r.blocker.index = kinematics::obstacleId(frame.world, r.blocker.index);
         out.putUnsigned(static_cast<std::uint64_t>(r.kind) +
                         8 * (static_cast<std::uint64_t>(r.blocker.kind) +
                              4 * static_cast<std::uint64_t>(r.blocker.index)));
@@ -167,7 +181,8 @@ class StepPacker {
   }
 
   std::vector<double> halfFovs_;
-  std::vector<std::vector<std::int64_t>> objects_;  // quantized vertices one step before
+  std::size_t targetCount_ = 0;
+  std::vector<std::vector<std::int64_t>> objects_;  // by scene index: vertices the last time
   std::vector<std::array<std::int64_t, 3>> poses_;
   std::vector<std::optional<std::array<std::int64_t, 3>>> goals_;
 };
@@ -199,6 +214,14 @@ nlohmann::json ringJson(std::span<const Vec2> ring) {
   for (const Vec2 p : ring)
     out.push_back({static_cast<double>(quantize(p.x, kMillimetres)) / kMillimetres,
                    static_cast<double>(quantize(p.y, kMillimetres)) / kMillimetres});
+  return out;
+}
+
+// Each object's own colour (a team's), "" for the palette's.
+nlohmann::json colours(const std::vector<scene::MovingObject>& objects) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& o : objects)
+    out.push_back(o.color);
   return out;
 }
 
@@ -245,7 +268,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
                       {"reason", e.reason}});
   }
   PackedStream packed;
-  StepPacker packer(scene, scene.targets.size() + scene.obstacles.size());
+  StepPacker packer(scene);
   viz::Frame frame;
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
     replay.build(k, frame);
@@ -268,18 +291,21 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
 }  // namespace
 
 nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene) {
-  nlohmann::json out = {{"format", kExplorerFormat},
-                        {"scene",
-                         {{"name", scene.name},
-                          {"boundary", ringJson(scene.boundary)},
-                          {"paths", objectPathsJson(scene)}}},
-                        {"palette", paletteJson()},
-                        {"units",
-                         {{"millimetres", kMillimetres},
-                          {"centimetres", kCentimetres},
-                          {"yaw", kYawUnits},
-                          {"alongEdge", kAlongEdge}}},
-                        {"runs", nlohmann::json::array()}};
+  nlohmann::json out = {
+      {"format", kExplorerFormat},
+      {"scene",
+       {{"name", scene.name},
+        {"boundary", ringJson(scene.boundary)},
+        {"paths", objectPathsJson(scene)},
+        {"colors",
+         {{"targets", colours(scene.targets)}, {"obstacles", colours(scene.obstacles)}}}}},
+      {"palette", paletteJson()},
+      {"units",
+       {{"millimetres", kMillimetres},
+        {"centimetres", kCentimetres},
+        {"yaw", kYawUnits},
+        {"alongEdge", kAlongEdge}}},
+      {"runs", nlohmann::json::array()}};
   for (const records::RunRecord& run : runs) {
     const records::RunMetadata& first = runs.front().metadata;
     if (run.metadata.scene != first.scene || run.metadata.sceneHash != first.sceneHash) {

@@ -11,18 +11,20 @@
 // palette and legend (viz/palette.h), and per run its method, seed, colour, the recorded
 // series (time, coverage, utilization, reward), the cameras' limits, the events, and the
 // steps as one packed stream (packed_stream.h, base64). Per step, in order:
-//   objects    targets then obstacles: vertex count n, then n (x, y) in mm — differences
-//              from the same object's vertices one step before when n is unchanged, else
-//              from the previous vertex (the first from 0)
+//   objects    targets, then obstacles: how many are present (recorded tracks come and go),
+//              then each one's scene index, vertex count n and n (x, y) in mm — differences
+//              from the same object's vertices the last time it was drawn when n is unchanged,
+//              else from the previous vertex (the first from 0)
 //   cameras    per camera: x, y in mm and yaw in 1e-4 rad, differences from one step before;
 //              goal: 0 none, 1 as before, 2 then x, y, yaw; plan: n, then the points in mm as
 //              differences from the previous (the first from the camera); view: n, then the
 //              points in cm likewise but the first from 0; nearest object: distance in mm, object
-//              (0 none, 1 + i targets, 1 + T + i obstacles); nearest camera: 1 + index (0 none),
-//              distance mm
-//   segments   count, then per segment: target, edge, where it starts and ends along the edge
-//              (fractions × 10^6), visibleBy, and for each camera not in it the reason:
-//              kind + 8 · (blocker kind + 4 · blocker index) (visibility::UnseenKind, ObjectRef)
+//              (0 none, 1 + 2i target i, 2 + 2i obstacle i); nearest camera: 1 + index (0
+//              none), distance mm
+//   segments   count, then per segment: target (scene index), edge, where it starts and ends
+//              along the edge (fractions × 10^6), visibleBy, and for each camera not in it the
+//              reason: kind + 8 · (blocker kind + 4 · blocker's scene index)
+//              (visibility::UnseenKind, ObjectRef)
 // Millimetres keep the drawing and the numbers exact to what a user can see; views, which are
 // only filled, are kept to centimetres. A 30 s run of dynamic9 packs into about 0.3 MB.
 #include <span>

@@ -88,7 +88,7 @@ int inspect(const InspectOptions& o) {
     for (const auto& seg : segments) {
       out["segments"].push_back({{"a", {seg.a.x, seg.a.y}},
                                  {"b", {seg.b.x, seg.b.y}},
-                                 {"target", seg.target},
+                                 {"target", kinematics::targetId(model.world(), seg.target)},
                                  {"edge", seg.edge},
                                  {"length", visibility::length(seg)},
                                  {"visibleBy", cameraList(seg.visibleBy)}});
@@ -109,7 +109,8 @@ int inspect(const InspectOptions& o) {
     std::cout << fmt::format(
         "  target {} edge {}: ({:.3f}, {:.3f}) -> ({:.3f}, {:.3f})  {:.3f} m  "
         "seen by {}\n",
-        seg.target, seg.edge, seg.a.x, seg.a.y, seg.b.x, seg.b.y, visibility::length(seg),
+        kinematics::targetId(model.world(), seg.target), seg.edge, seg.a.x, seg.a.y, seg.b.x,
+        seg.b.y, visibility::length(seg),
         seg.visibleBy ? cameraList(seg.visibleBy).dump() : "nobody");
   }
   if (!o.debugSvg.empty()) std::cout << fmt::format("  -> {}\n", o.debugSvg);

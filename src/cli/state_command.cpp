@@ -46,12 +46,18 @@ Registration addStateCommand(CLI::App& app) {
             out["time"] = *time;
             out["boundary"] = ring(world.boundary);
             out["targets"] = nlohmann::json::array();
+            // Recorded tracks come and go: each object present says which of the scene's it is.
+            const bool ids = s.hasPresenceWindows();
             for (std::size_t i = 0; i < world.targets.size(); ++i) {
-              out["targets"].push_back(object(kin.targetPose(i, *time), world.targets[i]));
+              const auto id = kinematics::targetId(world, i);
+              out["targets"].push_back(object(kin.targetPose(id, *time), world.targets[i]));
+              if (ids) out["targets"].back()["id"] = id;
             }
             out["obstacles"] = nlohmann::json::array();
             for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
-              out["obstacles"].push_back(object(kin.obstaclePose(i, *time), world.obstacles[i]));
+              const auto id = kinematics::obstacleId(world, i);
+              out["obstacles"].push_back(object(kin.obstaclePose(id, *time), world.obstacles[i]));
+              if (ids) out["obstacles"].back()["id"] = id;
             }
             out["cameras"] = nlohmann::json::array();
             for (const auto& c : s.cameras) {

@@ -7,16 +7,22 @@
 
 namespace camcov::kinematics {
 
-Kinematics::Kinematics(const scene::Scene& scene) : scene_(scene) {
-  for (const auto& object : scene.targets)
-    targetMotion_.emplace_back(object.path, object.velocity);
-  for (const auto& object : scene.obstacles) {
-    obstacleMotion_.emplace_back(object.path, object.velocity);
-  }
+Kinematics::Motion Kinematics::motionOf(const scene::MovingObject& object) {
+  Motion m{PathMotion(object.path, object.velocity), std::nullopt};
+  if (object.track) m.track.emplace(*object.track);
+  return m;
 }
 
-ObjectPose Kinematics::pose(const scene::MovingObject& object, const PathMotion& motion, double t) {
-  return {motion.positionAt(t), object.angularVelocity * t};
+Kinematics::Kinematics(const scene::Scene& scene) : scene_(scene) {
+  for (const auto& object : scene.targets)
+    targetMotion_.push_back(motionOf(object));
+  for (const auto& object : scene.obstacles)
+    obstacleMotion_.push_back(motionOf(object));
+}
+
+ObjectPose Kinematics::pose(const scene::MovingObject& object, const Motion& motion, double t) {
+  if (motion.track) return {motion.track->positionAt(t), motion.track->headingAt(t)};
+  return {motion.path.positionAt(t), object.angularVelocity * t};
 }
 
 ObjectPose Kinematics::targetPose(std::size_t i, double t) const {
@@ -27,7 +33,7 @@ ObjectPose Kinematics::obstaclePose(std::size_t i, double t) const {
   return pose(scene_.obstacles.at(i), obstacleMotion_.at(i), t);
 }
 
-void Kinematics::place(const scene::MovingObject& object, const PathMotion& motion, double t,
+void Kinematics::place(const scene::MovingObject& object, const Motion& motion, double t,
                        geometry::Ring& out) {
   const ObjectPose p = pose(object, motion, t);
   scene::localShapeAt(object, t, out);
@@ -42,7 +48,13 @@ void Kinematics::placeObstacle(std::size_t i, double t, geometry::Ring& out) con
   place(scene_.obstacles.at(i), obstacleMotion_.at(i), t, out);
 }
 
-double Kinematics::speedBound(const scene::MovingObject& object) {
+double Kinematics::speedBound(const scene::MovingObject& object, const Motion& motion) {
+  if (motion.track) {
+    double radius = 0.0;
+    for (const auto& v : object.shape)
+      radius = std::max(radius, geometry::norm(v));
+    return motion.track->maxSpeed() + motion.track->maxTurnRate() * radius;
+  }
   // A world point is r(t) + R(ωt)·q(t): its velocity r' + ω R'(ωt) q + R q' is bounded by
   // v + |ω|·|q| + |q'|. Interpolated shapes are convex combinations of the keyframes, so
   // |q| is at most the largest keyframe radius and |q'| the fastest keyframe-to-keyframe step.
@@ -72,24 +84,30 @@ double Kinematics::speedBound(const scene::MovingObject& object) {
 }
 
 double Kinematics::targetSpeedBound(std::size_t i) const {
-  return speedBound(scene_.targets.at(i));
+  return speedBound(scene_.targets.at(i), targetMotion_.at(i));
 }
 
 double Kinematics::obstacleSpeedBound(std::size_t i) const {
-  return speedBound(scene_.obstacles.at(i));
+  return speedBound(scene_.obstacles.at(i), obstacleMotion_.at(i));
 }
 
 void Kinematics::worldAt(double t, World& out) const {
   out.time = t;
   out.boundary.assign(scene_.boundary.begin(), scene_.boundary.end());
-  out.targets.resize(scene_.targets.size());
-  out.obstacles.resize(scene_.obstacles.size());
-  for (std::size_t i = 0; i < scene_.targets.size(); ++i) {
-    place(scene_.targets[i], targetMotion_[i], t, out.targets[i]);
-  }
-  for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
-    place(scene_.obstacles[i], obstacleMotion_[i], t, out.obstacles[i]);
-  }
+  // Rings are reused in place: a ring keeps its buffer when its slot keeps its object.
+  const auto fill = [t](const std::vector<scene::MovingObject>& objects,
+                        const std::vector<Motion>& motions, std::vector<geometry::Ring>& rings,
+                        std::vector<std::uint32_t>& ids) {
+    ids.clear();
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      if (objects[i].presentAt(t)) ids.push_back(static_cast<std::uint32_t>(i));
+    }
+    rings.resize(ids.size());
+    for (std::size_t k = 0; k < ids.size(); ++k)
+      place(objects[ids[k]], motions[ids[k]], t, rings[k]);
+  };
+  fill(scene_.targets, targetMotion_, out.targets, out.targetIds);
+  fill(scene_.obstacles, obstacleMotion_, out.obstacles, out.obstacleIds);
 }
 
 World Kinematics::worldAt(double t) const {

@@ -4,7 +4,10 @@
 // extension. The controller asks only for the present; nothing here looks ahead on its own.
 #include <vector>
 
+#include <optional>
+
 #include "kinematics/path_motion.h"
+#include "kinematics/track_motion.h"
 #include "kinematics/world.h"
 #include "scene/scene.h"
 
@@ -19,7 +22,8 @@ class Kinematics {
  public:
   explicit Kinematics(const scene::Scene& scene);
 
-  // Fills `out` (reusing its buffers, so a caller stepping through time allocates nothing).
+  // Fills `out` (reusing its buffers, so a caller stepping through time allocates nothing)
+  // with the objects present at t and their scene indices.
   void worldAt(double t, World& out) const;
   World worldAt(double t) const;
 
@@ -34,17 +38,27 @@ class Kinematics {
   // constant for distances to the object, not something a controller may know.
   double targetSpeedBound(std::size_t i) const;
   double obstacleSpeedBound(std::size_t i) const;
+  bool targetPresent(std::size_t i, double t) const { return scene_.targets.at(i).presentAt(t); }
+  bool obstaclePresent(std::size_t i, double t) const {
+    return scene_.obstacles.at(i).presentAt(t);
+  }
   const scene::Scene& scene() const { return scene_; }
 
  private:
-  static ObjectPose pose(const scene::MovingObject& object, const PathMotion& motion, double t);
-  static double speedBound(const scene::MovingObject& object);
-  static void place(const scene::MovingObject& object, const PathMotion& motion, double t,
+  // How one object moves: along its loop, or as recorded.
+  struct Motion {
+    PathMotion path;
+    std::optional<TrackMotion> track;
+  };
+  static Motion motionOf(const scene::MovingObject& object);
+  static ObjectPose pose(const scene::MovingObject& object, const Motion& motion, double t);
+  static double speedBound(const scene::MovingObject& object, const Motion& motion);
+  static void place(const scene::MovingObject& object, const Motion& motion, double t,
                     geometry::Ring& out);
 
   scene::Scene scene_;  // a copy: small, and a Kinematics must not outlive what it describes
-  std::vector<PathMotion> targetMotion_;
-  std::vector<PathMotion> obstacleMotion_;
+  std::vector<Motion> targetMotion_;
+  std::vector<Motion> obstacleMotion_;
 };
 
 }  // namespace camcov::kinematics

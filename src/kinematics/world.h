@@ -1,6 +1,7 @@
 #pragma once
 // The world at one instant t: every polygon in world coordinates, as the controller sees it.
 // This is the paper's X(t) = (T(t), O(t)) plus the time-invariant boundary B (section II).
+#include <cstdint>
 #include <vector>
 
 #include "geometry/ring.h"
@@ -12,6 +13,18 @@ struct World {
   geometry::Ring boundary;                // B: simple, CCW, occludes
   std::vector<geometry::Ring> targets;    // T(t): CCW rings; their boundaries are covered
   std::vector<geometry::Ring> obstacles;  // O(t): CCW rings; occlude, are not covered
+  // Which object of the scene each ring is: scene targets and obstacles in order, leaving out
+  // those absent at t (recorded tracks, issue 26). Without tracks, 0, 1, 2, ...
+  std::vector<std::uint32_t> targetIds;
+  std::vector<std::uint32_t> obstacleIds;
 };
+
+// The scene's index of world target i (world obstacle i): a World made by hand has no ids.
+inline std::uint32_t targetId(const World& w, std::size_t i) {
+  return w.targetIds.empty() ? static_cast<std::uint32_t>(i) : w.targetIds[i];
+}
+inline std::uint32_t obstacleId(const World& w, std::size_t i) {
+  return w.obstacleIds.empty() ? static_cast<std::uint32_t>(i) : w.obstacleIds[i];
+}
 
 }  // namespace camcov::kinematics

@@ -20,20 +20,23 @@ nlohmann::json pose(const geometry::Pose& p) {
 }
 
 nlohmann::json summaryJson(const sim::RunSummary& s) {
-  return {{"steps", s.steps},
-          {"duration", s.duration},
-          {"averageCoverage", s.averageCoverage},
-          {"averageUtilization", s.averageUtilization},
-          {"averageReward", s.averageReward},
-          {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
-          {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
-          {"objectCollisionTime", s.objectCollisionTime},
-          {"cameraCollisionTime", s.cameraCollisionTime},
-          {"avoidableContactTime", s.avoidableContactTime},
-          {"unavoidableContactTime", s.unavoidableContactTime},
-          {"avoidableContacts", s.avoidableContacts},
-          {"unavoidableContacts", s.unavoidableContacts},
-          {"boundaryClamps", s.boundaryClamps}};
+  nlohmann::json j = {{"steps", s.steps},
+                      {"duration", s.duration},
+                      {"averageCoverage", s.averageCoverage},
+                      {"averageUtilization", s.averageUtilization},
+                      {"averageReward", s.averageReward},
+                      {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
+                      {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
+                      {"objectCollisionTime", s.objectCollisionTime},
+                      {"cameraCollisionTime", s.cameraCollisionTime},
+                      {"avoidableContactTime", s.avoidableContactTime},
+                      {"unavoidableContactTime", s.unavoidableContactTime},
+                      {"avoidableContacts", s.avoidableContacts},
+                      {"unavoidableContacts", s.unavoidableContacts},
+                      {"boundaryClamps", s.boundaryClamps}};
+  // Only recorded tracks leave a scene empty; other runs keep their bytes.
+  if (s.stepsWithoutTargets > 0) j["stepsWithoutTargets"] = s.stepsWithoutTargets;
+  return j;
 }
 
 geometry::Pose poseFrom(const nlohmann::json& v) {
@@ -56,6 +59,7 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
   s.avoidableContacts = j.at("avoidableContacts").get<int>();
   s.unavoidableContacts = j.at("unavoidableContacts").get<int>();
   s.boundaryClamps = j.at("boundaryClamps").get<int>();
+  s.stepsWithoutTargets = j.value("stepsWithoutTargets", 0);
   return s;
 }
 
@@ -112,6 +116,12 @@ nlohmann::json runToJson(const RunRecord& run) {
       goals[c].push_back(row.goals[c] ? pose(*row.goals[c]) : nlohmann::json());
     }
   }
+  // Scenes whose targets come and go (recorded tracks) say how many are present at each step.
+  if (!run.steps.empty() && run.steps.front().targetsPresent >= 0) {
+    series["targetsPresent"] = nlohmann::json::array();
+    for (const StepRow& row : run.steps)
+      series["targetsPresent"].push_back(row.targetsPresent);
+  }
   series["cameras"] = std::move(poses);
   series["goals"] = std::move(goals);
   j["series"] = std::move(series);
@@ -163,6 +173,8 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       row.minCameraDistanceInStep = numberOrInfinity(series.at("minCameraDistanceInStep").at(k));
       row.avoidableContactTime = series.at("avoidableContactTime").at(k).get<double>();
       row.unavoidableContactTime = series.at("unavoidableContactTime").at(k).get<double>();
+      if (series.contains("targetsPresent"))
+        row.targetsPresent = series.at("targetsPresent").at(k).get<int>();
       for (std::size_t c = 0; c < cameras.size(); ++c) {
         row.cameras.push_back(poseFrom(cameras.at(c).at(k)));
         const auto& g = goals.at(c).at(k);

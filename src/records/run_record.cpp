@@ -14,6 +14,7 @@ void RunRecorder::step(const sim::StepRecord& step) {
   row.minCameraDistanceInStep = step.minCameraDistanceInStep;
   row.avoidableContactTime = step.avoidableContactTime;
   row.unavoidableContactTime = step.unavoidableContactTime;
+  row.targetsPresent = step.targetsPresent;
   row.cameras.assign(step.cameras.begin(), step.cameras.end());
   row.goals.assign(step.goals.begin(), step.goals.end());
   record_.steps.push_back(std::move(row));

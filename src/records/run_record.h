@@ -32,6 +32,7 @@ struct StepRow {
   double minCameraDistanceInStep = 0.0;
   double avoidableContactTime = 0.0;  // s closer than δ in that step, by the layer's verdict
   double unavoidableContactTime = 0.0;
+  int targetsPresent = -1;  // recorded tracks only (scene::Scene::hasPresenceWindows); else −1
   std::vector<geometry::Pose> cameras;
   std::vector<std::optional<geometry::Pose>> goals;
 };

@@ -1,6 +1,7 @@
 #include "safety/step_contacts.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "geometry/ring.h"
 #include "safety/lipschitz_search.h"
@@ -33,14 +34,23 @@ Sample StepAccounting::sample(const kinematics::World& world,
                               std::span<const geometry::Pose> cameras) const {
   Sample s;
   s.time = world.time;
+  // One distance per object of the scene, in scene order; an object absent at this instant
+  // (a recorded track, issue 26) is infinitely far.
+  const std::size_t targets = targetSpeeds_.size(), objects = targets + obstacleSpeeds_.size();
   for (const auto& c : cameras) {
     const geometry::Vec2 p = c.position();
-    for (const auto* objects : {&world.targets, &world.obstacles}) {
-      for (const auto& object : *objects) {
-        s.objectDistances.push_back(geometry::distanceToPolygon(object, p));
-        s.minObjectDistance = std::min(s.minObjectDistance, s.objectDistances.back());
-      }
+    const std::size_t first = s.objectDistances.size();
+    s.objectDistances.resize(first + objects, std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < world.targets.size(); ++k) {
+      s.objectDistances[first + kinematics::targetId(world, k)] =
+          geometry::distanceToPolygon(world.targets[k], p);
     }
+    for (std::size_t k = 0; k < world.obstacles.size(); ++k) {
+      s.objectDistances[first + targets + kinematics::obstacleId(world, k)] =
+          geometry::distanceToPolygon(world.obstacles[k], p);
+    }
+    for (std::size_t o = first; o < first + objects; ++o)
+      s.minObjectDistance = std::min(s.minObjectDistance, s.objectDistances[o]);
     for (const geometry::Vec2 q : s.cameras)
       s.minCameraDistance = std::min(s.minCameraDistance, geometry::distance(p, q));
     s.cameras.push_back(p);
@@ -98,10 +108,13 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
     } else {
       p.distance.f = [this, target = p.target, i = p.object, t0, j, cameraAt,
                       ring = geometry::Ring()](double tau) mutable {
+        const double t = t0 + tau;
+        if (!(target ? kinematics_.targetPresent(i, t) : kinematics_.obstaclePresent(i, t)))
+          return std::numeric_limits<double>::infinity();
         if (target) {
-          kinematics_.placeTarget(i, t0 + tau, ring);
+          kinematics_.placeTarget(i, t, ring);
         } else {
-          kinematics_.placeObstacle(i, t0 + tau, ring);
+          kinematics_.placeObstacle(i, t, ring);
         }
         return geometry::distanceToPolygon(ring, cameraAt(j, tau));
       };

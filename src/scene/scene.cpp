@@ -1,11 +1,19 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+
 namespace camcov::scene {
 
 geometry::Ring initialPolygon(const MovingObject& object) {
   geometry::Ring out;
   geometry::placeRing(object.shape, 0.0, object.path.front(), out);
   return out;
+}
+
+bool Scene::hasPresenceWindows() const {
+  const auto tracked = [](const MovingObject& o) { return o.track.has_value(); };
+  return std::any_of(targets.begin(), targets.end(), tracked) ||
+         std::any_of(obstacles.begin(), obstacles.end(), tracked);
 }
 
 std::vector<double> halfFovs(const Scene& scene) {

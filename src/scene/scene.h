@@ -24,17 +24,39 @@ struct Deformation {
   std::vector<DeformationKeyframe> keyframes;  // strictly increasing times
 };
 
+// Our extension for recorded motion (issue 26: real people from tracking data): the reference
+// point's position at sample times, and optionally the heading. The object is present from
+// its first sample to its last and absent before and after (it enters and leaves the scene);
+// in between it moves linearly from sample to sample, a gap between two samples included
+// (docs: README "Recorded tracks"). Nothing ever looks at a sample later than the present
+// except to place the object where it is now.
+struct Track {
+  std::vector<double> times;              // s, strictly increasing, at least one
+  std::vector<geometry::Vec2> positions;  // of the reference point, one per time
+  std::vector<double> headings;           // rad, one per time, or empty: the shape unrotated
+
+  double start() const { return times.front(); }
+  double end() const { return times.back(); }
+  bool presentAt(double t) const { return t >= start() && t <= end(); }
+};
+
 // A target or an obstacle.
 struct MovingObject {
   geometry::Ring shape;              // local coordinates about the reference point, CCW
   std::vector<geometry::Vec2> path;  // waypoints of the reference point; one point = static
+                                     // (a tracked object: its first recorded position)
   double velocity = 1.0;             // m/s along the path (closed loop), > 0
   double angularVelocity = 0.0;      // rad/s, counter-clockwise about the reference point
   std::optional<Deformation> deformation;
+  std::optional<Track> track;  // recorded motion instead of the path (our extension)
+  std::string color;           // "#rrggbb" to draw it in (e.g. a team's), empty: the default
 
   bool isStatic() const {
-    return path.size() == 1 && angularVelocity == 0.0 && !deformation.has_value();
+    return path.size() == 1 && angularVelocity == 0.0 && !deformation.has_value() &&
+           !track.has_value();
   }
+  // Present at t: always, unless its track says otherwise.
+  bool presentAt(double t) const { return !track || track->presentAt(t); }
 };
 
 // One camera: the only place that says what a camera is. Every stage reads a camera's field
@@ -54,6 +76,9 @@ struct Scene {
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;
   std::vector<CameraSpec> cameras;
+
+  // Some object comes and goes (a recorded track): its records carry targetsPresent.
+  bool hasPresenceWindows() const;
 };
 
 // θ_j of every camera, in camera order: what the visibility and reward stages take.

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -190,11 +191,64 @@ Deformation deformation(const Node& node, const geometry::Ring& writtenShape) {
   return result;
 }
 
+// "track": {"samples": [[t, x, y], ...]} or [[t, x, y, heading°], ...] (every sample alike).
+Track track(const Node& node) {
+  node.object({"samples"});
+  const Node samples = node.child("samples");
+  const std::size_t count = samples.arraySize();
+  if (count == 0) samples.fail("a track needs at least one sample");
+  Track result;
+  std::size_t width = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Node sample = samples.element(i);
+    const std::size_t n = sample.arraySize();
+    if (n != 3 && n != 4)
+      sample.fail(fmt::format("a sample is [t, x, y] or [t, x, y, heading], has {} numbers", n));
+    if (i == 0) width = n;
+    if (n != width)
+      sample.fail(fmt::format("every sample of a track has {} numbers, like the first", width));
+    const double t = sample.element(0).number();
+    if (t < 0.0) sample.element(0).fail(fmt::format("time {} is negative", t));
+    if (i > 0 && t <= result.times.back()) {
+      sample.element(0).fail(
+          fmt::format("times must increase strictly: {} after {}", t, result.times.back()));
+    }
+    const geometry::Vec2 p{sample.element(1).number(), sample.element(2).number()};
+    if (std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate) {
+      sample.fail(fmt::format("position ({} {}) lies beyond ±{:g} m", p.x, p.y, kMaxCoordinate));
+    }
+    result.times.push_back(t);
+    result.positions.push_back(p);
+    if (n == 4) result.headings.push_back(geometry::degToRad(sample.element(3).number()));
+  }
+  return result;
+}
+
+std::string colour(const Node& node) {
+  const std::string text = node.string();
+  const bool hex =
+      text.size() == 7 && text[0] == '#' && std::all_of(text.begin() + 1, text.end(), [](char c) {
+        return std::isxdigit(static_cast<unsigned char>(c)) != 0;
+      });
+  if (!hex) node.fail("a colour is written #rrggbb, is \"" + text + "\"");
+  return text;
+}
+
 MovingObject movingObject(const Node& node) {
-  node.object({"shape", "path", "velocity", "angularVelocity", "deformation"});
+  node.object({"shape", "path", "velocity", "angularVelocity", "deformation", "track", "color"});
   MovingObject object;
   const Node shapeNode = node.child("shape");
   object.shape = simpleRing(shapeNode);
+  if (node.has("color")) object.color = colour(node.child("color"));
+  if (node.has("track")) {
+    // Recorded motion replaces the loop: the two cannot be mixed.
+    for (const char* key : {"path", "velocity", "angularVelocity", "deformation"}) {
+      if (node.has(key)) node.child(key).fail("an object with a track has no " + std::string(key));
+    }
+    object.track = track(node.child("track"));
+    object.path = {object.track->positions.front()};
+    return object;
+  }
   object.path = path(node.child("path"));
   if (node.has("velocity")) object.velocity = positiveSpeed(node.child("velocity"), "velocity");
   if (node.has("angularVelocity"))

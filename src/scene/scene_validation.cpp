@@ -59,15 +59,42 @@ PlacementDefect findPlacementDefect(const Scene& scene) {
   struct Placed {
     std::string path;
     geometry::Ring polygon;
+    bool presentAtZero = true;  // a recorded object may enter later
   };
   std::vector<Placed> placed;
   for (std::size_t i = 0; i < scene.targets.size(); ++i) {
-    placed.push_back({objectPath("targets", i), initialPolygon(scene.targets[i])});
+    placed.push_back({objectPath("targets", i), initialPolygon(scene.targets[i]),
+                      scene.targets[i].presentAt(0.0)});
   }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
-    placed.push_back({objectPath("obstacles", i), initialPolygon(scene.obstacles[i])});
+    placed.push_back({objectPath("obstacles", i), initialPolygon(scene.obstacles[i]),
+                      scene.obstacles[i].presentAt(0.0)});
+  }
+  // A recorded track: every sample inside the boundary (the importers choose the boundary
+  // around them). Recorded people are not checked against walls or one another: they are
+  // where they were, and walls occlude but do not stop them.
+  const auto trackOutside = [&](const char* kind,
+                                const std::vector<MovingObject>& objects) -> PlacementDefect {
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      if (!objects[i].track) continue;
+      const Track& track = *objects[i].track;
+      for (std::size_t k = 0; k < track.times.size(); ++k) {
+        if (geometry::locate(scene.boundary, track.positions[k]) ==
+            geometry::Containment::Outside) {
+          return {
+              objectPath(kind, i) + ".track.samples[" + std::to_string(k) + "]",
+              fmt::format("at t = {} s the position lies outside the boundary", track.times[k])};
+        }
+      }
+    }
+    return {};
+  };
+  for (const auto& [kind, objects] :
+       {std::pair{"targets", &scene.targets}, std::pair{"obstacles", &scene.obstacles}}) {
+    if (PlacementDefect d = trackOutside(kind, *objects); !d.jsonPath.empty()) return d;
   }
   for (const auto& object : placed) {
+    if (!object.presentAtZero) continue;
     for (std::size_t v = 0; v < object.polygon.size(); ++v) {
       if (geometry::locate(scene.boundary, object.polygon[v]) == geometry::Containment::Outside) {
         return {object.path + ".shape",
@@ -82,7 +109,8 @@ PlacementDefect findPlacementDefect(const Scene& scene) {
       return {path, "camera lies outside the boundary"};
     }
     for (const auto& object : placed) {
-      if (geometry::locate(object.polygon, p) == geometry::Containment::Inside) {
+      if (object.presentAtZero &&
+          geometry::locate(object.polygon, p) == geometry::Containment::Inside) {
         return {path, "camera lies inside " + object.path + " at t = 0"};
       }
     }

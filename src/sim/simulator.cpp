@@ -122,6 +122,9 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
 
   RunSummary summary;
   summary.duration = steps * dt;
+  const bool comesAndGoes = scene.hasPresenceWindows();
+  std::vector<std::uint32_t> presentBefore;  // the targets present one step before
+  int intervalsWithoutTargets = 0;
   summary.minObjectDistance = summary.minCameraDistance = kInf;
   reward::RewardTerms previous;
   for (int k = 0; k <= steps; ++k) {
@@ -133,6 +136,10 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     record.index = k;
     record.time = t;
     record.terms = measure.evaluate(cameras);
+    if (comesAndGoes) {
+      record.targetsPresent = static_cast<int>(world.targets.size());
+      if (world.targets.empty()) ++summary.stepsWithoutTargets;
+    }
     safety::Sample sample = accounting.sample(world, cameras);
     record.minObjectDistance = sample.minObjectDistance;
     record.minCameraDistance = sample.minCameraDistance;
@@ -146,10 +153,37 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
       // The layer's verdicts are still those of the step's start: apply() comes below.
       accountStep(accounting.measure(previousSample, sample), safety.verdicts(),
                   previousSample.time, contacts, record, summary, events);
-      // trapezoid rule, eq. (4)
-      summary.averageCoverage += 0.5 * (previous.coverage + record.terms.coverage) * dt;
-      summary.averageUtilization += 0.5 * (previous.utilization + record.terms.utilization) * dt;
-      summary.averageReward += 0.5 * (previous.reward + record.terms.reward) * dt;
+      if (comesAndGoes && (presentBefore.empty() || world.targets.empty())) {
+        ++intervalsWithoutTargets;  // nothing to cover at one end: left out of the averages
+      } else {
+        // trapezoid rule, eq. (4)
+        summary.averageCoverage += 0.5 * (previous.coverage + record.terms.coverage) * dt;
+        summary.averageUtilization += 0.5 * (previous.utilization + record.terms.utilization) * dt;
+        summary.averageReward += 0.5 * (previous.reward + record.terms.reward) * dt;
+      }
+    }
+    if (comesAndGoes) {
+      // Entering and leaving, as events of this step (ids ascend in both lists).
+      const auto& now = world.targetIds;
+      for (const std::uint32_t id : now) {
+        if (!std::binary_search(presentBefore.begin(), presentBefore.end(), id) && k > 0)
+          events.push_back({t,
+                            std::string(kTargetAppears),
+                            -1,
+                            "target " + std::to_string(id) + " enters the scene",
+                            {},
+                            ""});
+      }
+      for (const std::uint32_t id : presentBefore) {
+        if (!std::binary_search(now.begin(), now.end(), id))
+          events.push_back({t,
+                            std::string(kTargetLeaves),
+                            -1,
+                            "target " + std::to_string(id) + " leaves the scene",
+                            {},
+                            ""});
+      }
+      presentBefore = now;
     }
     previous = record.terms;
     previousSample = std::move(sample);
@@ -180,10 +214,14 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     }
   }
   summary.steps = steps + 1;
-  if (summary.duration > 0.0) {
-    summary.averageCoverage /= summary.duration;
-    summary.averageUtilization /= summary.duration;
-    summary.averageReward /= summary.duration;
+  // Without gaps this is steps · dt exactly, so runs without tracks keep their bytes.
+  const double measured = (steps - intervalsWithoutTargets) * dt;
+  if (measured > 0.0) {
+    summary.averageCoverage /= measured;
+    summary.averageUtilization /= measured;
+    summary.averageReward /= measured;
+  } else if (summary.duration > 0.0) {
+    summary.averageCoverage = summary.averageUtilization = summary.averageReward = 0.0;
   } else {
     summary.averageCoverage = previous.coverage;
     summary.averageUtilization = previous.utilization;

@@ -31,6 +31,8 @@ struct StepRecord {
   double minCameraDistanceInStep = 0.0;
   double avoidableContactTime = 0.0;    // s closer than δ that the safety layer could avoid
   double unavoidableContactTime = 0.0;  // s closer than δ in unavoidable contacts
+  // Targets present at t, where they come and go (scene::Scene::hasPresenceWindows); else −1.
+  int targetsPresent = -1;
   // Raised since the last step: contacts that began in the step that ended at t, then the
   // controller's events at t.
   std::span<const control::ControlEvent> events;
@@ -39,11 +41,17 @@ struct StepRecord {
 // The kinds of the events that mark where a camera came closer than δ (see RunSummary).
 inline constexpr std::string_view kAvoidableContact = "avoidable-contact";
 inline constexpr std::string_view kUnavoidableContact = "unavoidable-contact";
+// A recorded target entering or leaving the scene (issue 26), at the first step it is present
+// or absent.
+inline constexpr std::string_view kTargetAppears = "target-appears";
+inline constexpr std::string_view kTargetLeaves = "target-leaves";
 
 struct RunSummary {
-  int steps = 0;                    // recorded steps, including t = 0
-  double duration = 0.0;            // simulated seconds
-  double averageCoverage = 0.0;     // eq. (4) by the trapezoid rule over [0, duration]
+  int steps = 0;          // recorded steps, including t = 0
+  double duration = 0.0;  // simulated seconds
+  // eq. (4) by the trapezoid rule over [0, duration], leaving out every step interval with an
+  // end where no target is present (coverage is undefined there: nothing to cover)
+  double averageCoverage = 0.0;
   double averageUtilization = 0.0;  // the same for utilization, eq. (5)
   double averageReward = 0.0;
   // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.
@@ -59,6 +67,7 @@ struct RunSummary {
   int avoidableContacts = 0;    // contacts (a camera's stretch of steps closer than δ)
   int unavoidableContacts = 0;  // each one begins with an "unavoidable-contact" event
   int boundaryClamps = 0;       // steps where a move was cut short at the boundary
+  int stepsWithoutTargets = 0;  // recorded steps with no target present (recorded tracks)
 };
 
 class Recorder {

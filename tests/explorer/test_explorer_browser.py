@@ -596,3 +596,25 @@ def test_dynamic9_side_by_side_with_an_edge_and_a_camera_explained(explorer, cam
     explorer.driver.execute_script("window.scrollTo(0, 0);")
     (screenshots_folder(tmp_path) / "explorer-dynamic9.png").write_bytes(explorer.screenshot())
     assert_no_console_errors(explorer)
+
+
+def test_recorded_targets_come_and_go_as_the_run_and_camcov_inspect_say(explorer, camcov,
+                                                                         tmp_path):
+    """Recorded tracks (tests/data/scenes_tracks): no target drawn before anyone enters, then
+    the ones present, each edge named by the target's index in the scene."""
+    scene = REPO / "tests" / "data" / "scenes_tracks" / "comes_and_goes.json"
+    run_file, run = record_run(camcov, tmp_path / "runs", "paper", scene, 4)
+    page = write_explorer(camcov, [run_file], tmp_path / "tracks.html")
+    explorer.open(page)
+    present = run["series"]["targetsPresent"]
+    for t in (0.2, 0.7, 1.5, 2.8, 3.5):
+        k = step_nearest(run, t)
+        explorer.seek(k)
+        world = explorer.world(0)
+        drawn = world.find_elements(By.CSS_SELECTOR, "polygon[data-target]")
+        assert len(drawn) == present[k], f"t = {t}: {len(drawn)} targets drawn, run: {present[k]}"
+        reference = inspect_step(camcov, run, k, tmp_path, scene)
+        segments = world.find_elements(By.CSS_SELECTOR, ".segment")
+        assert [(s.get_attribute("data-target"), s.get_attribute("data-edge")) for s in segments] \
+            == [(str(s["target"]), str(s["edge"])) for s in reference["segments"]], f"t = {t}"
+    assert_no_console_errors(explorer)

@@ -65,6 +65,12 @@ const BadCase kBadCases[] = {
      "opposite orientation"},
     {"deformation_interpolation_not_simple", "targets[0].deformation", "not simple"},
     {"deformation_no_keyframes", "targets[0].deformation.keyframes", "at least one keyframe"},
+    {"track_time_backwards", "targets[0].track.samples[2][0]", "increase strictly"},
+    {"track_mixed_samples", "targets[0].track.samples[1]", "like the first"},
+    {"track_with_path", "targets[0].path", "has no path"},
+    {"track_no_samples", "targets[0].track.samples", "at least one sample"},
+    {"track_outside_boundary", "targets[0].track.samples[1]", "outside the boundary"},
+    {"color_not_hex", "targets[0].color", "#rrggbb"},
 };
 
 class BadScene : public ::testing::TestWithParam<BadCase> {};
