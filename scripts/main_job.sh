@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs camcov's main job: `camcov bench` on the
-# project's own scenes (scenes/), both methods, 5 seeds each, on all cores. Results, summary
+# project's own scenes (scenes/, and scenes/real/ made from ../shared/tracks when it is there),
+# both methods, 5 seeds each, on all cores. Results, summary
 # and logs land in bench-results/; a second run resumes instead of starting over.
 # Extra arguments are passed on, e.g. `--seeds 20` or `--scenes ../shared/coverage_scenes`.
 set -euo pipefail
@@ -8,4 +9,9 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$repo/scripts/install_deps.sh"
 "$repo/scripts/build.sh" release >/dev/null
 cd "$repo"
-exec "$repo/build/src/cli/camcov" bench --scenes scenes --out bench-results "$@"
+scenes=(scenes)
+if [ -d "$repo/../shared/tracks" ]; then
+  "$repo/scripts/make_real_scenes.sh" "$repo/../shared/tracks" >/dev/null 2>&1
+  scenes+=(scenes/real)
+fi
+exec "$repo/build/src/cli/camcov" bench --scenes "${scenes[@]}" --out bench-results "$@"

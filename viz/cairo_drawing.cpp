@@ -2,6 +2,7 @@
 
 #include <cairo-svg.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -94,13 +95,21 @@ void drawArena(const Painter& p, const kinematics::World& world) {
   p.stroke(kWall, 0.14);
 }
 
-void drawObjects(const Painter& p, const kinematics::World& world) {
+void drawObjects(const Painter& p, const kinematics::World& world,
+                 std::span<const std::optional<Rgb>> targetColours) {
   for (const auto& o : world.obstacles)
     p.ringPath(o);
   p.fill(kObstacle);
-  for (const auto& t : world.targets)
-    p.ringPath(t);
+  // Targets in the palette's grey as one path; those with a colour of their own one by one.
+  for (std::size_t i = 0; i < world.targets.size(); ++i) {
+    if (i >= targetColours.size() || !targetColours[i]) p.ringPath(world.targets[i]);
+  }
   p.fill(kTarget);
+  for (std::size_t i = 0; i < std::min(targetColours.size(), world.targets.size()); ++i) {
+    if (!targetColours[i]) continue;
+    p.ringPath(world.targets[i]);
+    p.fill(*targetColours[i]);
+  }
 }
 
 // Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -67,8 +68,9 @@ geometry::Vec2 imageHeading(double yaw);
 
 // The floor inside the boundary, and the wall.
 void drawArena(const Painter& p, const kinematics::World& world);
-// Obstacles dark, targets grey.
-void drawObjects(const Painter& p, const kinematics::World& world);
+// Obstacles dark, targets grey unless they have a colour of their own (per world target).
+void drawObjects(const Painter& p, const kinematics::World& world,
+                 std::span<const std::optional<Rgb>> targetColours = {});
 // The targets' boundaries: seen by some camera green, by none red.
 void drawSegments(const Painter& p, std::span<const visibility::Segment> segments);
 // What a camera sees, a translucent amber fill of opacity `alpha`.

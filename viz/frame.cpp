@@ -32,10 +32,15 @@ FrameBuilder::FrameBuilder(const scene::Scene& scene)
     : kinematics_(scene), sceneName_(scene.name), halfFovs_(scene::halfFovs(scene)) {
   addPaths(scene.targets, paths_);
   addPaths(scene.obstacles, paths_);
+  for (const auto& t : scene.targets)
+    colours_.push_back(rgbFromHex(t.color));
 }
 
 void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, Frame& out) {
   kinematics_.worldAt(time, out.world);
+  out.targetColours.resize(out.world.targets.size());
+  for (std::size_t i = 0; i < out.world.targets.size(); ++i)
+    out.targetColours[i] = colours_[kinematics::targetId(out.world, i)];
   occluders_.build(out.world);
   sweep_.segments(occluders_, cameras, halfFovs_, out.segments);
 

@@ -17,6 +17,7 @@
 #include "visibility/occluders.h"
 #include "visibility/segment.h"
 #include "visibility/sweep.h"
+#include "viz/palette.h"
 
 namespace camcov::viz {
 
@@ -50,6 +51,8 @@ struct Caption {
 struct Frame {
   Caption caption;
   kinematics::World world;
+  // Per target of `world`: its own colour (a recorded player's team), or none: the palette's.
+  std::vector<std::optional<Rgb>> targetColours;
   std::vector<visibility::Segment> segments;  // every target's boundary, seen or not
   std::vector<CameraView> cameras;
   std::vector<ObjectPath> paths;
@@ -69,7 +72,8 @@ class FrameBuilder {
  private:
   kinematics::Kinematics kinematics_;
   std::string sceneName_;
-  std::vector<double> halfFovs_;  // θ_j
+  std::vector<double> halfFovs_;             // θ_j
+  std::vector<std::optional<Rgb>> colours_;  // of each scene target
   std::vector<ObjectPath> paths_;
   visibility::Occluders occluders_;
   visibility::Sweep sweep_;

@@ -313,7 +313,7 @@ void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, Fram
   clippedTo(cr, layout.worldArea, [&] {
     const Painter painter(cr, layout.toImage, layout.em);
     drawViews(painter, frame.cameras, use);
-    drawObjects(painter, frame.world);
+    drawObjects(painter, frame.world, frame.targetColours);
     drawSegments(painter, frame.segments);
     drawPathLabels(painter, frame.paths);
     drawPlans(painter, frame.cameras);

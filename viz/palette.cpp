@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace camcov::viz {
@@ -19,6 +20,20 @@ std::string cssColour(Rgb c) {
     return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
   };
   return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
+}
+
+std::optional<Rgb> rgbFromHex(std::string_view hex) {
+  if (hex.size() != 7 || hex[0] != '#') return std::nullopt;
+  unsigned value = 0;
+  for (const char c : hex.substr(1)) {
+    const int digit = std::isdigit(static_cast<unsigned char>(c)) ? c - '0'
+                      : std::isxdigit(static_cast<unsigned char>(c))
+                          ? std::tolower(static_cast<unsigned char>(c)) - 'a' + 10
+                          : -1;
+    if (digit < 0) return std::nullopt;
+    value = value * 16 + static_cast<unsigned>(digit);
+  }
+  return Rgb{(value >> 16 & 255) / 255.0, (value >> 8 & 255) / 255.0, (value & 255) / 255.0};
 }
 
 }  // namespace camcov::viz

@@ -2,7 +2,9 @@
 // The colours and legend of everything camcov draws of a scene: frames and videos (Cairo),
 // the sweep debugger, and the run explorer in the browser (reports/explorer), so a camera, a
 // seen edge or a plan looks the same in all of them. Plain data: no Cairo here.
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace camcov::viz {
 
@@ -32,6 +34,8 @@ inline constexpr double kViewAlpha = 0.28;  // views are translucent: overlaps l
 Rgb seenByColour(int cameras);
 // "#rrggbb", for CSS and SVG.
 std::string cssColour(Rgb c);
+// The inverse: a scene object's own colour; nullopt for anything but "#rrggbb".
+std::optional<Rgb> rgbFromHex(std::string_view hex);
 
 // The legend's entries, in the order the frames list them.
 enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };

@@ -31,5 +31,6 @@ Registration addBenchCommand(CLI::App& app);
 Registration addMergeCommand(CLI::App& app);
 Registration addReportCommand(CLI::App& app);
 Registration addExploreCommand(CLI::App& app);
+Registration addImportCommand(CLI::App& app);
 
 }  // namespace camcov::cli

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
       cli::addValidateCommand(app), cli::addStateCommand(app),   cli::addParamsCommand(app),
       cli::addInspectCommand(app),  cli::addRunCommand(app),     cli::addRenderCommand(app),
       cli::addVideoCommand(app),    cli::addBenchCommand(app),   cli::addMergeCommand(app),
-      cli::addReportCommand(app),   cli::addExploreCommand(app),
+      cli::addReportCommand(app),   cli::addExploreCommand(app), cli::addImportCommand(app),
   };
   cli::setInvocation(argc, argv);
   try {

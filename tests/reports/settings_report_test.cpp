@@ -83,7 +83,8 @@ TEST(SettingsReport, ShowsASweepsSettingsSideBySideWithTheSummariesNumbers) {
   EXPECT_NE(settings.find("href=\"global.K%3D60/report.html\""), std::string::npos) << settings;
 
   for (const std::string folder : {"global.K=30", "global.K=30-again", "global.K=60"}) {
-    for (const auto& m : summaryOf(sweep / folder)["methods"]) {
+    const nlohmann::json summary = summaryOf(sweep / folder);
+    for (const auto& m : summary["methods"]) {
       const Cell c = sceneCell(html, m["scene"], m["method"], folder);
       ASSERT_TRUE(c.found) << folder << " " << m["scene"] << " " << m["method"];
       EXPECT_EQ(c.mean, m["averageCoverage"]["mean"].get<double>()) << folder;

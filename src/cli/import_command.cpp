@@ -1,0 +1,172 @@
+// `camcov import lastrow FILE.csv -o scene.json` and `camcov import ethucy DIR --fps F -o
+// scene.json`: recorded tracks as a self-contained scene (issue 26; src/import). The scene is
+// validated by the loader before it is written, atomically: bad input leaves no file behind.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+
+#include "cli/command.h"
+#include "import/ethucy_reader.h"
+#include "import/lastrow_reader.h"
+#include "import/scene_builder.h"
+#include "kinematics/kinematics.h"
+#include "records/atomic_file.h"
+#include "scene/camera_poses_file.h"
+#include "scene/scene_loader.h"
+#include "util/input_error.h"
+
+namespace camcov::cli {
+namespace {
+
+struct ImportOptions {
+  std::string input;
+  std::string out;
+  std::string camerasFrom;
+  std::string ball = "none";
+  std::vector<double> pitch{105.0, 68.0};
+  double rate = 20.0;  // Last Row frames per second
+  double fps = 0.0;    // ETH/UCY video frames per second
+  import::SceneOptions scene;
+};
+
+// Validates the scene as any file is validated, writes it, and says what it holds.
+int writeImported(const import::BuiltScene& built, const ImportOptions& o) {
+  const std::string text = built.scene.dump(1) + "\n";
+  const scene::Scene s = scene::parseScene(text, o.out);
+  for (const auto& note : built.notes)
+    std::cerr << "note: " << note << "\n";
+  records::writeFileAtomically(o.out, text);
+  double end = 0.0;
+  for (const auto& t : s.targets)
+    end = std::max(end, t.track ? t.track->end() : 0.0);
+  std::size_t most = 0;
+  const kinematics::Kinematics k(s);
+  for (double t = 0.0; t <= end; t += 0.1)
+    most = std::max(most, k.worldAt(t).targets.size());
+  std::cout << fmt::format(
+      "{}: {} targets over {:.1f} s (at most {} at once), {} obstacles, {} cameras\n", o.out,
+      s.targets.size(), end, most, s.obstacles.size(), s.cameras.size());
+  return 0;
+}
+
+void resolveCameras(ImportOptions& o) {
+  if (!o.camerasFrom.empty()) o.scene.cameraPoses = scene::loadCameraPoses(o.camerasFrom);
+  if (o.scene.from < 0.0 || o.scene.to <= o.scene.from) {
+    throw InputError(
+        fmt::format("--from {} --to {}: the window must start at 0 or later and end after it",
+                    o.scene.from, o.scene.to));
+  }
+}
+
+int importLastRow(ImportOptions o) {
+  resolveCameras(o);
+  if (o.pitch.size() != 2 || o.pitch[0] <= 0.0 || o.pitch[1] <= 0.0)
+    throw InputError("--pitch L,W: two positive lengths in metres, e.g. 105,68");
+  const std::map<std::string, import::BallAs> balls{{"none", import::BallAs::None},
+                                                    {"target", import::BallAs::Target},
+                                                    {"obstacle", import::BallAs::Obstacle}};
+  o.scene.ball = balls.at(o.ball);
+  const import::Recording recording =
+      import::readLastRow(o.input, {o.pitch[0], o.pitch[1]}, o.rate);
+  return writeImported(import::buildScene(recording, o.scene), o);
+}
+
+int importEthUcy(ImportOptions o) {
+  resolveCameras(o);
+  const import::Recording recording = import::readEthUcy(o.input, o.fps);
+  return writeImported(import::buildScene(recording, o.scene), o);
+}
+
+// The options every importer has.
+void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
+  cmd.add_option("--out,-o", o.out, "scene file to write (.json)")->required();
+  cmd.add_option("--from", o.scene.from, "start of the window, s from the recording's start")
+      ->capture_default_str();
+  cmd.add_option("--to", o.scene.to,
+                 "end of the window, s from the recording's start (default: the end)");
+  cmd.add_option("--busiest", o.scene.busiest,
+                 "instead of --from/--to: the window of this many seconds with the most people "
+                 "present on average")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--cameras", o.scene.cameras, "cameras, spread along the boundary facing in")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  cmd.add_option("--cameras-from", o.camerasFrom,
+                 "camera poses instead: JSON list [{\"x\":..,\"y\":..,\"yaw_deg\":..}]")
+      ->check(CLI::ExistingFile);
+  cmd.add_option("--camera-speed", o.scene.cameraSpeed, "v_max of every camera, m/s")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd.add_option("--camera-turn", o.scene.cameraTurnRate,
+                 "angular speed limit of every camera, rad/s")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd.add_option("--fov", o.scene.cameraHalfFovDeg, "half-angle field of view θ, degrees")
+      ->check(CLI::Range(0.1, 179.9))
+      ->capture_default_str();
+  cmd.add_option("--max-gap", o.scene.maxGap,
+                 "a track that vanishes for longer comes back as a new target, s")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd.add_option("--margin", o.scene.margin,
+                 "boundary beyond the tracks and walls (the pitch's run-off), m")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--description", o.scene.description, "the scene's description");
+}
+
+}  // namespace
+
+Registration addImportCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "import", "Make a scene from recorded tracks: football (lastrow) or pedestrians (ethucy)");
+  cmd->require_subcommand(1);
+
+  auto lastrow = std::make_shared<ImportOptions>();
+  lastrow->scene.personRadius = 0.3;
+  auto* l = cmd->add_subcommand("lastrow",
+                                "Last Row football CSV: players as 0.3 m discs in team colours");
+  l->add_option("file", lastrow->input, "the CSV")->required()->check(CLI::ExistingFile);
+  l->add_option("--ball", lastrow->ball, "the ball: none, target or obstacle")
+      ->check(CLI::IsMember({"none", "target", "obstacle"}))
+      ->capture_default_str();
+  l->add_option("--pitch", lastrow->pitch, "pitch length,width in m (x and y run 0-100 across it)")
+      ->delimiter(',')
+      ->expected(2);
+  l->add_option("--rate", lastrow->rate, "frames per second of the file")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  l->add_option("--radius", lastrow->scene.personRadius, "player disc radius, m")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  lastrow->scene.margin = 5.0;
+  addSceneOptions(*l, *lastrow);
+
+  auto ethucy = std::make_shared<ImportOptions>();
+  auto* e = cmd->add_subcommand(
+      "ethucy", "ETH/UCY pedestrians (obsmat.txt, map.xml): people as 0.25 m discs");
+  e->add_option("folder", ethucy->input, "folder with obsmat.txt (and map.xml)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  e->add_option(
+       "--fps", ethucy->fps,
+       "video frames per second of the recording (eth_univ 15, eth_hotel and ucy_zara01 25)")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  e->add_option("--radius", ethucy->scene.personRadius, "pedestrian disc radius, m")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  e->add_option("--wall-thickness", ethucy->scene.wallThickness,
+                "walls of map.xml as obstacles this thick, m")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  addSceneOptions(*e, *ethucy);
+
+  return {cmd, [cmd, l, lastrow, ethucy] {
+            return cmd->got_subcommand(l) ? importLastRow(*lastrow) : importEthUcy(*ethucy);
+          }};
+}
+
+}  // namespace camcov::cli

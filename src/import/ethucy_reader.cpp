@@ -1,0 +1,164 @@
+#include "import/ethucy_reader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "import/text_fields.h"
+#include "import/track_collector.h"
+#include "util/input_error.h"
+
+namespace camcov::import {
+namespace {
+
+// The attributes of one tag's text (between '<' and '>'): name="value" pairs.
+std::vector<std::pair<std::string, std::string>> attributes(std::string_view tag,
+                                                            const Where& where) {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::size_t i = 0;
+  while (i < tag.size()) {
+    while (i < tag.size() && std::isspace(static_cast<unsigned char>(tag[i])))
+      ++i;
+    if (i >= tag.size() || tag[i] == '/' || tag[i] == '?') break;
+    const std::size_t eq = tag.find('=', i);
+    if (eq == std::string_view::npos)
+      throw InputError(where.prefix() + "an attribute without a value");
+    std::string name(tag.substr(i, eq - i));
+    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back())))
+      name.pop_back();
+    std::size_t q = eq + 1;
+    while (q < tag.size() && std::isspace(static_cast<unsigned char>(tag[q])))
+      ++q;
+    if (q >= tag.size() || (tag[q] != '"' && tag[q] != '\'')) {
+      throw InputError(where.prefix() + "attribute " + name + ": its value is not quoted");
+    }
+    const std::size_t close = tag.find(tag[q], q + 1);
+    if (close == std::string_view::npos) {
+      throw InputError(where.prefix() + "attribute " + name + ": its value is not closed");
+    }
+    out.emplace_back(name, std::string(tag.substr(q + 1, close - q - 1)));
+    i = close + 1;
+  }
+  return out;
+}
+
+void readMap(const std::string& file, Recording& recording) {
+  const std::vector<std::string> lines = readLines(file);
+  std::string text;
+  std::vector<std::size_t> lineStart;  // offset of each line in `text`
+  for (const auto& l : lines) {
+    lineStart.push_back(text.size());
+    text += l + '\n';
+  }
+  const auto lineOf = [&](std::size_t offset) {
+    return static_cast<std::size_t>(std::upper_bound(lineStart.begin(), lineStart.end(), offset) -
+                                    lineStart.begin());
+  };
+  std::vector<std::pair<std::string, std::size_t>> open;  // element names, and their lines
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+    const Where where{file, lineOf(at)};
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) throw InputError(where.prefix() + "a comment is not closed");
+      continue;
+    }
+    const std::size_t end = text.find('>', at);
+    if (end == std::string::npos)
+      throw InputError(where.prefix() + "a tag is not closed ('>' missing)");
+    std::string_view tag(text.data() + at + 1, end - at - 1);
+    if (!tag.empty() && tag.front() == '?') {
+      at = end;
+      continue;  // the XML declaration
+    }
+    const bool closing = !tag.empty() && tag.front() == '/';
+    if (closing) tag.remove_prefix(1);
+    std::size_t n = 0;
+    while (n < tag.size() && (std::isalnum(static_cast<unsigned char>(tag[n])) || tag[n] == '_' ||
+                              tag[n] == ':' || tag[n] == '-'))
+      ++n;
+    const std::string name(tag.substr(0, n));
+    if (name.empty()) throw InputError(where.prefix() + "a tag without a name");
+    if (closing) {
+      if (open.empty() || open.back().first != name) {
+        throw InputError(fmt::format(
+            "{}</{}> closes {}", where.prefix(), name,
+            open.empty() ? std::string("nothing")
+                         : fmt::format("<{}> of line {}", open.back().first, open.back().second)));
+      }
+      open.pop_back();
+    } else {
+      const bool selfClosing = !tag.empty() && tag.back() == '/';
+      const auto attrs = attributes(tag.substr(n), where);
+      const auto number = [&](const char* key) {
+        for (const auto& [k, v] : attrs)
+          if (k == key) return parseNumber(v, where, fmt::format("<{}> {}", name, key));
+        throw InputError(fmt::format("{}<{}> has no {}", where.prefix(), name, key));
+      };
+      if (name == "Line") {
+        recording.walls.push_back({{number("x1"), number("y1")}, {number("x2"), number("y2")}});
+      } else if (name == "Circle") {
+        const double r = number("radius");
+        if (r <= 0.0)
+          throw InputError(fmt::format("{}<Circle> radius {} is not positive", where.prefix(), r));
+        recording.pillars.push_back({{number("x"), number("y")}, r});
+      }
+      if (!selfClosing) open.emplace_back(name, where.line);
+    }
+    at = end;
+  }
+  if (!open.empty()) {
+    throw InputError(
+        fmt::format("{}:{}: <{}> is never closed", file, open.back().second, open.back().first));
+  }
+}
+
+}  // namespace
+
+Recording readEthUcy(const std::string& folder, double fps) {
+  namespace fs = std::filesystem;
+  const fs::path obsmat = fs::path(folder) / "obsmat.txt";
+  if (!fs::exists(obsmat)) throw InputError(folder + ": no obsmat.txt in the folder");
+  const std::string file = obsmat.string();
+  const std::vector<std::string> lines = readLines(file);
+  struct Row {
+    double frame;
+    std::string id;
+    geometry::Vec2 p;
+    std::size_t line;
+  };
+  std::vector<Row> rows;
+  double first = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto f = splitWhitespace(lines[i]);
+    if (f.empty()) continue;
+    const Where where{file, i + 1};
+    if (f.size() != 8) {
+      throw InputError(fmt::format("{}{} numbers, a row has 8 (frame id x z y vx vz vy)",
+                                   where.prefix(), f.size()));
+    }
+    const char* names[] = {"frame", "id", "x", "z", "y", "vx", "vz", "vy"};
+    double v[8];
+    for (int k = 0; k < 8; ++k)
+      v[k] = parseNumber(f[static_cast<std::size_t>(k)], where, names[k]);
+    if (v[1] != std::floor(v[1]))
+      throw InputError(fmt::format("{}id {} is not a whole number", where.prefix(), v[1]));
+    rows.push_back({v[0], fmt::format("{}", static_cast<long long>(v[1])), {v[2], v[4]}, i + 1});
+    first = std::min(first, v[0]);
+  }
+  if (rows.empty()) throw InputError(file + ": empty file: no rows \"frame id x z y vx vz vy\"");
+  Recording recording;
+  recording.source = folder;
+  TrackCollector tracks;
+  for (const Row& r : rows)
+    tracks.add(r.id, (r.frame - first) / fps, r.p, {file, r.line});
+  recording.tracks = tracks.take();
+  if (const fs::path map = fs::path(folder) / "map.xml"; fs::exists(map))
+    readMap(map.string(), recording);
+  return recording;
+}
+
+}  // namespace camcov::import

@@ -1,0 +1,94 @@
+#include "import/lastrow_reader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+
+#include "import/text_fields.h"
+#include "import/track_collector.h"
+#include "util/input_error.h"
+
+namespace camcov::import {
+
+std::string colourHex(const std::string& name) {
+  static const std::map<std::string, std::string> kColours = {
+      {"black", "#000000"},   {"white", "#ffffff"},     {"red", "#ff0000"},
+      {"darkred", "#8b0000"}, {"blue", "#0000ff"},      {"darkblue", "#00008b"},
+      {"navy", "#000080"},    {"skyblue", "#87ceeb"},   {"lightblue", "#add8e6"},
+      {"green", "#008000"},   {"darkgreen", "#006400"}, {"yellow", "#ffff00"},
+      {"orange", "#ffa500"},  {"purple", "#800080"},    {"grey", "#808080"},
+      {"gray", "#808080"},    {"pink", "#ffc0cb"},      {"gold", "#ffd700"},
+      {"maroon", "#800000"},  {"cyan", "#00ffff"},      {"magenta", "#ff00ff"}};
+  std::string key;
+  for (const char c : name)
+    key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (key.size() == 7 && key[0] == '#') return key;
+  const auto it = kColours.find(key);
+  return it == kColours.end() ? std::string() : it->second;
+}
+
+Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) {
+  const std::vector<std::string> lines = readLines(file);
+  if (lines.empty() || lines.front().empty()) {
+    throw InputError(file + ": empty file: expected the header player,frame,x,y,...");
+  }
+  const std::vector<std::string> header = splitCsv(lines.front(), {file, 1});
+  const auto column = [&](const char* name) -> std::ptrdiff_t {
+    const auto it = std::find(header.begin(), header.end(), name);
+    return it == header.end() ? -1 : it - header.begin();
+  };
+  std::vector<std::string> missing;
+  for (const char* required : {"player", "frame", "x", "y"})
+    if (column(required) < 0) missing.push_back(required);
+  if (!missing.empty()) {
+    std::string list;
+    for (const auto& m : missing)
+      list += (list.empty() ? "" : ", ") + m;
+    throw InputError(
+        fmt::format("{}:1: missing column(s) {} (the header is {})", file, list, lines.front()));
+  }
+  const auto player = column("player"), frame = column("frame"), x = column("x"), y = column("y"),
+             team = column("team"), colour = column("bgcolor");
+  Recording recording;
+  recording.source = file;
+  recording.onPitch = true;
+  recording.pitch = pitch;
+  TrackCollector tracks;
+  std::vector<std::string> unknownColours;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    const Where where{file, i + 1};
+    const std::vector<std::string> f = splitCsv(lines[i], where);
+    if (f.size() < header.size()) {
+      throw InputError(
+          fmt::format("{}{} fields, the header has {}", where.prefix(), f.size(), header.size()));
+    }
+    const std::string id = f[static_cast<std::size_t>(player)];
+    if (id.empty()) throw InputError(where.prefix() + "column player is empty");
+    const double t = parseNumber(f[static_cast<std::size_t>(frame)], where, "column frame") / rate;
+    const geometry::Vec2 p{
+        parseNumber(f[static_cast<std::size_t>(x)], where, "column x") * pitch.length / 100.0,
+        parseNumber(f[static_cast<std::size_t>(y)], where, "column y") * pitch.width / 100.0};
+    const bool ball = team < 0 || f[static_cast<std::size_t>(team)].empty();
+    std::string hex;
+    if (!ball && colour >= 0) {
+      const std::string name = f[static_cast<std::size_t>(colour)];
+      hex = colourHex(name);
+      if (hex.empty() && !name.empty() &&
+          std::find(unknownColours.begin(), unknownColours.end(), name) == unknownColours.end())
+        unknownColours.push_back(name);
+    }
+    tracks.add(ball ? "ball" : id, t, p, where, ball ? "ball" : "person", hex);
+  }
+  if (tracks.empty()) throw InputError(file + ": no rows after the header");
+  recording.tracks = tracks.take();
+  for (const auto& name : unknownColours)
+    recording.notes.push_back("colour \"" + name +
+                              "\" is not one camcov knows: drawn in the default");
+  return recording;
+}
+
+}  // namespace camcov::import

@@ -1,0 +1,294 @@
+#include "import/scene_builder.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/ring.h"
+#include "util/input_error.h"
+
+namespace camcov::import {
+namespace {
+
+using geometry::Vec2;
+
+constexpr int kDiscVertices = 12;
+constexpr double kCameraInset = 1.0;  // m inside the boundary
+
+// Kept to the millimetre and the microsecond: files stay small and read the same everywhere.
+double mm(double v) {
+  return std::round(v * 1000.0) / 1000.0;
+}
+double us(double v) {
+  return std::round(v * 1e6) / 1e6;
+}
+
+std::string wktRing(const geometry::Ring& ring) {
+  std::string out = "POLYGON((";
+  for (std::size_t i = 0; i <= ring.size(); ++i) {
+    const Vec2 p = ring[i % ring.size()];
+    out += fmt::format("{}{} {}", i == 0 ? "" : ",", mm(p.x), mm(p.y));
+  }
+  return out + "))";
+}
+
+geometry::Ring disc(Vec2 centre, double radius) {
+  geometry::Ring ring;
+  for (int k = 0; k < kDiscVertices; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / kDiscVertices;
+    ring.push_back(centre + Vec2{radius * std::cos(a), radius * std::sin(a)});
+  }
+  return ring;
+}
+
+geometry::Ring wallRing(const Wall& w, double thickness) {
+  const Vec2 d = w.b - w.a;
+  const double length = geometry::norm(d);
+  const Vec2 n =
+      length > 0.0 ? Vec2{-d.y, d.x} * (0.5 * thickness / length) : Vec2{0.0, 0.5 * thickness};
+  const Vec2 along = length > 0.0 ? d * (0.5 * thickness / length) : Vec2{0.5 * thickness, 0.0};
+  // Ends extended by half the thickness, so walls that meet at a corner close it.
+  const Vec2 a = w.a - along, b = w.b + along;
+  return {a - n, b - n, b + n, a + n};
+}
+
+// A track's samples inside the window, shifted to start the scene's clock at `from`, split at
+// gaps longer than maxGap.
+std::vector<RecordedTrack> cut(const RecordedTrack& track, const SceneOptions& o) {
+  std::vector<RecordedTrack> pieces;
+  for (std::size_t k = 0; k < track.times.size(); ++k) {
+    const double t = track.times[k];
+    if (t < o.from - 1e-9 || t > o.to + 1e-9) continue;
+    const bool gap = !pieces.empty() && t - o.from - pieces.back().times.back() > o.maxGap + 1e-9;
+    if (pieces.empty() || gap) {
+      RecordedTrack piece = track;
+      piece.times.clear();
+      piece.positions.clear();
+      if (!pieces.empty()) piece.id = fmt::format("{}#{}", track.id, pieces.size() + 1);
+      pieces.push_back(std::move(piece));
+    }
+    pieces.back().times.push_back(us(t - o.from));
+    pieces.back().positions.push_back(track.positions[k]);
+  }
+  return pieces;
+}
+
+bool crossesAWall(const RecordedTrack& track, const std::vector<Wall>& walls) {
+  for (std::size_t k = 0; k + 1 < track.positions.size(); ++k) {
+    for (const Wall& w : walls) {
+      if (geometry::segmentsIntersect(track.positions[k], track.positions[k + 1], w.a, w.b))
+        return true;
+    }
+  }
+  return false;
+}
+
+// The start of the `length` s window with the most people present on average.
+double busiestStart(const Recording& recording, double length, double maxGap) {
+  constexpr double kTick = 0.1;
+  double end = 0.0;
+  for (const auto& t : recording.tracks)
+    end = std::max(end, t.times.back());
+  const std::size_t ticks = static_cast<std::size_t>(std::ceil(end / kTick)) + 1;
+  std::vector<int> present(ticks, 0);
+  for (const auto& t : recording.tracks) {
+    if (t.kind == "ball") continue;
+    for (std::size_t k = 0; k < t.times.size(); ++k) {
+      // This sample to the next, unless the gap between them splits the track.
+      const bool bridged = k + 1 < t.times.size() && t.times[k + 1] - t.times[k] <= maxGap + 1e-9;
+      const double until = bridged ? t.times[k + 1] : t.times[k];
+      for (auto i = static_cast<std::size_t>(std::ceil(t.times[k] / kTick - 1e-9));
+           i < ticks && i * kTick < until + (bridged ? 0.0 : 1e-9); ++i)
+        ++present[i];
+    }
+  }
+  const auto window = static_cast<std::size_t>(std::llround(length / kTick));
+  double best = 0.0;
+  long bestSum = -1;
+  for (double start = 0.0; start + length <= end + 1e-9 || start == 0.0; start += 1.0) {
+    const auto first = static_cast<std::size_t>(std::llround(start / kTick));
+    long sum = 0;
+    for (std::size_t i = first; i < std::min(ticks, first + window); ++i)
+      sum += present[i];
+    if (sum > bestSum) {
+      bestSum = sum;
+      best = start;
+    }
+    if (start + length > end) break;
+  }
+  return best;
+}
+
+}  // namespace
+
+BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
+  SceneOptions o = options;
+  BuiltScene built;
+  if (o.busiest > 0.0) {
+    o.from = busiestStart(recording, o.busiest, o.maxGap);
+    o.to = o.from + o.busiest;
+    built.notes.push_back(
+        fmt::format("the busiest {} s: from {} s to {} s", o.busiest, o.from, o.to));
+  }
+  built.notes.insert(built.notes.begin(), recording.notes.begin(), recording.notes.end());
+  std::vector<RecordedTrack> targets, movingObstacles;
+  int split = 0, outside = 0, crossing = 0, ballsLeftOut = 0;
+  for (const RecordedTrack& track : recording.tracks) {
+    const bool ball = track.kind == "ball";
+    if (ball && o.ball == BallAs::None) {
+      ++ballsLeftOut;
+      continue;
+    }
+    std::vector<RecordedTrack> pieces = cut(track, o);
+    if (pieces.empty()) ++outside;
+    if (pieces.size() > 1) ++split;
+    for (auto& piece : pieces) {
+      if (crossesAWall(piece, recording.walls)) ++crossing;
+      (ball && o.ball == BallAs::Obstacle ? movingObstacles : targets).push_back(std::move(piece));
+    }
+  }
+  if (targets.empty()) {
+    throw InputError(fmt::format("{}: no {} in the window [{}, {}] s: nothing to cover",
+                                 recording.source, recording.onPitch ? "player" : "person", o.from,
+                                 o.to));
+  }
+  // In order of appearance, then by id: the same recording gives the same file.
+  const auto byAppearance = [](const RecordedTrack& a, const RecordedTrack& b) {
+    return a.times.front() != b.times.front() ? a.times.front() < b.times.front() : a.id < b.id;
+  };
+  std::stable_sort(targets.begin(), targets.end(), byAppearance);
+  std::stable_sort(movingObstacles.begin(), movingObstacles.end(), byAppearance);
+  if (ballsLeftOut > 0)
+    built.notes.push_back("the ball is left out (--ball target|obstacle keeps it)");
+  if (outside > 0)
+    built.notes.push_back(fmt::format("{} tracks have no sample in the window", outside));
+  if (split > 0) {
+    built.notes.push_back(
+        fmt::format("{} tracks vanish for more than {} s and come back: each return is a new "
+                    "target (id#2, ...)",
+                    split, o.maxGap));
+  }
+  if (crossing > 0) {
+    built.notes.push_back(fmt::format(
+        "{} tracks cross a wall (recording noise): kept as recorded; walls occlude and block "
+        "cameras but do not stop people",
+        crossing));
+  }
+
+  // The boundary: the pitch with its run-off, or the box around everything plus the margin.
+  double x0, y0, x1, y1;
+  if (recording.onPitch) {
+    x0 = -o.margin, y0 = -o.margin;
+    x1 = recording.pitch.length + o.margin, y1 = recording.pitch.width + o.margin;
+  } else {
+    x0 = y0 = std::numeric_limits<double>::infinity();
+    x1 = y1 = -x0;
+    const auto grow = [&](Vec2 p, double r) {
+      x0 = std::min(x0, p.x - r), y0 = std::min(y0, p.y - r);
+      x1 = std::max(x1, p.x + r), y1 = std::max(y1, p.y + r);
+    };
+    for (const auto* group : {&targets, &movingObstacles})
+      for (const auto& t : *group)
+        for (const Vec2 p : t.positions)
+          grow(p, o.personRadius);
+    for (const Wall& w : recording.walls) {
+      grow(w.a, o.wallThickness);
+      grow(w.b, o.wallThickness);
+    }
+    for (const Pillar& p : recording.pillars)
+      grow(p.centre, p.radius);
+    x0 -= o.margin, y0 -= o.margin, x1 += o.margin, y1 += o.margin;
+  }
+  x0 = std::floor(x0), y0 = std::floor(y0), x1 = std::ceil(x1), y1 = std::ceil(y1);
+  const geometry::Ring boundary{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+
+  nlohmann::json& scene = built.scene;
+  const std::string until = std::isinf(o.to) ? std::string("its end") : fmt::format("{} s", o.to);
+  scene["description"] =
+      !o.description.empty() ? o.description
+      : recording.onPitch
+          ? fmt::format(
+                "Football players recorded in {} (Last Row, Friends of Tracking) on a {} m "
+                "x {} m pitch, {} s to {}",
+                recording.source, recording.pitch.length, recording.pitch.width, o.from, until)
+          : fmt::format(
+                "Pedestrians recorded in {} (ETH/UCY via OpenTraj), {} s to {} of the "
+                "recording",
+                recording.source, o.from, until);
+  scene["boundary"] = wktRing(boundary);
+  const auto tracked = [&](const RecordedTrack& t, double radius) {
+    nlohmann::json samples = nlohmann::json::array();
+    for (std::size_t k = 0; k < t.times.size(); ++k)
+      samples.push_back({t.times[k], mm(t.positions[k].x), mm(t.positions[k].y)});
+    nlohmann::json object = {{"shape", wktRing(disc({0.0, 0.0}, radius))},
+                             {"track", {{"samples", samples}}}};
+    if (!t.color.empty()) object["color"] = t.color;
+    return object;
+  };
+  scene["targets"] = nlohmann::json::array();
+  for (const auto& t : targets)
+    scene["targets"].push_back(tracked(t, t.kind == "ball" ? o.ballRadius : o.personRadius));
+  scene["obstacles"] = nlohmann::json::array();
+  std::vector<geometry::Ring> solid;  // where a camera must not start
+  for (const Wall& w : recording.walls) {
+    solid.push_back(wallRing(w, o.wallThickness));
+    scene["obstacles"].push_back({{"shape", wktRing(solid.back())}, {"path", "POLYGON((0 0))"}});
+  }
+  for (const Pillar& p : recording.pillars) {
+    solid.push_back(disc(p.centre, p.radius));
+    scene["obstacles"].push_back(
+        {{"shape", wktRing(disc({0.0, 0.0}, p.radius))},
+         {"path", fmt::format("POLYGON(({} {}))", mm(p.centre.x), mm(p.centre.y))}});
+  }
+  for (const auto& t : movingObstacles)
+    scene["obstacles"].push_back(tracked(t, o.ballRadius));
+  scene["cameraFoV"] = o.cameraHalfFovDeg;
+
+  // The camera team.
+  std::vector<geometry::Pose> poses;
+  if (o.cameraPoses) {
+    poses = *o.cameraPoses;
+  } else {
+    const Vec2 centre{(x0 + x1) / 2, (y0 + y1) / 2};
+    const geometry::Ring inner{{x0 + kCameraInset, y0 + kCameraInset},
+                               {x1 - kCameraInset, y0 + kCameraInset},
+                               {x1 - kCameraInset, y1 - kCameraInset},
+                               {x0 + kCameraInset, y1 - kCameraInset}};
+    const double perimeter = geometry::perimeter(inner);
+    const auto along = [&](double s) {  // the point at arc length s of the inner rectangle
+      s = std::fmod(s, perimeter);
+      for (std::size_t i = 0;; i = (i + 1) % 4) {
+        const Vec2 a = inner[i], b = inner[(i + 1) % 4];
+        const double l = geometry::distance(a, b);
+        if (s <= l) return geometry::lerp(a, b, s / l);
+        s -= l;
+      }
+    };
+    const auto free = [&](Vec2 p) {
+      return std::none_of(solid.begin(), solid.end(), [&](const geometry::Ring& r) {
+        return geometry::distanceToPolygon(r, p) < 0.5;
+      });
+    };
+    for (int j = 0; j < o.cameras; ++j) {
+      double s = perimeter * (j + 0.5) / o.cameras;
+      Vec2 p = along(s);
+      for (int tries = 0; !free(p) && tries < 1000; ++tries)
+        p = along(s += 0.25);
+      const Vec2 d = centre - p;
+      poses.push_back({mm(p.x), mm(p.y), std::atan2(d.y, d.x)});
+    }
+  }
+  scene["cameras"] = nlohmann::json::array();
+  for (const auto& p : poses) {
+    scene["cameras"].push_back(
+        {{"pos", fmt::format("POINT({} {})", mm(p.x), mm(p.y))},
+         {"angle", std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0},
+         {"maxVelocity", o.cameraSpeed},
+         {"maxAngularVelocity", o.cameraTurnRate}});
+  }
+  return built;
+}
+
+}  // namespace camcov::import

@@ -1,0 +1,58 @@
+#pragma once
+// A recording (recording.h) as a self-contained camcov scene (issue 26): every person a disc
+// target with its track, the ball left out or a target or an obstacle, walls as thin
+// obstacles and pillars as discs, a boundary around it all, and a camera team. Decisions:
+//  - a disc is a regular 12-gon of the given radius about the recorded point;
+//  - a track that disappears for longer than maxGap comes back as a new target (its id
+//    "7#2"), since nobody knows where the person was; shorter gaps are bridged in a straight
+//    line (the scene format's interpolation). Every split is reported;
+//  - walls occlude and block cameras but do not stop recorded people: a track that crosses a
+//    wall (the recordings are noisy) is kept as recorded and reported;
+//  - the busiest window: people present counted every 0.1 s, each track present from its
+//    first sample to its last (within maxGap of each other);
+//  - cameras (when not given) are spread evenly along the boundary, 1 m inside it, each
+//    facing the boundary's centre; one that would start inside an obstacle moves on along
+//    the boundary until it is free.
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/vec2.h"
+#include "import/recording.h"
+
+namespace camcov::import {
+
+enum class BallAs { None, Target, Obstacle };
+
+struct SceneOptions {
+  double from = 0.0;  // the window, s from the recording's start
+  double to = std::numeric_limits<double>::infinity();
+  // > 0: instead of from/to, the window this long with the most people present on average
+  // (starts on a 1 s grid, the earliest of equals).
+  double busiest = 0.0;
+  double personRadius = 0.25;  // m
+  double ballRadius = 0.11;    // m (a football)
+  BallAs ball = BallAs::None;
+  double maxGap = 1.0;         // s
+  double margin = 2.0;         // m beyond the tracks and walls (the pitch's run-off)
+  double wallThickness = 0.1;  // m
+  int cameras = 4;
+  std::optional<std::vector<geometry::Pose>> cameraPoses;  // --cameras-from
+  double cameraSpeed = 2.0;                                // m/s, v_max
+  double cameraTurnRate = 1.0;                             // rad/s, γ̇_max
+  double cameraHalfFovDeg = 30.0;                          // θ, degrees
+  std::string description;
+};
+
+struct BuiltScene {
+  nlohmann::json scene;            // the scene file's content
+  std::vector<std::string> notes;  // what was decided about the data, for the user
+};
+
+// InputError when nothing is left to make a scene of (no track in the window).
+BuiltScene buildScene(const Recording& recording, const SceneOptions& options);
+
+}  // namespace camcov::import

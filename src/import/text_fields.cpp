@@ -1,0 +1,87 @@
+#include "import/text_fields.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+#include "util/input_error.h"
+
+namespace camcov::import {
+
+std::string Where::prefix() const {
+  return line == 0 ? file + ": " : fmt::format("{}:{}: ", file, line);
+}
+
+double parseNumber(std::string_view text, const Where& where, std::string_view what) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+    text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
+    text.remove_suffix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    throw InputError(fmt::format("{}{}: \"{}\" is not a number", where.prefix(), what, text));
+  }
+  if (!std::isfinite(value)) {
+    throw InputError(
+        fmt::format("{}{}: \"{}\" is not a finite number", where.prefix(), what, text));
+  }
+  return value;
+}
+
+std::vector<std::string> splitCsv(std::string_view line, const Where& where) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  if (quoted) throw InputError(where.prefix() + "a quoted field is not closed");
+  return fields;
+}
+
+std::vector<std::string_view> splitWhitespace(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i])))
+      ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])))
+      ++i;
+    if (i > start) fields.push_back(line.substr(start, i - start));
+  }
+  return fields;
+}
+
+std::vector<std::string> readLines(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file + ": cannot open the file");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+  }
+  if (in.bad()) throw InputError(file + ": cannot read the file");
+  return lines;
+}
+
+}  // namespace camcov::import

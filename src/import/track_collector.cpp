@@ -1,0 +1,23 @@
+#include "import/track_collector.h"
+
+#include <fmt/format.h>
+
+#include "util/input_error.h"
+
+namespace camcov::import {
+
+void TrackCollector::add(const std::string& id, double time, geometry::Vec2 position,
+                         const Where& where, const std::string& kind, const std::string& color) {
+  auto [it, fresh] = index_.try_emplace(id, tracks_.size());
+  if (fresh) tracks_.push_back({id, color, kind, {}, {}});
+  RecordedTrack& track = tracks_[it->second];
+  if (!track.times.empty() && time <= track.times.back()) {
+    throw InputError(
+        fmt::format("{}{} {} at t = {} s after t = {} s: time goes backwards or repeats",
+                    where.prefix(), kind, id, time, track.times.back()));
+  }
+  track.times.push_back(time);
+  track.positions.push_back(position);
+}
+
+}  // namespace camcov::import

@@ -1,0 +1,26 @@
+#pragma once
+// Gathers the rows of a recording into one track per id, in order of first appearance, and
+// refuses time that does not move forward for an id (with the file and line).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "import/recording.h"
+#include "import/text_fields.h"
+
+namespace camcov::import {
+
+class TrackCollector {
+ public:
+  // The track of `id`, made on first sight with `kind` and `color`.
+  void add(const std::string& id, double time, geometry::Vec2 position, const Where& where,
+           const std::string& kind = "person", const std::string& color = "");
+  std::vector<RecordedTrack> take() { return std::move(tracks_); }
+  bool empty() const { return tracks_.empty(); }
+
+ private:
+  std::vector<RecordedTrack> tracks_;
+  std::map<std::string, std::size_t> index_;
+};
+
+}  // namespace camcov::import

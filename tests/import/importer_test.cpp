@@ -1,0 +1,254 @@
+// `camcov import` (issue 26) on the committed extracts (tests/data/tracks, sources named in its
+// README): sample times and positions as the source rows say (read here independently),
+// interpolation between them, people entering and leaving, the window, a track that comes back
+// after a gap; every kind of bad input exits 2 naming the file and line and writes nothing;
+// and every recording in ../shared/tracks imports, validates and runs with every method.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/run_camcov.h"
+#include "support/scratch.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kTracks = testDataDir() / "tracks";
+
+nlohmann::json importScene(const std::string& arguments, const fs::path& out) {
+  const auto r = runCamcov("import " + arguments + " -o " + out.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  return nlohmann::json::parse(readFile(out));
+}
+
+// Reference position of the scene's target `i` at time t, as `camcov state` says.
+std::vector<double> stateReference(const fs::path& scene, double t, std::size_t id) {
+  const auto r = runCamcov("state " + scene.string() + " --time " + std::to_string(t));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json state = nlohmann::json::parse(r.out);
+  for (const auto& target : state["targets"]) {
+    if (target["id"] == id) return target["reference"].get<std::vector<double>>();
+  }
+  return {};
+}
+
+TEST(ImportLastRow, PlayersAreTeamColouredDiscsAtTheScaledRecordedPositions) {
+  const ScratchDir dir;
+  const fs::path out = dir / "football.json";
+  const nlohmann::json scene =
+      importScene("lastrow " + (kTracks / "lastrow_extract.csv").string() + " --cameras 2", out);
+  // The source rows, read here: player 12 and 1214 (the ball, player 0, is left out).
+  std::map<std::string, std::vector<std::array<double, 3>>> rows;
+  std::ifstream csv(kTracks / "lastrow_extract.csv");
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    std::stringstream fields(line);
+    std::string player, frame, x, y;
+    std::getline(fields, player, ',');
+    std::getline(fields, frame, ',');
+    std::getline(fields, x, ',');
+    std::getline(fields, y, ',');
+    if (player != "0")
+      rows[player].push_back({std::stod(frame) / 20.0, std::stod(x) * 1.05, std::stod(y) * 0.68});
+  }
+  ASSERT_EQ(scene["targets"].size(), 2u);
+  ASSERT_EQ(scene["cameras"].size(), 2u);
+  const std::vector<std::string> order{"12", "1214"};  // both at t = 0: by id, as text
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& target = scene["targets"][i];
+    EXPECT_EQ(target["color"], "#ff0000") << "bgcolor red";
+    const auto& samples = target["track"]["samples"];
+    const auto& expected = rows[order[i]];
+    ASSERT_EQ(samples.size(), expected.size());
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      EXPECT_NEAR(samples[k][0].get<double>(), expected[k][0], 1e-6);
+      EXPECT_NEAR(samples[k][1].get<double>(), expected[k][1], 5e-4);
+      EXPECT_NEAR(samples[k][2].get<double>(), expected[k][2], 5e-4);
+    }
+  }
+  // Between two samples, on the straight line between them.
+  const auto& s = scene["targets"][1]["track"]["samples"];
+  const auto mid = stateReference(out, 0.125, 1);
+  ASSERT_EQ(mid.size(), 2u);
+  EXPECT_NEAR(mid[0], 0.5 * (s[2][1].get<double>() + s[3][1].get<double>()), 1e-9);
+  EXPECT_NEAR(mid[1], 0.5 * (s[2][2].get<double>() + s[3][2].get<double>()), 1e-9);
+  // The pitch and its 5 m run-off.
+  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -5,110 -5,110 73,-5 73,-5 -5))");
+
+  EXPECT_EQ(importScene("lastrow " + (kTracks / "lastrow_extract.csv").string() + " --ball target",
+                        dir / "ball-target.json")["targets"]
+                .size(),
+            3u);
+  const nlohmann::json ball =
+      importScene("lastrow " + (kTracks / "lastrow_extract.csv").string() + " --ball obstacle",
+                  dir / "ball.json");
+  ASSERT_EQ(ball["obstacles"].size(), 1u);
+  EXPECT_EQ(ball["obstacles"][0]["track"]["samples"].size(), 6u);
+}
+
+TEST(ImportEthUcy, PedestriansEnterAndLeaveWallsBecomeObstaclesAndTheWindowCuts) {
+  const ScratchDir dir;
+  const fs::path out = dir / "zara.json";
+  const std::string folder = (kTracks / "ethucy_extract").string();
+  const nlohmann::json scene = importScene("ethucy " + folder + " --fps 25", out);
+  ASSERT_EQ(scene["targets"].size(), 3u);
+  EXPECT_EQ(scene["obstacles"].size(), 7u) << "the seven <Line> walls of map.xml";
+  // Pedestrian 3 enters at frame 51 = 2 s; pedestrian 1 leaves after frame 81 = 3.2 s.
+  EXPECT_NEAR(scene["targets"][2]["track"]["samples"][0][0].get<double>(), 2.0, 1e-9);
+  EXPECT_NEAR(scene["targets"][0]["track"]["samples"].back()[0].get<double>(), 3.2, 1e-9);
+  // The first row of pedestrian 1: x = -2.829260, y (pos_y, the fifth number) = 18.95935.
+  EXPECT_NEAR(scene["targets"][0]["track"]["samples"][0][1].get<double>(), -2.829, 1e-9);
+  EXPECT_NEAR(scene["targets"][0]["track"]["samples"][0][2].get<double>(), 18.959, 1e-9);
+  const auto ids = [&](double t) {
+    const auto r = runCamcov("state " + out.string() + " --time " + std::to_string(t));
+    std::vector<int> present;
+    const nlohmann::json state = nlohmann::json::parse(r.out);
+    for (const auto& target : state["targets"])
+      present.push_back(target["id"]);
+    return present;
+  };
+  EXPECT_EQ(ids(1.0), (std::vector<int>{0, 1}));
+  EXPECT_EQ(ids(3.0), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(ids(4.0), (std::vector<int>{1, 2}));
+
+  const nlohmann::json window =
+      importScene("ethucy " + folder + " --fps 25 --from 3 --to 4", dir / "window.json");
+  ASSERT_EQ(window["targets"].size(), 3u);
+  EXPECT_NEAR(window["targets"][2]["track"]["samples"][0][0].get<double>(), 0.2, 1e-9)
+      << "frame 81 = 3.2 s is 0.2 s into the window";
+}
+
+TEST(ImportEthUcy, ATrackThatComesBackAfterAGapIsANewTargetAndSaysSo) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "gap");
+  std::ofstream(dir / "gap" / "obsmat.txt") << "1 7 0 0 1 0 0 0\n11 7 1 0 1 0 0 0\n"
+                                               "101 7 2 0 1 0 0 0\n111 7 3 0 1 0 0 0\n";
+  const auto r = runCamcov("import ethucy " + (dir / "gap").string() + " --fps 25 -o " +
+                           (dir / "gap.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("1 tracks vanish for more than 1 s and come back"), std::string::npos)
+      << r.err;
+  const auto scene = nlohmann::json::parse(readFile(dir / "gap.json"));
+  ASSERT_EQ(scene["targets"].size(), 2u);
+  EXPECT_NEAR(scene["targets"][1]["track"]["samples"][0][0].get<double>(), 4.0, 1e-9);
+}
+
+struct BadInput {
+  const char* name;
+  const char* importer;  // "lastrow" or "ethucy"
+  const char* file;      // what is written: the CSV, or obsmat.txt (ethucy)
+  const char* map;       // ethucy: map.xml, or nullptr for none
+  const char* message;   // expected in stderr, after the file name
+};
+
+constexpr const char* kHeader = "player,frame,x,y,team,bgcolor\n";
+
+const BadInput kBadInputs[] = {
+    {"lastrow_empty_file", "lastrow", "", nullptr, ": empty file"},
+    {"lastrow_missing_column", "lastrow", "player,frame,y\n1,0,3\n", nullptr,
+     ":1: missing column(s) x"},
+    {"lastrow_short_row", "lastrow", "player,frame,x,y,team,bgcolor\n1,0,3,4,attack,red\n1,1,3\n",
+     nullptr, ":3: 3 fields, the header has 6"},
+    {"lastrow_nan", "lastrow", "player,frame,x,y,team,bgcolor\n1,0,nan,4,attack,red\n", nullptr,
+     ":2: column x: \"nan\" is not a finite number"},
+    {"lastrow_not_a_number", "lastrow", "player,frame,x,y,team,bgcolor\n1,first,3,4,attack,red\n",
+     nullptr, ":2: column frame: \"first\" is not a number"},
+    {"lastrow_time_backwards", "lastrow",
+     "player,frame,x,y,team,bgcolor\n1,5,3,4,attack,red\n1,4,3,4,attack,red\n", nullptr,
+     ":3: person 1 at t = 0.2 s after t = 0.25 s: time goes backwards"},
+    {"lastrow_unclosed_quote", "lastrow", "player,frame,x,y,team,bgcolor\n1,0,3,4,\"attack,red\n",
+     nullptr, ":2: a quoted field is not closed"},
+    {"ethucy_empty_file", "ethucy", "", nullptr, "obsmat.txt: empty file"},
+    {"ethucy_short_row", "ethucy", "1 1 0 0 1 0 0 0\n11 1 0 0 1 0 0\n", nullptr,
+     "obsmat.txt:2: 7 numbers, a row has 8"},
+    {"ethucy_nan", "ethucy", "1 1 NaN 0 1 0 0 0\n", nullptr,
+     "obsmat.txt:1: x: \"NaN\" is not a finite number"},
+    {"ethucy_not_a_number", "ethucy", "1 1 0 0 one 0 0 0\n", nullptr,
+     "obsmat.txt:1: y: \"one\" is not a number"},
+    {"ethucy_time_backwards", "ethucy", "11 1 0 0 1 0 0 0\n1 1 0 0 1 0 0 0\n", nullptr,
+     "obsmat.txt:2: person 1 at t = 0 s after t = 0.4 s"},
+    {"ethucy_unclosed_tag", "ethucy", "1 1 0 0 1 0 0 0\n",
+     "<obstacles>\n<Line x1=\"0\" y1=\"0\" x2=\"1\" y2=\"1\" />\n",
+     "map.xml:1: <obstacles> is never closed"},
+    {"ethucy_mismatched_tag", "ethucy", "1 1 0 0 1 0 0 0\n", "<a>\n<b>\n</a>\n",
+     "map.xml:3: </a> closes <b> of line 2"},
+    {"ethucy_line_without_x2", "ethucy", "1 1 0 0 1 0 0 0\n",
+     "<Line x1=\"0\" y1=\"0\" y2=\"1\" />\n", "map.xml:1: <Line> has no x2"},
+    {"ethucy_circle_without_radius", "ethucy", "1 1 0 0 1 0 0 0\n",
+     "<Circle x=\"0\" y=\"1\" radius=\"0\" />\n", "map.xml:1: <Circle> radius 0 is not positive"},
+    {"ethucy_tag_not_closed", "ethucy", "1 1 0 0 1 0 0 0\n", "<Line x1=\"0\"\n",
+     "map.xml:1: a tag is not closed"},
+};
+
+class ImportBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(ImportBadInput, ExitsWithTwoNamingFileAndLineAndWritesNothing) {
+  const BadInput& c = GetParam();
+  const ScratchDir dir;
+  std::string input;
+  if (std::string(c.importer) == "lastrow") {
+    input = (dir / "input.csv").string();
+    std::ofstream(input) << c.file;
+  } else {
+    fs::create_directories(dir / "input");
+    std::ofstream(dir / "input" / "obsmat.txt") << c.file;
+    if (c.map != nullptr) std::ofstream(dir / "input" / "map.xml") << c.map;
+    input = (dir / "input").string();
+  }
+  const fs::path out = dir / "out.json";
+  const auto r =
+      runCamcov("import " + std::string(c.importer) + " " + input +
+                (std::string(c.importer) == "ethucy" ? " --fps 25" : "") + " -o " + out.string());
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, ImportBadInput, ::testing::ValuesIn(kBadInputs),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// Every recording of ../shared/tracks (next to the published scenes) imports, validates, and
+// runs with every method, with targets present changing over time.
+TEST(ImportSharedTracks, EveryRecordingImportsAndRunsWithEveryMethod) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  const fs::path tracks = publishedScenesDir().parent_path() / "tracks";
+  ASSERT_TRUE(fs::exists(tracks)) << tracks;
+  const ScratchDir dir;
+  const std::pair<std::string, std::string> recordings[] = {
+      {"lastrow " + (tracks / "football" / "liverpool_2-1_chelsea.csv").string(), "liverpool"},
+      {"lastrow " + (tracks / "football" / "real_madrid_vs_barcelona.csv").string() +
+           " --ball obstacle",
+       "madrid"},
+      {"ethucy " + (tracks / "pedestrians" / "eth_univ").string() + " --fps 15", "univ"},
+      {"ethucy " + (tracks / "pedestrians" / "eth_hotel").string() + " --fps 25", "hotel"},
+      {"ethucy " + (tracks / "pedestrians" / "ucy_zara01").string() + " --fps 25", "zara"},
+  };
+  for (const auto& [arguments, name] : recordings) {
+    const fs::path scene = dir / (name + ".json");
+    importScene(arguments + " --from 2 --to 8", scene);
+    for (const std::string method : {"paper", "local", "nearest-unseen"}) {
+      const auto r = runCamcov("run " + scene.string() + " --method " + method +
+                               " --duration 6 --set global.K=50 --out " + (dir / "runs").string());
+      ASSERT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.err;
+      const auto run =
+          nlohmann::json::parse(readFile(dir / "runs" / (name + "-" + method + "-seed1.json")));
+      const auto& present = run["series"]["targetsPresent"];
+      ASSERT_FALSE(present.empty()) << name;
+      if (name.rfind("liverpool", 0) != 0 && name != "madrid") {
+        EXPECT_NE(std::min_element(present.begin(), present.end())->get<int>(),
+                  std::max_element(present.begin(), present.end())->get<int>())
+            << name << ": people come and go";
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace camcov::testing
