@@ -69,6 +69,9 @@ MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string&
       runs.coverage.median = std::move(coverage);
       runs.utilization.median = std::move(utilization);
       runs.events = std::move(run.events);
+      for (const auto& step : run.steps) {
+        if (step.targetsPresent >= 0) runs.targetsPresent.push_back(step.targetsPresent);
+      }
       for (auto& e : runs.events)
         e.path.clear();
     }
@@ -115,6 +118,7 @@ SceneGroup sceneGroup(const std::string& name, const scene::Scene* scene) {
   if (startsWith(name, "static")) return SceneGroup::Static;
   if (startsWith(name, "dynamic")) return SceneGroup::Dynamic;
   if (scene == nullptr) return SceneGroup::Other;
+  if (scene->hasPresenceWindows()) return SceneGroup::Recorded;
   const auto isStatic = [](const scene::MovingObject& o) { return o.isStatic(); };
   return std::all_of(scene->targets.begin(), scene->targets.end(), isStatic) &&
                  std::all_of(scene->obstacles.begin(), scene->obstacles.end(), isStatic)
@@ -128,6 +132,8 @@ const char* groupName(SceneGroup group) {
       return "static";
     case SceneGroup::Dynamic:
       return "dynamic";
+    case SceneGroup::Recorded:
+      return "recorded";
     case SceneGroup::Other:
       break;
   }
@@ -140,6 +146,8 @@ const char* groupTitle(SceneGroup group) {
       return "Static scenes";
     case SceneGroup::Dynamic:
       return "Dynamic scenes";
+    case SceneGroup::Recorded:
+      return "Recorded people";
     case SceneGroup::Other:
       break;
   }

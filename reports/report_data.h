@@ -33,13 +33,16 @@ struct MethodRuns {
   SeriesBand coverage;
   SeriesBand utilization;
   std::vector<control::ControlEvent> events;  // of the median-seed run, paths dropped
+  std::vector<int> targetsPresent;  // of the median-seed run; empty unless targets come and go
   // The start of every contact closer than δ in any seed ("avoidable-contact" and
   // "unavoidable-contact" events), with its seed: rare, and each one worth seeing.
   std::vector<std::pair<std::uint64_t, control::ControlEvent>> contacts;
 };
 
-enum class SceneGroup { Static, Dynamic, Other };
+// Recorded: people from recorded tracks, who come and go (scene::Track).
+enum class SceneGroup { Static, Dynamic, Recorded, Other };
 inline constexpr SceneGroup kSceneGroups[] = {SceneGroup::Static, SceneGroup::Dynamic,
+                                              SceneGroup::Recorded,
                                               SceneGroup::Other};  // in report order
 
 struct SceneData {
@@ -59,8 +62,9 @@ struct ReportData {
   std::vector<std::string> videos;  // relative URLs of videos/*.mp4, natural order
 };
 
-// The published benchmark's names say it ("static7", "dynamic9"); other scenes count as
-// static when nothing in them moves, turns or deforms, and as Other when unreadable.
+// The published benchmark's names say it ("static7", "dynamic9"); other scenes are Recorded
+// when their targets come and go, static when nothing in them moves, turns or deforms, and
+// Other when unreadable.
 SceneGroup sceneGroup(const std::string& name, const scene::Scene* scene);
 const char* groupName(SceneGroup group);   // "static", for attributes
 const char* groupTitle(SceneGroup group);  // "Static scenes", for headings

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 
 #include "kinematics/kinematics.h"
 #include "reports/markup.h"
@@ -185,12 +186,14 @@ std::string motionText(const scene::MovingObject& o) {
 }
 
 // Shapes and paths of targets or obstacles; their speed labels go to `labels`.
+// Those present at t = 0 (a recorded person may enter later): placed[i] is specs[ids[i]].
 std::string objects(const WorldToSvg& map, const std::vector<scene::MovingObject>& specs,
-                    const std::vector<geometry::Ring>& placed, std::string_view fill,
-                    double fillOpacity, std::string_view kind, LabelPlacer& labels) {
+                    const std::vector<geometry::Ring>& placed, std::span<const std::uint32_t> ids,
+                    std::string_view fill, double fillOpacity, std::string_view kind,
+                    LabelPlacer& labels) {
   std::string shapes, paths;
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    const auto& o = specs[i];
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const auto& o = specs[ids[i]];
     shapes += fmt::format(
         "<polygon class=\"{}\" points=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke=\"{}\" "
         "stroke-width=\"1.2\"/>\n",
@@ -322,8 +325,10 @@ std::string sceneSvg(const scene::Scene& s, double maxSize) {
       labels.reserve(boxOf(mapped(map, ring)));
   }
   const std::string views = cameras(map, s, labels);
-  out += objects(map, s.obstacles, world.obstacles, kObstacleColor, 0.85, "obstacle", labels);
-  out += objects(map, s.targets, world.targets, kTargetColor, 0.3, "target", labels);
+  out += objects(map, s.obstacles, world.obstacles, world.obstacleIds, kObstacleColor, 0.85,
+                 "obstacle", labels);
+  out +=
+      objects(map, s.targets, world.targets, world.targetIds, kTargetColor, 0.3, "target", labels);
   return out + views + labels.svg() + "</svg>\n";
 }
 

@@ -119,6 +119,39 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
   return c.svg();
 }
 
+// Recorded tracks: how many people are present over time (the scene's, the same for every
+// method), and how many steps had nobody to cover.
+std::string presenceChart(const SceneData& scene, double duration) {
+  const MethodRuns* runs = nullptr;
+  for (const auto& [method, r] : scene.methods) {
+    if (!r.targetsPresent.empty()) runs = &r;
+  }
+  if (runs == nullptr) return {};
+  const int most = *std::max_element(runs->targetsPresent.begin(), runs->targetsPresent.end());
+  ChartSpec spec;
+  spec.width = kChartWidth;
+  spec.height = kChartHeight * 0.7;
+  spec.ariaLabel = fmt::format("people present over time, {}", scene.name);
+  spec.x = {"time, s", 0.0, duration, 7};
+  spec.y = {"people present", 0.0, std::max(1.0, static_cast<double>(most)), 5};
+  Chart c(spec);
+  std::vector<double> count(runs->targetsPresent.begin(), runs->targetsPresent.end());
+  c.addLine(runs->time, count, "#5b6472", 1.6);
+  return c.svg();
+}
+
+std::string presenceNote(const SceneData& scene) {
+  for (const auto& [method, r] : scene.methods) {
+    if (r.targetsPresent.empty()) continue;
+    const auto empty = std::count(r.targetsPresent.begin(), r.targetsPresent.end(), 0);
+    return fmt::format(
+        " · at most {} people at once; {} of {} steps without anyone, left out of the averages",
+        *std::max_element(r.targetsPresent.begin(), r.targetsPresent.end()), empty,
+        r.targetsPresent.size());
+  }
+  return {};
+}
+
 std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& methods,
                         double duration) {
   std::vector<std::string> parts;
@@ -128,7 +161,7 @@ std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& 
     parts.push_back(fmt::format("{}: {} seeds, median seed {}", method,
                                 it->second.averageCoverage.size(), it->second.medianSeed));
   }
-  const std::string caption = join(parts, "; ");
+  const std::string caption = join(parts, "; ") + presenceNote(scene);
   return fmt::format(
       "<figure class=\"series\" id=\"{}\" data-figure=\"series\" data-scene=\"{}\">\n"
       "<figcaption><b>{}</b> <span class=\"muted\">{} · <a href=\"#{}\">scene</a>{}</span>"
@@ -140,7 +173,8 @@ std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& 
           : fmt::format(" · <a class=\"explore\" href=\"{}\">explore these runs</a>",
                         escapeXml(scene.explorerUrl)),
       chart(scene, methods, &MethodRuns::coverage, "coverage", duration),
-      chart(scene, methods, &MethodRuns::utilization, "utilization", duration));
+      chart(scene, methods, &MethodRuns::utilization, "utilization", duration) +
+          presenceChart(scene, duration));
 }
 
 }  // namespace

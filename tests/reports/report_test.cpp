@@ -208,3 +208,25 @@ TEST(Report, SameFolderSameBytesButTheBuildContext) {
 
 }  // namespace
 }  // namespace camcov::testing
+
+namespace camcov::testing {
+namespace {
+
+TEST(Report, RecordedPeopleHaveTheirOwnGroupAndThePeoplePresentOverTime) {
+  const ScratchDir dir;
+  const auto r = runCamcov("bench --scenes " + (testDataDir() / "scenes_tracks").string() +
+                           " --seeds 2 --duration 4 --set global.K=30 --videos none --out " +
+                           (dir / "results").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string html = readFile(dir / "results" / "report.html");
+  EXPECT_NE(section(html, "summary").find("Recorded people"), std::string::npos);
+  const std::string series = section(html, "time-series");
+  // Nobody before 0.5 s and after 3 s: 5 + 10 of the 41 steps.
+  EXPECT_NE(series.find("at most 2 people at once; 15 of 41 steps without anyone"),
+            std::string::npos)
+      << series.substr(0, 2000);
+  EXPECT_EQ(countOf(series, "aria-label=\"people present over time, comes_and_goes\""), 1);
+}
+
+}  // namespace
+}  // namespace camcov::testing
