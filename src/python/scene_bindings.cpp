@@ -53,7 +53,21 @@ void bindScene(py::module_& m) {
       .def_property_readonly("targets",
                              [](const kinematics::World& w) { return ringsToList(w.targets); })
       .def_property_readonly("obstacles",
-                             [](const kinematics::World& w) { return ringsToList(w.obstacles); });
+                             [](const kinematics::World& w) { return ringsToList(w.obstacles); })
+      // Recorded tracks come and go: which of the scene's objects each ring is.
+      .def_property_readonly("target_ids",
+                             [](const kinematics::World& w) {
+                               std::vector<std::uint32_t> ids;
+                               for (std::size_t i = 0; i < w.targets.size(); ++i)
+                                 ids.push_back(kinematics::targetId(w, i));
+                               return ids;
+                             })
+      .def_property_readonly("obstacle_ids", [](const kinematics::World& w) {
+        std::vector<std::uint32_t> ids;
+        for (std::size_t i = 0; i < w.obstacles.size(); ++i)
+          ids.push_back(kinematics::obstacleId(w, i));
+        return ids;
+      });
 
   py::class_<PythonScene, std::shared_ptr<PythonScene>>(
       m, "Scene", "A validated scene (camcov.load_scene, camcov.parse_scene).")

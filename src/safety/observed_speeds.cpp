@@ -4,34 +4,49 @@
 
 namespace camcov::safety {
 
-void ObservedSpeeds::Kind::update(const std::vector<geometry::Ring>& now, double elapsed) {
+void ObservedSpeeds::Kind::update(const std::vector<geometry::Ring>& now,
+                                  const kinematics::World& world,
+                                  std::uint32_t (*idOf)(const kinematics::World&, std::size_t),
+                                  double elapsed) {
   speeds.resize(now.size());
-  lastStep.resize(now.size());
   fastest.assign(now.size(), 0.0);
+  std::vector<geometry::Ring> seen;  // by id, this observation
   for (std::size_t i = 0; i < now.size(); ++i) {
     const geometry::Ring& ring = now[i];
-    // Nothing seen before, or a ring whose vertex count changed (no correspondence with its
-    // past): speed unknown, taken as 0.
-    std::vector<double> step(ring.size(), 0.0);
-    if (elapsed > 0.0 && i < previous.size() && previous[i].size() == ring.size()) {
-      for (std::size_t v = 0; v < ring.size(); ++v)
-        step[v] = geometry::distance(ring[v], previous[i][v]) / elapsed;
+    const std::uint32_t id = idOf(world, i);
+    if (id >= lastStep.size()) {
+      lastStep.resize(id + 1);
+      previous.resize(id + 1);
     }
-    if (lastStep[i].size() != ring.size()) lastStep[i].assign(ring.size(), 0.0);
+    // Nothing seen before (or absent one step ago), or a ring whose vertex count changed (no
+    // correspondence with its past): speed unknown, taken as 0.
+    std::vector<double> step(ring.size(), 0.0);
+    if (elapsed > 0.0 && previous[id].size() == ring.size()) {
+      for (std::size_t v = 0; v < ring.size(); ++v)
+        step[v] = geometry::distance(ring[v], previous[id][v]) / elapsed;
+    }
+    if (lastStep[id].size() != ring.size()) lastStep[id].assign(ring.size(), 0.0);
     speeds[i].resize(ring.size());
     for (std::size_t v = 0; v < ring.size(); ++v) {
-      speeds[i][v] = std::max(step[v], lastStep[i][v]);
+      speeds[i][v] = std::max(step[v], lastStep[id][v]);
       fastest[i] = std::max(fastest[i], speeds[i][v]);
     }
-    lastStep[i] = std::move(step);
+    lastStep[id] = std::move(step);
+    if (seen.size() <= id) seen.resize(id + 1);
+    seen[id] = ring;
   }
-  previous = now;
+  // Objects absent now have no past at the next observation.
+  seen.resize(std::max(seen.size(), previous.size()));
+  for (std::size_t id = 0; id < previous.size(); ++id) {
+    if (seen[id].empty()) lastStep[id].clear();
+  }
+  previous = std::move(seen);
 }
 
 void ObservedSpeeds::observe(const kinematics::World& world) {
   const double elapsed = lastTime_ ? world.time - *lastTime_ : 0.0;
-  targets_.update(world.targets, elapsed);
-  obstacles_.update(world.obstacles, elapsed);
+  targets_.update(world.targets, world, kinematics::targetId, elapsed);
+  obstacles_.update(world.obstacles, world, kinematics::obstacleId, elapsed);
   lastTime_ = world.time;
 }
 

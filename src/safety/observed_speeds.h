@@ -21,7 +21,7 @@ class ObservedSpeeds {
   // Takes the world at its time (later than the last one observed).
   void observe(const kinematics::World& world);
 
-  // Speed bound of vertex v of target i / obstacle i, m/s.
+  // Speed bound of vertex v of the world's target i / obstacle i, m/s.
   double target(std::size_t i, std::size_t v) const { return targets_.speeds[i][v]; }
   double obstacle(std::size_t i, std::size_t v) const { return obstacles_.speeds[i][v]; }
   // The fastest vertex of the object, m/s.
@@ -29,13 +29,16 @@ class ObservedSpeeds {
   double fastestObstacle(std::size_t i) const { return obstacles_.fastest[i]; }
 
  private:
-  // Targets, or obstacles: per object and vertex.
+  // Targets, or obstacles. The past is kept per object of the scene (its id: recorded people
+  // come and go, so the world's order changes), the answers per ring of the present world.
   struct Kind {
-    std::vector<geometry::Ring> previous;       // the rings at the last observation
-    std::vector<std::vector<double>> lastStep;  // speed over the last step
-    std::vector<std::vector<double>> speeds;    // the larger of the last two steps'
-    std::vector<double> fastest;                // the largest of `speeds`
-    void update(const std::vector<geometry::Ring>& now, double elapsed);
+    std::vector<geometry::Ring> previous;       // by id: the ring at the last observation,
+                                                // empty if the object was absent
+    std::vector<std::vector<double>> lastStep;  // by id: speed over the last step
+    std::vector<std::vector<double>> speeds;    // by world ring: the larger of the last two
+    std::vector<double> fastest;                // by world ring: the largest of `speeds`
+    void update(const std::vector<geometry::Ring>& now, const kinematics::World& world,
+                std::uint32_t (*idOf)(const kinematics::World&, std::size_t), double elapsed);
   };
 
   std::optional<double> lastTime_;  // of the last observation; none yet

@@ -150,13 +150,15 @@ std::vector<HalfPlane> SafetyFilter::planes(bool comfortable) const {
   return result;
 }
 
-Verdict SafetyFilter::explain(std::size_t j, double vmax, std::span<const HalfPlane> hard) const {
-  auto name = [](const Threat& t) {
+Verdict SafetyFilter::explain(const kinematics::World& world, std::size_t j, double vmax,
+                              std::span<const HalfPlane> hard) const {
+  // Objects by their index in the scene (the world lists only those present).
+  auto name = [&world](const Threat& t) {
     switch (t.source) {
       case Threat::Source::Target:
-        return fmt::format("target {}", t.index);
+        return fmt::format("target {}", kinematics::targetId(world, t.index));
       case Threat::Source::Obstacle:
-        return fmt::format("obstacle {}", t.index);
+        return fmt::format("obstacle {}", kinematics::obstacleId(world, t.index));
       case Threat::Source::Camera:
         return fmt::format("camera {}", t.index);
       case Threat::Source::Boundary:
@@ -215,7 +217,7 @@ void SafetyFilter::apply(const kinematics::World& world, std::span<const geometr
     const bool withinDelta =
         std::any_of(threats_.begin() + static_cast<std::ptrdiff_t>(hardCount_), threats_.end(),
                     [this](const Threat& t) { return t.distance < delta_; });
-    if (!keeping || withinDelta) verdicts_[j] = explain(j, vmax, hard);
+    if (!keeping || withinDelta) verdicts_[j] = explain(world, j, vmax, hard);
     if (!u) u = leastViolatingVelocity(hard, hardCount_, vmax, desired).velocity;
     if (enabled_) velocities[j] = *u;
   }

@@ -83,7 +83,8 @@ class SafetyFilter {
                  geometry::Vec2 position, double reach);
   std::vector<HalfPlane> planes(bool comfortable) const;
   // Why no velocity keeps δ, from the half-planes of level 2 (`hard`, one per threat).
-  Verdict explain(std::size_t camera, double maxSpeed, std::span<const HalfPlane> hard) const;
+  Verdict explain(const kinematics::World& world, std::size_t camera, double maxSpeed,
+                  std::span<const HalfPlane> hard) const;
 
   std::vector<double> maxSpeeds_;
   bool enabled_;

@@ -54,3 +54,13 @@ def test_parameters_take_dotted_keys_and_refuse_what_the_cli_refuses(cli):
     result = cli("params", "--set", "global.K=-1")
     assert result.returncode == 2
     assert str(error.value) in result.stderr
+
+
+def test_a_world_names_the_recorded_targets_present_by_their_index_in_the_scene():
+    scene = camcov.load_scene(str(TEST_DATA / "scenes_tracks" / "comes_and_goes.json"))
+    assert scene.world_at(0.2).target_ids == []
+    assert scene.world_at(0.7).target_ids == [1]
+    assert scene.world_at(1.5).target_ids == [0, 1]
+    world = scene.world_at(2.8)
+    assert world.target_ids == [0] and len(world.targets) == 1
+    assert camcov.load_scene(str(TEST_DATA / "scenes" / "tiny_static.json")).world_at(0).target_ids == [0]
