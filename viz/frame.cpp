@@ -1,5 +1,7 @@
 #include "viz/frame.h"
 
+#include "scene/pitch_markings.h"
+
 #include <fmt/format.h>
 
 #include "reward/metrics.h"
@@ -34,6 +36,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& scene)
   addPaths(scene.obstacles, paths_);
   for (const auto& t : scene.targets)
     colours_.push_back(rgbFromHex(t.color));
+  if (scene.pitch) markings_ = scene::pitchMarkings(*scene.pitch);
 }
 
 void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, Frame& out) {
@@ -53,6 +56,7 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
     c.plan.clear();
   }
   out.paths = paths_;
+  out.markings = markings_;
 
   out.caption.title = sceneName_;
   out.caption.subtitle.clear();

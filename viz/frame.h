@@ -56,6 +56,7 @@ struct Frame {
   std::vector<visibility::Segment> segments;  // every target's boundary, seen or not
   std::vector<CameraView> cameras;
   std::vector<ObjectPath> paths;
+  std::vector<std::vector<geometry::Vec2>> markings;  // a football pitch's (scene::Pitch)
 };
 
 // Computes frames of one scene. Keeps the sweep's buffers between calls, so stepping through a
@@ -75,6 +76,7 @@ class FrameBuilder {
   std::vector<double> halfFovs_;             // θ_j
   std::vector<std::optional<Rgb>> colours_;  // of each scene target
   std::vector<ObjectPath> paths_;
+  std::vector<std::vector<geometry::Vec2>> markings_;
   visibility::Occluders occluders_;
   visibility::Sweep sweep_;
 };

@@ -19,6 +19,7 @@ using geometry::Vec2;
 constexpr Rgb kBarTrack{0.84, 0.85, 0.87};
 constexpr double kPlanWidth = 0.14;
 constexpr double kObjectPathWidth = 0.09;
+constexpr double kPitchLineWidth = 0.08;
 
 // The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
 // entry (palette.h).
@@ -28,6 +29,14 @@ constexpr PanelRows kPanelRows{5, std::size(kLegendEntries)};
 void setPathDash(cairo_t* cr, double em) {
   const double dash[] = {0.35 * em, 0.25 * em};
   cairo_set_dash(cr, dash, 2, 0.0);
+}
+
+// A pitch's lines, thin and pale: the ground, not a thing to see.
+void drawMarkings(const Painter& p, std::span<const std::vector<Vec2>> lines) {
+  for (const auto& line : lines) {
+    p.polylinePath(line);
+    p.stroke(kPitchLine, kPitchLineWidth);
+  }
 }
 
 // Thin dashed loops with an arrow in the direction of travel on the longest leg.
@@ -303,6 +312,7 @@ void drawStill(cairo_t* cr, const Frame& frame, const FrameLayout& layout) {
   clippedTo(cr, layout.worldArea, [&] {
     const Painter painter(cr, layout.toImage, layout.em);
     drawArena(painter, frame.world);
+    drawMarkings(painter, frame.markings);
     drawObjectPaths(painter, frame.paths);
   });
   clippedTo(cr, layout.panel, [&] { drawPanelStill(cr, layout, frame.caption); });

@@ -39,17 +39,19 @@ std::uint64_t nextSerial() {
 struct StillKey {
   geometry::Ring boundary;
   std::vector<ObjectPath> paths;
+  std::vector<std::vector<geometry::Vec2>> markings;
   std::string title;
   std::string subtitle;
 
   bool matches(const Frame& frame) const {
-    return boundary == frame.world.boundary && paths == frame.paths &&
+    return boundary == frame.world.boundary && paths == frame.paths && markings == frame.markings &&
            title == frame.caption.title && subtitle == frame.caption.subtitle;
   }
 };
 
 StillKey stillKeyOf(const Frame& frame) {
-  return {frame.world.boundary, frame.paths, frame.caption.title, frame.caption.subtitle};
+  return {frame.world.boundary, frame.paths, frame.markings, frame.caption.title,
+          frame.caption.subtitle};
 }
 
 Surface imageSurface(int width, int height) {

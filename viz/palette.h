@@ -27,7 +27,8 @@ inline constexpr Rgb kPlan{0.15, 0.42, 0.82};
 inline constexpr Rgb kText{0.13, 0.15, 0.19};
 inline constexpr Rgb kMutedText{0.38, 0.41, 0.46};
 inline constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
-inline constexpr double kViewAlpha = 0.28;  // views are translucent: overlaps look darker
+inline constexpr Rgb kPitchLine{0.74, 0.77, 0.80};  // a football pitch's markings
+inline constexpr double kViewAlpha = 0.28;          // views are translucent: overlaps look darker
 
 // A target edge by how many cameras see it: none red, one green, more in darker greens (the
 // frames draw seen and unseen; the explorer tells the counts apart).

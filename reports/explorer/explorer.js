@@ -203,6 +203,10 @@
                 height: maxY - minY + 2 * pad, fill: P.page}, svg);
     el("polygon", {points: pts(boundary), fill: P.floor, stroke: P.wall,
                    "stroke-width": 2, "vector-effect": "non-scaling-stroke"}, svg);
+    for (const line of data.scene.markings) {
+      el("polyline", {points: pts(line), fill: "none", stroke: P.pitchLine, "stroke-width": 1.2,
+                      "vector-effect": "non-scaling-stroke", class: "marking"}, svg);
+    }
     for (const path of data.scene.paths) {
       const loop = el("polygon", {points: pts(path.loop), fill: "none", stroke: P.objectPath,
                                   "stroke-width": 1.2, "stroke-dasharray": "6 4",

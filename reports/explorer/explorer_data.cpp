@@ -10,6 +10,7 @@
 
 #include "reports/explorer/packed_stream.h"
 #include "reports/method_style.h"
+#include "scene/pitch_markings.h"
 #include "util/input_error.h"
 #include "visibility/unseen_reason.h"
 #include "viz/palette.h"
@@ -204,6 +205,7 @@ nlohmann::json paletteJson() {
           {"camera", viz::cssColour(viz::kCamera)},
           {"plan", viz::cssColour(viz::kPlan)},
           {"objectPath", viz::cssColour(viz::kObjectPath)},
+          {"pitchLine", viz::cssColour(viz::kPitchLine)},
           {"text", viz::cssColour(viz::kText)},
           {"mutedText", viz::cssColour(viz::kMutedText)},
           {"legend", legend}};
@@ -214,6 +216,15 @@ nlohmann::json ringJson(std::span<const Vec2> ring) {
   for (const Vec2 p : ring)
     out.push_back({static_cast<double>(quantize(p.x, kMillimetres)) / kMillimetres,
                    static_cast<double>(quantize(p.y, kMillimetres)) / kMillimetres});
+  return out;
+}
+
+// A football pitch's lines, drawn as the frames draw them.
+nlohmann::json markingsJson(const scene::Scene& scene) {
+  nlohmann::json out = nlohmann::json::array();
+  if (!scene.pitch) return out;
+  for (const auto& line : scene::pitchMarkings(*scene.pitch))
+    out.push_back(ringJson(line));
   return out;
 }
 
@@ -297,6 +308,7 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
        {{"name", scene.name},
         {"boundary", ringJson(scene.boundary)},
         {"paths", objectPathsJson(scene)},
+        {"markings", markingsJson(scene)},
         {"colors",
          {{"targets", colours(scene.targets)}, {"obstacles", colours(scene.obstacles)}}}}},
       {"palette", paletteJson()},

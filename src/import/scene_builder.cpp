@@ -218,6 +218,8 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
                 "recording",
                 recording.source, o.from, until);
   scene["boundary"] = wktRing(boundary);
+  if (recording.onPitch)
+    scene["pitch"] = {{"length", recording.pitch.length}, {"width", recording.pitch.width}};
   const auto tracked = [&](const RecordedTrack& t, double radius) {
     nlohmann::json samples = nlohmann::json::array();
     for (std::size_t k = 0; k < t.times.size(); ++k)

@@ -69,6 +69,13 @@ struct CameraSpec {
   double halfFov = 0.0;             // θ_j, radians, in (0, π): the scene's θ unless its own
 };
 
+// Our extension for football scenes: a pitch from (0, 0) to (length, width), whose markings
+// are drawn under everything (scene/pitch_markings.h). Drawing only: nothing collides with it.
+struct Pitch {
+  double length = 0.0;  // m, along x
+  double width = 0.0;   // m, along y
+};
+
 struct Scene {
   std::string name;         // file stem, e.g. "dynamic9"
   std::string description;  // optional "description" key (our extension), may be empty
@@ -76,6 +83,7 @@ struct Scene {
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;
   std::vector<CameraSpec> cameras;
+  std::optional<Pitch> pitch;  // "pitch": {"length", "width"} (our extension)
 
   // Some object comes and goes (a recorded track): its records carry targetsPresent.
   bool hasPresenceWindows() const;

@@ -309,12 +309,23 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     throw SceneError(sourceName, "", std::string("invalid JSON: ") + e.what());
   }
   const Node root(document, "", sourceName);
-  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description"});
+  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch"});
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
   if (root.has("description")) scene.description = root.child("description").string();
   scene.boundary = simpleRing(root.child("boundary"));
+  if (root.has("pitch")) {
+    const Node pitch = root.child("pitch");
+    pitch.object({"length", "width"});
+    const auto size = [](const Node& n, const char* what) {
+      const double v = positive(n, what);
+      if (v > kMaxCoordinate)
+        n.fail(fmt::format("{} {} lies beyond {:g} m", what, v, kMaxCoordinate));
+      return v;
+    };
+    scene.pitch = Pitch{size(pitch.child("length"), "length"), size(pitch.child("width"), "width")};
+  }
 
   const Node targets = root.child("targets");
   scene.targets = objects(targets);

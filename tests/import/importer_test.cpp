@@ -81,6 +81,8 @@ TEST(ImportLastRow, PlayersAreTeamColouredDiscsAtTheScaledRecordedPositions) {
   EXPECT_NEAR(mid[1], 0.5 * (s[2][2].get<double>() + s[3][2].get<double>()), 1e-9);
   // The pitch and its 5 m run-off.
   EXPECT_EQ(scene["boundary"], "POLYGON((-5 -5,110 -5,110 73,-5 73,-5 -5))");
+  EXPECT_EQ(scene["pitch"], (nlohmann::json{{"length", 105.0}, {"width", 68.0}}))
+      << "for its markings";
 
   EXPECT_EQ(importScene("lastrow " + (kTracks / "lastrow_extract.csv").string() + " --ball target",
                         dir / "ball-target.json")["targets"]

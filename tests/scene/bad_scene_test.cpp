@@ -71,6 +71,7 @@ const BadCase kBadCases[] = {
     {"track_no_samples", "targets[0].track.samples", "at least one sample"},
     {"track_outside_boundary", "targets[0].track.samples[1]", "outside the boundary"},
     {"color_not_hex", "targets[0].color", "#rrggbb"},
+    {"pitch_negative_length", "pitch.length", "must be positive"},
 };
 
 class BadScene : public ::testing::TestWithParam<BadCase> {};
