@@ -295,6 +295,8 @@
         if (s.visibleBy.includes(sel.camera)) sees += length(s);
       }
       field(info, "sees", "sees", `${sees.toFixed(3)} m of ${total.toFixed(3)} m of target boundary`);
+      // Its own term of eq. (3): the coverage it would give alone.
+      field(info, "coverage", "its coverage", total > 0 ? (sees / total).toFixed(4) : "—");
       field(info, "nearest-object", "nearest object", c.object === 0 ? "none"
             : `${objectName(c.object)} at ${c.objectDistance.toFixed(3)} m`);
       field(info, "nearest-camera", "nearest camera", c.other === 0 ? "none"
