@@ -37,7 +37,9 @@ TEST(RecordedTracks, StepsCountThePresentEventsMarkEntriesAndAveragesSkipEmptySt
     const int expected =
         (t >= 0.5 - 1e-9 && t <= 2.5 + 1e-9) + (t >= 1.0 - 1e-9 && t <= 3.0 + 1e-9);
     EXPECT_EQ(present[k].get<int>(), expected) << "t = " << t;
-    if (expected == 0) EXPECT_EQ(series["coverage"][k].get<double>(), 0.0) << "t = " << t;
+    if (expected == 0) {
+      EXPECT_EQ(series["coverage"][k].get<double>(), 0.0) << "t = " << t;
+    }
   }
   std::vector<std::pair<double, std::string>> entries;
   for (const auto& e : j["events"]) {
