@@ -92,11 +92,12 @@
         const view = r.points(U.centimetres, 0, 0);
         const objectDistance = r.u() / U.millimetres, object = r.u();
         const other = r.u(), cameraDistance = r.u() / U.millimetres;
+        const coverage = r.u() / U.terms, utilization = r.u() / U.terms;
         cameras.push({
           x: pose[j][0] / U.millimetres, y: pose[j][1] / U.millimetres, yaw: pose[j][2] / U.yaw,
           goal: goal[j] && {x: goal[j][0] / U.millimetres, y: goal[j][1] / U.millimetres,
                             yaw: goal[j][2] / U.yaw},
-          plan, view, object, objectDistance, other, cameraDistance,
+          plan, view, object, objectDistance, other, cameraDistance, coverage, utilization,
         });
       }
       const segments = [];
@@ -295,8 +296,9 @@
         if (s.visibleBy.includes(sel.camera)) sees += length(s);
       }
       field(info, "sees", "sees", `${sees.toFixed(3)} m of ${total.toFixed(3)} m of target boundary`);
-      // Its own term of eq. (3): the coverage it would give alone.
-      field(info, "coverage", "its coverage", total > 0 ? (sees / total).toFixed(4) : "—");
+      // Its own terms of the reward, eq. (3) and (5), as camcov computed them.
+      field(info, "coverage", "its coverage", c.coverage.toFixed(4));
+      field(info, "utilization", "its utilization", c.utilization.toFixed(4));
       field(info, "nearest-object", "nearest object", c.object === 0 ? "none"
             : `${objectName(c.object)} at ${c.objectDistance.toFixed(3)} m`);
       field(info, "nearest-camera", "nearest camera", c.other === 0 ? "none"

@@ -10,6 +10,7 @@
 
 #include "reports/explorer/packed_stream.h"
 #include "reports/method_style.h"
+#include "reward/metrics.h"
 #include "scene/pitch_markings.h"
 #include "util/input_error.h"
 #include "visibility/unseen_reason.h"
@@ -149,6 +150,20 @@ class StepPacker {
     out.putUnsigned(other);
     out.putUnsigned(other == 0 ? 0
                                : static_cast<std::uint64_t>(quantize(nearestCamera, kMillimetres)));
+
+    // Its own terms of eq. (3) and (5): what the reward would count for it alone.
+    own_.clear();
+    for (visibility::Segment s : frame.segments) {
+      if ((s.visibleBy >> j & 1u) == 0) continue;
+      s.visibleBy = 1;  // it is camera 0 of a team of one
+      own_.push_back(s);
+    }
+    const double halfFov[] = {halfFovs_[j]};
+    const geometry::Pose alone[] = {c.pose};
+    out.putUnsigned(static_cast<std::uint64_t>(
+        std::llround(reward::coverage(own_, reward::targetPerimeter(frame.world)) * kTermUnits)));
+    out.putUnsigned(static_cast<std::uint64_t>(
+        std::llround(reward::utilization(own_, alone, halfFov) * kTermUnits)));
   }
 
   void putSegments(const viz::Frame& frame, PackedStream& out) {
@@ -182,6 +197,7 @@ class StepPacker {
   }
 
   std::vector<double> halfFovs_;
+  std::vector<visibility::Segment> own_;  // one camera's segments, reused
   std::size_t targetCount_ = 0;
   std::vector<std::vector<std::int64_t>> objects_;  // by scene index: vertices the last time
   std::vector<std::array<std::int64_t, 3>> poses_;
@@ -314,6 +330,7 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
       {"palette", paletteJson()},
       {"units",
        {{"millimetres", kMillimetres},
+        {"terms", kTermUnits},
         {"centimetres", kCentimetres},
         {"yaw", kYawUnits},
         {"alongEdge", kAlongEdge}}},

@@ -20,7 +20,7 @@
 //              differences from the previous (the first from the camera); view: n, then the
 //              points in cm likewise but the first from 0; nearest object: distance in mm, object
 //              (0 none, 1 + 2i target i, 2 + 2i obstacle i); nearest camera: 1 + index (0
-//              none), distance mm
+//              none), distance mm; its own coverage and utilization terms (eq. 3, 5) × 10^6
 //   segments   count, then per segment: target (scene index), edge, where it starts and ends
 //              along the edge (fractions × 10^6), visibleBy, and for each camera not in it the
 //              reason: kind + 8 · (blocker kind + 4 · blocker's scene index)
@@ -41,6 +41,7 @@ inline constexpr double kMillimetres = 1000.0;  // per m, for objects, cameras, 
 inline constexpr double kCentimetres = 100.0;   // per m, for views
 inline constexpr double kYawUnits = 1e4;        // per rad
 inline constexpr double kAlongEdge = 1e6;       // per edge length
+inline constexpr double kTermUnits = 1e6;       // per unit of a reward term
 
 // Throws InputError when the runs are not of one scene (name and file hash) or a run does not
 // fit the scene (viz::RunReplay's checks).

@@ -492,17 +492,28 @@ def test_a_clicked_segment_shows_who_sees_it_and_its_length_as_camcov_inspect_do
     assert_no_console_errors(explorer)
 
 
-def test_a_clicked_camera_shows_its_pose(explorer, paper_page):
+def test_a_clicked_camera_shows_its_pose_and_its_own_coverage_term(explorer, paper_page, camcov,
+                                                                   tmp_path):
     page, run = paper_page
-    cameras = len(run["series"]["cameras"])
+    series = run["series"]
+    cameras = len(series["cameras"])
+    k = step_nearest(run, 2.0)
+    reference = inspect_step(camcov, run, k, tmp_path)
     explorer.open(page)
+    explorer.seek(k)
     assert len(explorer.world(0).find_elements(By.CSS_SELECTOR, "g.camera")) == cameras
     explorer.click(explorer.world(0).find_element(By.CSS_SELECTOR, 'g.camera[data-camera="0"]'))
     pose = explorer.wait_for(lambda: explorer.field(0, "pose"), lambda text: text != "",
                              "the pose of a clicked camera")
-    first_number(pose)
+    x, y, yaw = (float(v) for v in re.findall(r"-?\d+\.\d+", pose)[:3])
+    recorded = series["cameras"][0][k]
+    assert abs(x - recorded[0]) <= 1e-3 and abs(y - recorded[1]) <= 1e-3, pose
+    assert abs(yaw - math.degrees(recorded[2])) <= 0.06, pose
+    # Its own coverage term, eq. (3): what camcov inspect says it sees over the boundary length.
+    own = reference["cameras"][0]["visibleLength"] / reference["targetPerimeter"]
+    assert_shows_fraction(explorer.field(0, "coverage"), own, "camera 0's own coverage")
+    assert re.fullmatch(r"\d\.\d{4}", explorer.field(0, "utilization"))
     assert_no_console_errors(explorer)
-
 
 def test_the_first_and_last_steps_look_different(explorer, paper_page, tmp_path):
     page, run = paper_page
