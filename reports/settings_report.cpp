@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include "records/atomic_file.h"
@@ -32,16 +33,36 @@ double mean(const std::vector<double>& values) {
   return records::describe(values).mean;
 }
 
-// Setting i against the reference on one scene and method; empty when either did not run it
-// (or i is the reference).
-std::optional<records::RunsComparison> versusReference(const SettingsData& data, std::size_t i,
-                                                       const std::string& scene,
-                                                       const std::string& method) {
-  if (i == data.reference) return std::nullopt;
-  const SettingRuns* here = runsOf(data.settings[i], scene, method);
-  const SettingRuns* reference = runsOf(data.settings[data.reference], scene, method);
-  if (here == nullptr || reference == nullptr) return std::nullopt;
-  return records::compareRuns(here->averageCoverage, reference->averageCoverage);
+// Every setting against the reference on each scene and method it ran, tested once: the
+// sections read the verdicts several times. By setting, then (scene, method); the reference
+// and what either did not run have none.
+using Verdicts =
+    std::vector<std::map<std::pair<std::string, std::string>, records::RunsComparison>>;
+
+Verdicts testAgainstReference(const SettingsData& data) {
+  Verdicts verdicts(data.settings.size());
+  const Setting& reference = data.settings[data.reference];
+  for (std::size_t i = 0; i < data.settings.size(); ++i) {
+    if (i == data.reference) continue;
+    for (const auto& scene : data.scenes) {
+      for (const auto& method : data.methods) {
+        const SettingRuns* here = runsOf(data.settings[i], scene, method);
+        const SettingRuns* base = runsOf(reference, scene, method);
+        if (here != nullptr && base != nullptr) {
+          verdicts[i][{scene, method}] =
+              records::compareRuns(here->averageCoverage, base->averageCoverage);
+        }
+      }
+    }
+  }
+  return verdicts;
+}
+
+const records::RunsComparison* versusReference(const Verdicts& verdicts, std::size_t i,
+                                               const std::string& scene,
+                                               const std::string& method) {
+  const auto it = verdicts[i].find({scene, method});
+  return it == verdicts[i].end() ? nullptr : &it->second;
 }
 
 // One setting and method over every scene it ran: the mean of the per-scene means, and the
@@ -52,7 +73,8 @@ struct Overall {
   int wins = 0, ties = 0, losses = 0;
 };
 
-Overall overall(const SettingsData& data, std::size_t i, const std::string& method) {
+Overall overall(const SettingsData& data, const Verdicts& verdicts, std::size_t i,
+                const std::string& method) {
   Overall o;
   double sum = 0.0;
   for (const auto& scene : data.scenes) {
@@ -60,7 +82,7 @@ Overall overall(const SettingsData& data, std::size_t i, const std::string& meth
     if (runs == nullptr) continue;
     sum += mean(runs->averageCoverage);
     ++o.scenes;
-    if (const auto c = versusReference(data, i, scene, method)) {
+    if (const auto c = versusReference(verdicts, i, scene, method)) {
       (c->verdict == records::Verdict::Better  ? o.wins
        : c->verdict == records::Verdict::Worse ? o.losses
                                                : o.ties)++;
@@ -84,7 +106,8 @@ std::string settingHeading(const Setting& s, bool reference) {
   return reference ? name + "<br><span class=\"muted\">reference</span>" : name;
 }
 
-std::string header(const SettingsData& data, const BuildContext& context) {
+std::string header(const SettingsData& data, const Verdicts& verdicts,
+                   const BuildContext& context) {
   const Setting& reference = data.settings[data.reference];
   std::string out = "<header class=\"report-header\">\n<h1>camcov settings side by side</h1>\n";
   out += fmt::format(
@@ -94,9 +117,9 @@ std::string header(const SettingsData& data, const BuildContext& context) {
       data.settings.size(), data.scenes.size(), escapeXml(reference.label), records::kSignificance);
   for (const auto& method : data.methods) {
     std::size_t best = data.reference;
-    Overall bestOverall = overall(data, best, method);
+    Overall bestOverall = overall(data, verdicts, best, method);
     for (std::size_t i = 0; i < data.settings.size(); ++i) {
-      const Overall o = overall(data, i, method);
+      const Overall o = overall(data, verdicts, i, method);
       if (o.scenes > 0 && (bestOverall.scenes == 0 || o.meanCoverage > bestOverall.meanCoverage)) {
         best = i;
         bestOverall = o;
@@ -114,8 +137,8 @@ std::string header(const SettingsData& data, const BuildContext& context) {
                      "loses {} of {} scenes.</p>\n",
                      methodName(method), escapeXml(data.settings[best].label),
                      fixed(bestOverall.meanCoverage, 3),
-                     fixed(overall(data, data.reference, method).meanCoverage, 3), bestOverall.wins,
-                     bestOverall.ties, bestOverall.losses,
+                     fixed(overall(data, verdicts, data.reference, method).meanCoverage, 3),
+                     bestOverall.wins, bestOverall.ties, bestOverall.losses,
                      bestOverall.wins + bestOverall.ties + bestOverall.losses);
   }
   out += "<dl class=\"facts\">\n";
@@ -179,7 +202,7 @@ std::string settingsSection(const SettingsData& data) {
 
 // Per method, a box per setting over the scenes: how much its mean coverage differs from the
 // reference setting's on each scene.
-std::string differencePlot(const SettingsData& data) {
+std::string differencePlot(const SettingsData& data, const Verdicts& verdicts) {
   if (data.settings.size() < 2) return {};
   ChartSpec spec;
   spec.width =
@@ -201,7 +224,7 @@ std::string differencePlot(const SettingsData& data) {
     deltas[k].resize(data.methods.size());
     for (std::size_t m = 0; m < data.methods.size(); ++m) {
       for (const auto& scene : data.scenes) {
-        if (const auto c = versusReference(data, shown[k], scene, data.methods[m])) {
+        if (const auto c = versusReference(verdicts, shown[k], scene, data.methods[m])) {
           deltas[k][m].push_back(c->meanDifference);
           lo = std::min(lo, c->meanDifference);
           hi = std::max(hi, c->meanDifference);
@@ -243,7 +266,7 @@ std::string differencePlot(const SettingsData& data) {
       chart.svg());
 }
 
-std::string overallSection(const SettingsData& data) {
+std::string overallSection(const SettingsData& data, const Verdicts& verdicts) {
   std::string head = "<th scope=\"col\">Method</th>";
   for (std::size_t i = 0; i < data.settings.size(); ++i)
     head += "<th scope=\"col\">" + settingHeading(data.settings[i], i == data.reference) + "</th>";
@@ -252,7 +275,7 @@ std::string overallSection(const SettingsData& data) {
     rows += fmt::format("<tr data-method=\"{}\"><th scope=\"row\">{}</th>", escapeXml(method),
                         methodName(method));
     for (std::size_t i = 0; i < data.settings.size(); ++i) {
-      const Overall o = overall(data, i, method);
+      const Overall o = overall(data, verdicts, i, method);
       if (o.scenes == 0) {
         rows += "<td class=\"num\">—</td>";
         continue;
@@ -273,11 +296,11 @@ std::string overallSection(const SettingsData& data) {
       "setting wins / ties / loses against the reference setting.</p>\n<div "
       "class=\"table-wrap\"><table class=\"overall\">\n<thead><tr>{}</tr></thead>\n<tbody>\n{}"
       "</tbody></table></div>\n{}</section>\n",
-      head, rows, differencePlot(data));
+      head, rows, differencePlot(data, verdicts));
 }
 
-std::string sceneCell(const SettingsData& data, std::size_t i, const std::string& scene,
-                      const std::string& method, bool best) {
+std::string sceneCell(const SettingsData& data, const Verdicts& verdicts, std::size_t i,
+                      const std::string& scene, const std::string& method, bool best) {
   const SettingRuns* runs = runsOf(data.settings[i], scene, method);
   if (runs == nullptr) return "<td class=\"num\">—</td>";
   const records::Description d = records::describe(runs->averageCoverage);
@@ -288,7 +311,7 @@ std::string sceneCell(const SettingsData& data, std::size_t i, const std::string
       title = fmt::format("n = {}, median {}, mean utilization {}", d.count, fixed(d.median, 3),
                           fixed(mean(runs->averageUtilization), 3));
   if (runs->failed > 0) title += fmt::format(", {} failed", runs->failed);
-  if (const auto c = versusReference(data, i, scene, method)) {
+  if (const auto c = versusReference(verdicts, i, scene, method)) {
     verdict = c->verdict == records::Verdict::Better  ? "better"
               : c->verdict == records::Verdict::Worse ? "worse"
                                                       : "tie";
@@ -308,7 +331,7 @@ std::string sceneCell(const SettingsData& data, std::size_t i, const std::string
       escapeXml(data.settings[i].name), d.mean, verdict, escapeXml(title), text, mark);
 }
 
-std::string perSceneSection(const SettingsData& data) {
+std::string perSceneSection(const SettingsData& data, const Verdicts& verdicts) {
   std::string head = "<th scope=\"col\">Scene</th><th scope=\"col\">Method</th>";
   for (std::size_t i = 0; i < data.settings.size(); ++i)
     head += "<th scope=\"col\">" + settingHeading(data.settings[i], i == data.reference) + "</th>";
@@ -352,7 +375,7 @@ std::string perSceneSection(const SettingsData& data) {
         }
         body += "<td>" + methodName(methods[k]) + "</td>";
         for (std::size_t i = 0; i < data.settings.size(); ++i) {
-          body += sceneCell(data, i, scene, methods[k],
+          body += sceneCell(data, verdicts, i, scene, methods[k],
                             data.settings.size() > 1 && atBest == 1 && best == i);
         }
         body += "</tr>\n";
@@ -386,9 +409,10 @@ std::string buildSettingsReportHtml(const SettingsData& data, const BuildContext
       "<nav class=\"toc\" aria-label=\"Sections\"><ul><li><a href=\"#settings\">Settings</a>"
       "</li><li><a href=\"#overall\">Over all scenes</a></li><li><a href=\"#per-scene\">Per "
       "scene</a></li></ul></nav>\n<div class=\"page\">\n";
-  html += header(data, context);
-  html += "<main>\n" + settingsSection(data) + overallSection(data) + perSceneSection(data) +
-          "</main>\n";
+  const Verdicts verdicts = testAgainstReference(data);
+  html += header(data, verdicts, context);
+  html += "<main>\n" + settingsSection(data) + overallSection(data, verdicts) +
+          perSceneSection(data, verdicts) + "</main>\n";
   html += fmt::format(
       "<footer>Written by camcov {} from the results folders alone, except the build date and "
       "machine in the header; <code>camcov report FOLDER...</code> writes it again.</footer>\n"
