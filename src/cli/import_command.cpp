@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "cli/command.h"
 #include "import/ethucy_reader.h"
 #include "import/lastrow_reader.h"
 #include "import/scene_builder.h"
-#include "kinematics/kinematics.h"
 #include "records/atomic_file.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
@@ -38,16 +38,9 @@ int writeImported(const import::BuiltScene& built, const ImportOptions& o) {
   for (const auto& note : built.notes)
     std::cerr << "note: " << note << "\n";
   records::writeFileAtomically(o.out, text);
-  double end = 0.0;
-  for (const auto& t : s.targets)
-    end = std::max(end, t.track ? t.track->end() : 0.0);
-  std::size_t most = 0;
-  const kinematics::Kinematics k(s);
-  for (double t = 0.0; t <= end; t += 0.1)
-    most = std::max(most, k.worldAt(t).targets.size());
   std::cout << fmt::format(
       "{}: {} targets over {:.1f} s (at most {} at once), {} obstacles, {} cameras\n", o.out,
-      s.targets.size(), end, most, s.obstacles.size(), s.cameras.size());
+      s.targets.size(), built.duration, built.mostAtOnce, s.obstacles.size(), s.cameras.size());
   return 0;
 }
 

@@ -85,40 +85,52 @@ bool crossesAWall(const RecordedTrack& track, const std::vector<Wall>& walls) {
   return false;
 }
 
-// The start of the `length` s window with the most people present on average.
-double busiestStart(const Recording& recording, double length, double maxGap) {
-  constexpr double kTick = 0.1;
+constexpr double kTick = 0.1;  // s between the instants people are counted at
+
+// How many of `tracks` are present (from their first sample to their last, as the scene
+// format has it) at each tick from 0 to the last sample.
+std::vector<int> presentPerTick(const std::vector<RecordedTrack>& tracks) {
   double end = 0.0;
-  for (const auto& t : recording.tracks)
+  for (const auto& t : tracks)
     end = std::max(end, t.times.back());
-  const std::size_t ticks = static_cast<std::size_t>(std::ceil(end / kTick)) + 1;
-  std::vector<int> present(ticks, 0);
+  std::vector<int> present(static_cast<std::size_t>(std::floor(end / kTick + 1e-9)) + 1, 0);
+  for (const auto& t : tracks) {
+    const auto first = static_cast<std::size_t>(std::ceil(t.times.front() / kTick - 1e-9));
+    const auto last = static_cast<std::size_t>(std::floor(t.times.back() / kTick + 1e-9));
+    for (std::size_t i = first; i <= last && i < present.size(); ++i)
+      ++present[i];
+  }
+  return present;
+}
+
+// The start (a whole second) of the `length` s window with the most people present on
+// average, counting them as the scene will: tracks split at gaps longer than maxGap.
+double busiestStart(const Recording& recording, double length, double maxGap) {
+  SceneOptions whole;
+  whole.maxGap = maxGap;
+  std::vector<RecordedTrack> people;
   for (const auto& t : recording.tracks) {
     if (t.kind == "ball") continue;
-    for (std::size_t k = 0; k < t.times.size(); ++k) {
-      // This sample to the next, unless the gap between them splits the track.
-      const bool bridged = k + 1 < t.times.size() && t.times[k + 1] - t.times[k] <= maxGap + 1e-9;
-      const double until = bridged ? t.times[k + 1] : t.times[k];
-      for (auto i = static_cast<std::size_t>(std::ceil(t.times[k] / kTick - 1e-9));
-           i < ticks && i * kTick < until + (bridged ? 0.0 : 1e-9); ++i)
-        ++present[i];
-    }
+    for (auto& piece : cut(t, whole))
+      people.push_back(std::move(piece));
   }
+  if (people.empty()) return 0.0;
+  const std::vector<int> present = presentPerTick(people);
   const auto window = static_cast<std::size_t>(std::llround(length / kTick));
-  double best = 0.0;
+  const auto ticksPerSecond = static_cast<std::size_t>(std::llround(1.0 / kTick));
+  std::size_t best = 0;
   long bestSum = -1;
-  for (double start = 0.0; start + length <= end + 1e-9 || start == 0.0; start += 1.0) {
-    const auto first = static_cast<std::size_t>(std::llround(start / kTick));
+  for (std::size_t first = 0; first == 0 || first + window <= present.size();
+       first += ticksPerSecond) {
     long sum = 0;
-    for (std::size_t i = first; i < std::min(ticks, first + window); ++i)
+    for (std::size_t i = first; i < std::min(present.size(), first + window); ++i)
       sum += present[i];
     if (sum > bestSum) {
       bestSum = sum;
-      best = start;
+      best = first;
     }
-    if (start + length > end) break;
   }
-  return best;
+  return static_cast<double>(best) * kTick;
 }
 
 }  // namespace
@@ -159,6 +171,10 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     return a.times.front() != b.times.front() ? a.times.front() < b.times.front() : a.id < b.id;
   };
   std::stable_sort(targets.begin(), targets.end(), byAppearance);
+  const std::vector<int> present = presentPerTick(targets);
+  built.mostAtOnce = *std::max_element(present.begin(), present.end());
+  for (const auto& t : targets)
+    built.duration = std::max(built.duration, t.times.back());
   std::stable_sort(movingObstacles.begin(), movingObstacles.end(), byAppearance);
   if (ballsLeftOut > 0)
     built.notes.push_back("the ball is left out (--ball target|obstacle keeps it)");

@@ -8,8 +8,8 @@
 //    line (the scene format's interpolation). Every split is reported;
 //  - walls occlude and block cameras but do not stop recorded people: a track that crosses a
 //    wall (the recordings are noisy) is kept as recorded and reported;
-//  - the busiest window: people present counted every 0.1 s, each track present from its
-//    first sample to its last (within maxGap of each other);
+//  - the busiest window: people present counted every 0.1 s, as the scene will have them
+//    (tracks split at gaps, each present from its first sample to its last);
 //  - cameras (when not given) are spread evenly along the boundary, 1 m inside it, each
 //    facing the boundary's centre; one that would start inside an obstacle moves on along
 //    the boundary until it is free.
@@ -50,6 +50,8 @@ struct SceneOptions {
 struct BuiltScene {
   nlohmann::json scene;            // the scene file's content
   std::vector<std::string> notes;  // what was decided about the data, for the user
+  int mostAtOnce = 0;              // targets present at once, at most (counted every 0.1 s)
+  double duration = 0.0;           // s from the window's start to the last target sample
 };
 
 // InputError when nothing is left to make a scene of (no track in the window).

@@ -127,6 +127,17 @@ TEST(ImportEthUcy, PedestriansEnterAndLeaveWallsBecomeObstaclesAndTheWindowCuts)
       << "frame 81 = 3.2 s is 0.2 s into the window";
 }
 
+TEST(ImportEthUcy, TheBusiestWindowHasTheMostPeopleOnAverage) {
+  // People present, counted every 0.1 s: 1 from 0 to 3.2 s, 2 from 0 to 5.2 s, 3 from 2 to
+  // 5.2 s. Over 2 s windows starting on whole seconds: 40, 50, 53 and 43 counts: from 2 s.
+  const ScratchDir dir;
+  const auto r = runCamcov("import ethucy " + (kTracks / "ethucy_extract").string() +
+                           " --fps 25 --busiest 2 -o " + (dir / "busy.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("the busiest 2 s: from 2 s to 4 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("3 targets over 2.0 s (at most 3 at once)"), std::string::npos) << r.out;
+}
+
 TEST(ImportEthUcy, ATrackThatComesBackAfterAGapIsANewTargetAndSaysSo) {
   const ScratchDir dir;
   fs::create_directories(dir / "gap");
