@@ -5,24 +5,15 @@
 #include "reports/markup.h"
 
 namespace camcov::reports {
-namespace {
-
-// Everything the page may load is inline, or a local video next to it ('self' when served,
-// file: when opened from disk); anything else is blocked and reported by the browser.
-constexpr const char* kContentSecurityPolicy =
-    "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; "
-    "img-src data:; media-src 'self' file:";
-
-}  // namespace
-
-std::string documentHead(std::string_view title, std::string_view toolVersion) {
+std::string documentHead(std::string_view title, std::string_view toolVersion,
+                         std::string_view style, std::string_view contentSecurityPolicy) {
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
       "<meta name=\"generator\" content=\"camcov {}\">\n"
       "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n",
-      kContentSecurityPolicy, escapeXml(toolVersion), escapeXml(title), reportStyle());
+      contentSecurityPolicy, escapeXml(toolVersion), escapeXml(title), style);
 }
 
 std::string_view reportStyle() {

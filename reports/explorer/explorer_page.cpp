@@ -8,6 +8,7 @@
 #include "reports/explorer/explorer_assets.h"
 #include "reports/explorer/explorer_data.h"
 #include "reports/markup.h"
+#include "reports/report_assets.h"
 #include "util/input_error.h"
 #include "viz/run_replay.h"
 
@@ -15,7 +16,7 @@ namespace camcov::reports::explorer {
 namespace {
 
 // Nothing to fetch: the data, the script and the style are in the page.
-constexpr const char* kContentSecurityPolicy =
+constexpr std::string_view kExplorerPolicy =
     "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'";
 
 // JSON inside <script>: "</" would end the element early.
@@ -32,30 +33,32 @@ std::string buildExplorerHtml(std::span<const records::RunRecord> runs, const sc
   std::vector<std::string> labels;
   for (const auto& run : runs)
     labels.push_back(fmt::format("{} seed {}", run.metadata.method, run.metadata.seed));
-  return fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
-      "<meta name=\"generator\" content=\"camcov {}\">\n"
-      "<title>{} — camcov run explorer</title>\n<style>{}</style>\n</head>\n<body>\n"
-      "<header><h1>{}</h1><p class=\"lede\">camcov run explorer: {} over {:.1f} s. Keys: space "
-      "plays and pauses, ← → step, Home and End jump to the ends; click the curves to jump "
-      "there.</p></header>\n"
-      "<div class=\"controls\"><button id=\"play\" type=\"button\" aria-pressed=\"false\">Play"
-      "</button><button id=\"step-back\" type=\"button\" aria-label=\"step back\">◀ step"
-      "</button><button id=\"step-forward\" type=\"button\" aria-label=\"step forward\">step ▶"
-      "</button><input id=\"slider\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" "
-      "aria-label=\"step\"><span id=\"time\"></span></div>\n"
-      "<svg id=\"timeline\" class=\"timeline\" role=\"img\" aria-label=\"coverage (solid) and "
-      "utilization (dashed) over time, with events\"></svg>\n"
-      "<div id=\"runs\"></div>\n<div id=\"legend\"></div>\n"
-      "<footer>Written by camcov {} from the results files; geometry as the frames compute it, "
-      "to the millimetre.</footer>\n"
-      "<script type=\"application/json\" id=\"camcov-data\">{}</script>\n"
-      "<script>{}</script>\n</body>\n</html>\n",
-      kContentSecurityPolicy, escapeXml(kVersion), escapeXml(scene.name), explorerStyle(),
-      escapeXml(scene.name), escapeXml(join(labels, ", ")), runs.front().steps.back().time,
-      escapeXml(kVersion), scriptSafe(explorerData(runs, scene).dump()), explorerScript());
+  return documentHead(scene.name + " — camcov run explorer", kVersion, explorerStyle(),
+                      kExplorerPolicy) +
+         fmt::format(
+             "<header><h1>{}</h1><p class=\"lede\">camcov run explorer: {} over {:.1f} s. Keys: "
+             "space "
+             "plays and pauses, ← → step, Home and End jump to the ends; click the curves to jump "
+             "there.</p></header>\n"
+             "<div class=\"controls\"><button id=\"play\" type=\"button\" "
+             "aria-pressed=\"false\">Play"
+             "</button><button id=\"step-back\" type=\"button\" aria-label=\"step back\">◀ step"
+             "</button><button id=\"step-forward\" type=\"button\" aria-label=\"step "
+             "forward\">step ▶"
+             "</button><input id=\"slider\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" "
+             "value=\"0\" "
+             "aria-label=\"step\"><span id=\"time\"></span></div>\n"
+             "<svg id=\"timeline\" class=\"timeline\" role=\"img\" aria-label=\"coverage (solid) "
+             "and "
+             "utilization (dashed) over time, with events\"></svg>\n"
+             "<div id=\"runs\"></div>\n<div id=\"legend\"></div>\n"
+             "<footer>Written by camcov {} from the results files; geometry as the frames compute "
+             "it, "
+             "to the millimetre.</footer>\n"
+             "<script type=\"application/json\" id=\"camcov-data\">{}</script>\n"
+             "<script>{}</script>\n</body>\n</html>\n",
+             escapeXml(scene.name), escapeXml(join(labels, ", ")), runs.front().steps.back().time,
+             escapeXml(kVersion), scriptSafe(explorerData(runs, scene).dump()), explorerScript());
 }
 
 void writeExplorer(const std::vector<std::filesystem::path>& runFiles,

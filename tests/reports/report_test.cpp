@@ -9,7 +9,7 @@
 #include <set>
 #include <vector>
 
-#include "html_checks.h"
+#include "support/html_checks.h"
 #include "report_fixture.h"
 #include "reports/build_context.h"
 #include "reports/report_builder.h"

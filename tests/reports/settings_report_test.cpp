@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "html_checks.h"
+#include "support/html_checks.h"
 #include "report_fixture.h"
 #include "reports/build_context.h"
 #include "reports/settings_report.h"
