@@ -10,13 +10,14 @@ void ObservedSpeeds::Kind::update(const std::vector<geometry::Ring>& now,
                                   double elapsed) {
   speeds.resize(now.size());
   fastest.assign(now.size(), 0.0);
-  std::vector<geometry::Ring> seen;  // by id, this observation
+  seenNow.assign(previous.size(), false);
   for (std::size_t i = 0; i < now.size(); ++i) {
     const geometry::Ring& ring = now[i];
     const std::uint32_t id = idOf(world, i);
-    if (id >= lastStep.size()) {
-      lastStep.resize(id + 1);
+    if (id >= previous.size()) {
       previous.resize(id + 1);
+      lastStep.resize(id + 1);
+      seenNow.resize(id + 1, false);
     }
     // Nothing seen before (or absent one step ago), or a ring whose vertex count changed (no
     // correspondence with its past): speed unknown, taken as 0.
@@ -32,15 +33,16 @@ void ObservedSpeeds::Kind::update(const std::vector<geometry::Ring>& now,
       fastest[i] = std::max(fastest[i], speeds[i][v]);
     }
     lastStep[id] = std::move(step);
-    if (seen.size() <= id) seen.resize(id + 1);
-    seen[id] = ring;
+    previous[id] = ring;  // reuses its buffer
+    seenNow[id] = true;
   }
-  // Objects absent now have no past at the next observation.
-  seen.resize(std::max(seen.size(), previous.size()));
+  // An object absent now has no past at its next observation.
   for (std::size_t id = 0; id < previous.size(); ++id) {
-    if (seen[id].empty()) lastStep[id].clear();
+    if (!seenNow[id]) {
+      previous[id].clear();
+      lastStep[id].clear();
+    }
   }
-  previous = std::move(seen);
 }
 
 void ObservedSpeeds::observe(const kinematics::World& world) {

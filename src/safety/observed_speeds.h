@@ -37,6 +37,7 @@ class ObservedSpeeds {
     std::vector<std::vector<double>> lastStep;  // by id: speed over the last step
     std::vector<std::vector<double>> speeds;    // by world ring: the larger of the last two
     std::vector<double> fastest;                // by world ring: the largest of `speeds`
+    std::vector<bool> seenNow;                  // by id: in the present world (scratch)
     void update(const std::vector<geometry::Ring>& now, const kinematics::World& world,
                 std::uint32_t (*idOf)(const kinematics::World&, std::size_t), double elapsed);
   };
