@@ -44,7 +44,8 @@ int writeImported(const import::BuiltScene& built, const ImportOptions& o) {
   return 0;
 }
 
-void resolveCameras(ImportOptions& o) {
+// The options both importers share that need more than parsing: the cameras file, the window.
+void resolveCommonOptions(ImportOptions& o) {
   if (!o.camerasFrom.empty()) o.scene.cameraPoses = scene::loadCameraPoses(o.camerasFrom);
   if (o.scene.from < 0.0 || o.scene.to <= o.scene.from) {
     throw InputError(
@@ -54,7 +55,7 @@ void resolveCameras(ImportOptions& o) {
 }
 
 int importLastRow(ImportOptions o) {
-  resolveCameras(o);
+  resolveCommonOptions(o);
   if (o.pitch.size() != 2 || o.pitch[0] <= 0.0 || o.pitch[1] <= 0.0)
     throw InputError("--pitch L,W: two positive lengths in metres, e.g. 105,68");
   const std::map<std::string, import::BallAs> balls{{"none", import::BallAs::None},
@@ -67,7 +68,7 @@ int importLastRow(ImportOptions o) {
 }
 
 int importEthUcy(ImportOptions o) {
-  resolveCameras(o);
+  resolveCommonOptions(o);
   const import::Recording recording = import::readEthUcy(o.input, o.fps);
   return writeImported(import::buildScene(recording, o.scene), o);
 }
