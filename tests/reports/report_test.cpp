@@ -9,11 +9,11 @@
 #include <set>
 #include <vector>
 
-#include "support/html_checks.h"
 #include "report_fixture.h"
 #include "reports/build_context.h"
 #include "reports/report_builder.h"
 #include "reports/report_data.h"
+#include "support/html_checks.h"
 
 namespace camcov::testing {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support/html_checks.h"
 #include "report_fixture.h"
 #include "reports/build_context.h"
 #include "reports/settings_report.h"
+#include "support/html_checks.h"
 
 namespace camcov::testing {
 namespace {
