@@ -83,6 +83,21 @@ std::string titleElement(std::string_view title) {
   return title.empty() ? std::string() : "<title>" + escapeXml(title) + "</title>";
 }
 
+std::string tickLabel(const Ticks& ticks, double value) {
+  return ticks.decades ? fmt::format("{:g}", value) : fixed(value, ticks.decimals);
+}
+
+Ticks axisTicks(const AxisSpec& axis) {
+  return axis.logarithmic ? decadeTicks(axis.lo, axis.hi)
+                          : niceTicks(axis.lo, axis.hi, axis.maxTicks);
+}
+
+// The scale of an axis over its ticks; a logarithmic one is linear in log10 of the values.
+LinearScale axisScale(const Ticks& ticks, double r0, double r1) {
+  return ticks.decades ? LinearScale(std::log10(ticks.first), std::log10(ticks.last), r0, r1)
+                       : LinearScale(ticks.first, ticks.last, r0, r1);
+}
+
 double legendEntryWidth(const LegendEntry& e) {
   return kLegendSwatch + 6.0 + textWidth(e.label, kLabelFont) + 16.0;
 }
@@ -118,6 +133,24 @@ Ticks niceTicks(double lo, double hi, int maxTicks) {
   }
 }
 
+Ticks decadeTicks(double lo, double hi) {
+  if (!(lo > 0.0) || !(hi > 0.0)) throw std::invalid_argument("decadeTicks: values must be > 0");
+  if (hi < lo) std::swap(lo, hi);
+  auto first = static_cast<int>(std::floor(std::log10(lo) + 1e-9));
+  auto last = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
+  if (first == last) {
+    --first;
+    ++last;
+  }
+  Ticks t;
+  t.decades = true;
+  for (int k = first; k <= last; ++k)
+    t.values.push_back(std::pow(10.0, k));
+  t.first = t.values.front();
+  t.last = t.values.back();
+  return t;
+}
+
 LinearScale::LinearScale(double d0, double d1, double r0, double r1)
     : d0_(d0), r0_(r0), factor_(d1 == d0 ? 0.0 : (r1 - r0) / (d1 - d0)) {}
 
@@ -146,13 +179,13 @@ BoxStats boxStats(std::span<const double> values) {
 }
 
 Chart::Chart(ChartSpec spec) : spec_(std::move(spec)) {
-  yTicks_ = niceTicks(spec_.y.lo, spec_.y.hi, spec_.y.maxTicks);
+  yTicks_ = axisTicks(spec_.y);
   const bool categorical = !spec_.categories.empty();
-  if (!categorical) xTicks_ = niceTicks(spec_.x.lo, spec_.x.hi, spec_.x.maxTicks);
+  if (!categorical) xTicks_ = axisTicks(spec_.x);
 
   double widestY = 0.0;
   for (const double v : yTicks_.values) {
-    widestY = std::max(widestY, textWidth(fixed(v, yTicks_.decimals), kTickFont));
+    widestY = std::max(widestY, textWidth(tickLabel(yTicks_, v), kTickFont));
   }
   left_ = kPad + (spec_.y.label.empty() ? 0.0 : kLabelFont + 6.0) + widestY + kTickLength + 4.0;
   right_ = spec_.width - kPad - 4.0;
@@ -188,11 +221,11 @@ Chart::Chart(ChartSpec spec) : spec_(std::move(spec)) {
     throw std::invalid_argument("Chart: too small for its labels (" + spec_.ariaLabel + ")");
   }
 
-  yScale_ = LinearScale(yTicks_.first, yTicks_.last, bottom_, top_);
+  yScale_ = axisScale(yTicks_, bottom_, top_);
   if (categorical) {
     xScale_ = LinearScale(-0.5, static_cast<double>(spec_.categories.size()) - 0.5, left_, right_);
   } else {
-    xScale_ = LinearScale(xTicks_.first, xTicks_.last, left_, right_);
+    xScale_ = axisScale(xTicks_, left_, right_);
   }
 }
 
@@ -286,7 +319,7 @@ void Chart::drawYAxis(std::string& out) const {
     out += fmt::format(
         "<text class=\"tick\" x=\"{}\" y=\"{}\" text-anchor=\"end\" "
         "dominant-baseline=\"central\">{}</text>\n",
-        px(left_ - kTickLength - 3.0), px(py), fixed(v, yTicks_.decimals));
+        px(left_ - kTickLength - 3.0), px(py), tickLabel(yTicks_, v));
   }
   if (!spec_.y.label.empty()) {
     out += fmt::format(
@@ -306,7 +339,7 @@ void Chart::drawXAxis(std::string& out) const {
       out += fmt::format(
           "<text class=\"tick\" x=\"{}\" y=\"{}\" text-anchor=\"middle\" "
           "dominant-baseline=\"hanging\">{}</text>\n",
-          px(x(v)), px(labelY), fixed(v, xTicks_.decimals));
+          px(x(v)), px(labelY), tickLabel(xTicks_, v));
     }
   } else {
     for (std::size_t i = 0; i < spec_.categories.size(); ++i) {

@@ -3,6 +3,7 @@
 // statistics, and a Chart that draws axes with ticks, labels and a legend around line
 // series, shaded bands, box-and-whisker glyphs and marks on the x axis. Output is plain SVG
 // text with fixed-precision coordinates, so the same data always gives the same bytes.
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -19,9 +20,13 @@ struct Ticks {
   double step = 1.0;
   int decimals = 0;  // digits after the point that tell adjacent ticks apart (labels)
   std::vector<double> values;
+  bool decades = false;  // powers of ten on a logarithmic axis (decadeTicks)
 };
 // lo == hi is widened around the value. maxTicks >= 3: a range across zero needs three.
 Ticks niceTicks(double lo, double hi, int maxTicks = 6);
+// Powers of ten from the one at or below lo to the one at or above hi, for a logarithmic axis
+// (0 < lo); lo == hi == 10^k is widened by a decade on each side. Its step is unused.
+Ticks decadeTicks(double lo, double hi);
 
 // Maps the data interval [d0, d1] linearly onto the pixel interval [r0, r1] (r1 < r0 is fine:
 // SVG's y runs down).
@@ -65,6 +70,7 @@ struct AxisSpec {
   double lo = 0.0;  // the data range; the axis extends it to nice ticks
   double hi = 1.0;
   int maxTicks = 6;
+  bool logarithmic = false;  // ticks at powers of ten; then lo and every value drawn are > 0
 };
 
 struct ChartSpec {
@@ -84,8 +90,8 @@ class Chart {
   explicit Chart(ChartSpec spec);
 
   // Data to pixels. On a categorical axis, x(i) is the centre of slot i.
-  double x(double value) const { return xScale_(value); }
-  double y(double value) const { return yScale_(value); }
+  double x(double value) const { return xScale_(xTicks_.decades ? std::log10(value) : value); }
+  double y(double value) const { return yScale_(yTicks_.decades ? std::log10(value) : value); }
   double slotWidth() const;  // px of one category slot (categorical axis only)
 
   void addLine(std::span<const double> xs, std::span<const double> ys, std::string_view color,

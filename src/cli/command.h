@@ -32,5 +32,6 @@ Registration addMergeCommand(CLI::App& app);
 Registration addReportCommand(CLI::App& app);
 Registration addExploreCommand(CLI::App& app);
 Registration addImportCommand(CLI::App& app);
+Registration addGenerateCommand(CLI::App& app);
 
 }  // namespace camcov::cli

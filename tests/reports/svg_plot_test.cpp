@@ -226,6 +226,30 @@ TEST(Chart, RefusesASizeItsLabelsDoNotFit) {
   EXPECT_THROW(Chart{spec}, std::invalid_argument);
 }
 
+TEST(DecadeTicks, PowersOfTenAroundTheData) {
+  const Ticks t = decadeTicks(0.03, 64.0);
+  EXPECT_TRUE(t.decades);
+  EXPECT_EQ(t.values, (std::vector<double>{0.01, 0.1, 1.0, 10.0, 100.0}));
+  EXPECT_EQ(decadeTicks(1.0, 100.0).values, (std::vector<double>{1.0, 10.0, 100.0}));
+  EXPECT_EQ(decadeTicks(10.0, 10.0).values, (std::vector<double>{1.0, 10.0, 100.0}));
+  EXPECT_THROW(decadeTicks(0.0, 1.0), std::invalid_argument);
+}
+
+TEST(Chart, LogarithmicAxesPutEveryDecadeTheSameDistanceApart) {
+  ChartSpec spec;
+  spec.x = {"cameras", 1.0, 64.0, 6, true};
+  spec.y = {"cost", 0.02, 3.0, 6, true};
+  const Chart chart(spec);
+  EXPECT_NEAR(chart.x(10.0) - chart.x(1.0), chart.x(100.0) - chart.x(10.0), 1e-9);
+  EXPECT_NEAR(chart.x(4.0) - chart.x(2.0), chart.x(8.0) - chart.x(4.0), 1e-9);
+  EXPECT_NEAR(chart.y(0.1) - chart.y(0.01), chart.y(1.0) - chart.y(0.1), 1e-9);
+  EXPECT_GT(chart.y(0.01), chart.y(10.0)) << "y runs up on screen";
+  const std::string svg = chart.svg();
+  EXPECT_EQ(countOf(svg, "<text class=\"tick\""), 3 + 4) << "1, 10, 100 and 0.01 ... 10";
+  for (const char* label : {">1<", ">100<", ">0.01<", ">0.1<", ">10<"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
 TEST(Markup, EscapesAndFormats) {
   EXPECT_EQ(escapeXml("a<b & \"c\" 'd'>"), "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;");
   EXPECT_EQ(fixed(-0.0001, 2), "0.00");
