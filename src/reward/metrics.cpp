@@ -4,17 +4,38 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 
+#include "reward/fixed_point_sum.h"
 #include "visibility/sweep.h"
 
 namespace camcov::reward {
 
+namespace {
+
+// Segments next to each other in S on one target edge: S cuts each edge into consecutive
+// pieces, with the unseen ones between the seen ones.
+bool sameEdge(const visibility::Segment& a, const visibility::Segment& b) {
+  return a.target == b.target && a.edge == b.edge;
+}
+
+}  // namespace
+
 double visibleLength(std::span<const visibility::Segment> segments) {
-  double total = 0.0;
-  for (const auto& s : segments) {
-    if (s.visibleBy != 0) total += visibility::length(s);
+  FixedPointSum total;
+  const visibility::Segment* first = nullptr;  // of the run of seen segments being walked
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto& s = segments[i];
+    if (s.visibleBy == 0) continue;
+    if (first == nullptr) first = &s;
+    const bool runGoesOn =
+        i + 1 < segments.size() && segments[i + 1].visibleBy != 0 && sameEdge(s, segments[i + 1]);
+    if (!runGoesOn) {
+      total.add(FixedPointSum::units(geometry::distance(first->a, s.b)));
+      first = nullptr;
+    }
   }
-  return total;
+  return total.value();
 }
 
 double targetPerimeter(const kinematics::World& world) {
@@ -25,29 +46,59 @@ double targetPerimeter(const kinematics::World& world) {
 }
 
 double coverage(std::span<const visibility::Segment> segments, double perimeter) {
-  return perimeter > 0.0 ? visibleLength(segments) / perimeter : 0.0;
+  return coverageOf(visibleLength(segments), perimeter);
 }
 
-double utilization(std::span<const visibility::Segment> segments,
-                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs) {
-  if (cameras.empty()) return 0.0;
+double coverageOf(double visibleLength, double perimeter) {
+  return perimeter > 0.0 ? visibleLength / perimeter : 0.0;
+}
+
+double subtendedAngle(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p) {
+  const geometry::Vec2 u = a - p, v = b - p;
+  return std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
+}
+
+double utilizationOf(std::span<const double> angles, std::span<const double> halfFovs) {
+  if (angles.empty()) return 0.0;
   // Σ_j angle_j / 2θ_j, summed as Σ_j (θ_0/θ_j) · angle_j, then over 2θ_0: for a team of
   // like cameras every weight θ_0/θ_0 is exactly 1 (IEEE division), so the sum is eq. (5)
   // as written, to the bit.
   const double theta0 = halfFovs[0];
-  std::array<double, visibility::Sweep::kMaxCameras> weight;  // θ_0/θ_j, once per camera
-  for (std::size_t j = 0; j < cameras.size(); ++j)
-    weight[j] = theta0 / halfFovs[j];
-  double angles = 0.0;
-  for (const auto& s : segments) {
+  double weighted = 0.0;
+  for (std::size_t j = 0; j < angles.size(); ++j)
+    weighted += theta0 / halfFovs[j] * angles[j];
+  return weighted / (2.0 * theta0) / static_cast<double>(angles.size());
+}
+
+double utilization(std::span<const visibility::Segment> segments,
+                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs) {
+  // Per camera, the run it is in: its first point and its last segment (an index of S).
+  constexpr std::size_t kNone = SIZE_MAX;
+  struct Run {
+    geometry::Vec2 a;
+    std::size_t last = kNone;
+  };
+  std::array<Run, visibility::Sweep::kMaxCameras> runs;
+  std::array<double, visibility::Sweep::kMaxCameras> angles{};
+  const auto close = [&](std::size_t j) {
+    if (runs[j].last == kNone) return;
+    angles[j] += subtendedAngle(runs[j].a, segments[runs[j].last].b, cameras[j].position());
+    runs[j].last = kNone;
+  };
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto& s = segments[i];
     for (std::uint64_t bits = s.visibleBy; bits != 0; bits &= bits - 1) {
-      const int j = std::countr_zero(bits);
-      const geometry::Vec2 p = cameras[j].position();
-      const geometry::Vec2 u = s.a - p, v = s.b - p;
-      angles += weight[j] * std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
+      const auto j = static_cast<std::size_t>(std::countr_zero(bits));
+      Run& run = runs[j];
+      // A run goes on while its camera sees the next piece of the same edge.
+      if (run.last != kNone && !(run.last + 1 == i && sameEdge(segments[run.last], s))) close(j);
+      if (run.last == kNone) run.a = s.a;
+      run.last = i;
     }
   }
-  return angles / (2.0 * theta0) / static_cast<double>(cameras.size());
+  for (std::size_t j = 0; j < cameras.size(); ++j)
+    close(j);
+  return utilizationOf(std::span(angles.data(), cameras.size()), halfFovs);
 }
 
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera) {
@@ -66,19 +117,67 @@ double invdist(double distance, double d2) {
 
 double repulsion(const kinematics::World& world, std::span<const geometry::Pose> cameras,
                  double d2) {
-  double total = 0.0;
-  for (std::size_t j = 0; j < cameras.size(); ++j) {
-    const geometry::Vec2 p = cameras[j].position();
-    for (const auto* objects : {&world.targets, &world.obstacles}) {
-      for (const auto& object : *objects) {
-        total += invdist(geometry::distanceToPolygon(object, p), d2);
-      }
-    }
-    for (std::size_t i = 0; i < j; ++i) {
-      total += invdist(geometry::distance(cameras[i].position(), p), d2);
+  return repulsion(world, objectBoxes(world), cameras, d2);
+}
+
+std::vector<geometry::Box> objectBoxes(const kinematics::World& world) {
+  std::vector<geometry::Box> boxes;
+  boxes.reserve(world.targets.size() + world.obstacles.size());
+  for (const auto* objects : {&world.targets, &world.obstacles}) {
+    for (const auto& object : *objects)
+      boxes.push_back(geometry::boundingBox(object));
+  }
+  return boxes;
+}
+
+namespace {
+
+// Some point of `box` is nearer p than d2, give or take rounding: the box's distance is a
+// lower bound of the polygon's, and 1e-9 relative slack keeps an object at d2 to the last bit
+// measured, whatever rounding the two distances have.
+bool mayBeWithin(const geometry::Box& box, geometry::Vec2 p, double d2) {
+  const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
+  const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
+  return dx * dx + dy * dy <= d2 * d2 * (1.0 + 1e-9);
+}
+
+}  // namespace
+
+std::vector<double>& objectTerms(const kinematics::World& world,
+                                 std::span<const geometry::Box> boxes, geometry::Vec2 p, double d2,
+                                 std::vector<double>& out) {
+  out.clear();
+  std::size_t k = 0;
+  for (const auto* objects : {&world.targets, &world.obstacles}) {
+    for (const auto& object : *objects) {
+      if (!mayBeWithin(boxes[k++], p, d2)) continue;
+      const double term = invdist(geometry::distanceToPolygon(object, p), d2);
+      if (term != 0.0) out.push_back(term);
     }
   }
-  return total;
+  return out;
+}
+
+double repulsion(const kinematics::World& world, std::span<const geometry::Box> boxes,
+                 std::span<const geometry::Pose> cameras, double d2) {
+  FixedPointSum total;
+  std::vector<double> terms;
+  for (std::size_t j = 0; j < cameras.size(); ++j) {
+    const geometry::Vec2 p = cameras[j].position();
+    for (const double term : objectTerms(world, boxes, p, d2, terms))
+      total.add(FixedPointSum::units(term));
+    for (std::size_t i = 0; i < j; ++i)
+      total.add(FixedPointSum::units(pairTerm(cameras[i].position(), p, d2)));
+  }
+  return total.value();
+}
+
+double pairTerm(geometry::Vec2 a, geometry::Vec2 b, double d2) {
+  // Most pairs are far apart: their term is 0 without a square root (with slack, so that a
+  // distance of d2 to the last bit is still measured).
+  const geometry::Vec2 d = a - b;
+  if (d.x * d.x + d.y * d.y > d2 * d2 * (1.0 + 1e-9)) return 0.0;
+  return invdist(geometry::distance(a, b), d2);
 }
 
 double combine(const params::RewardParams& p, double coverage, double utilization,

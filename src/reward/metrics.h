@@ -18,16 +18,33 @@ struct RewardTerms {
   double reward = 0.0;       // eq. (8): λ1·coverage + λ2·utilization − λ3·repulsion
 };
 
+// How the sums of eq. (2) and (5) are taken, so that the optimizers' incremental terms
+// (incremental_terms.h) give the same numbers to the bit as these functions on S:
+//  - vis(S) adds, per target edge, the length of each run of consecutive seen segments (not
+//    of each segment), as exact fixed-point sums (fixed_point_sum.h): the same whatever order
+//    the runs are added in;
+//  - utilization adds, per camera j, the angle ∠ r¹ p_j r² of each run r of consecutive
+//    segments j sees, in the order of S (by target edge and along it), then over the cameras
+//    in index order.
+// The segments of a run lie on one line, so both are the paper's sums over segments.
+
 // vis(S), eq. (2): total length of segments some camera sees.
 double visibleLength(std::span<const visibility::Segment> segments);
 // length(∂T): sum of the targets' perimeters.
 double targetPerimeter(const kinematics::World& world);
 // Coverage, eq. (3). 0 when the targets have no boundary length.
 double coverage(std::span<const visibility::Segment> segments, double perimeter);
+// The same from vis(S).
+double coverageOf(double visibleLength, double perimeter);
 // Utilization, eq. (5): mean over cameras of the angle ∠ s¹ p_j s² of every segment camera j
 // sees, over its field of view 2θ_j (halfFovs[j]).
 double utilization(std::span<const visibility::Segment> segments,
                    std::span<const geometry::Pose> cameras, std::span<const double> halfFovs);
+// The angle ∠ a p b that a piece of target boundary from a to b subtends at p, in [0, π].
+double subtendedAngle(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p);
+// Utilization from each camera's sum of subtended angles (angles[j]: camera j, θ_j =
+// halfFovs[j]): Σ_j (θ_0/θ_j)·angles[j] / 2θ_0 / M.
+double utilizationOf(std::span<const double> angles, std::span<const double> halfFovs);
 // Length of the target boundary camera j sees (what it contributes before overlaps).
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera);
 
@@ -35,9 +52,23 @@ double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned c
 // an object) is taken as kMinDistance so the reward stays finite and still strongly negative.
 inline constexpr double kMinDistance = 1e-3;
 double invdist(double distance, double d2);
-// Repulsion, eq. (6): every camera against every target and obstacle, and camera pairs.
+// Repulsion, eq. (6): every camera against every target and obstacle, and camera pairs; an
+// exact fixed-point sum of its terms (fixed_point_sum.h), the same in any order.
 double repulsion(const kinematics::World& world, std::span<const geometry::Pose> cameras,
                  double d2);
+// The bounding box of every target, then of every obstacle, in World order.
+std::vector<geometry::Box> objectBoxes(const kinematics::World& world);
+// The same, skipping the objects whose box (objectBoxes(world)) is farther than d2 from a camera:
+// their term is 0, so the sum is the same to the bit, without measuring the distance to them.
+double repulsion(const kinematics::World& world, std::span<const geometry::Box> boxes,
+                 std::span<const geometry::Pose> cameras, double d2);
+// The term of eq. (6) between two cameras at a and b: invdist(‖a − b‖, d2).
+double pairTerm(geometry::Vec2 a, geometry::Vec2 b, double d2);
+// The terms of eq. (6) between a camera at p and the objects, every target then every obstacle
+// in World order, that may be nonzero (those whose box is within d2): the others are 0.
+std::vector<double>& objectTerms(const kinematics::World& world,
+                                 std::span<const geometry::Box> boxes, geometry::Vec2 p, double d2,
+                                 std::vector<double>& out);
 // Reward, eq. (8).
 double combine(const params::RewardParams& p, double coverage, double utilization,
                double repulsion);

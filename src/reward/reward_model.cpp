@@ -13,7 +13,9 @@ RewardModel::RewardModel(const params::RewardParams& params, double halfFov)
 void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
   perimeter_ = targetPerimeter(world_);
+  objectBoxes_ = objectBoxes(world_);
   occluders_.build(world_);
+  repulsion_.reset();
 }
 
 RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
@@ -21,9 +23,15 @@ RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
   RewardTerms t;
   t.coverage = coverage(segments_, perimeter_);
   t.utilization = utilization(segments_, cameras, halfFovs_);
-  t.repulsion = repulsion(world_, cameras, params_.d2);
+  t.repulsion = repulsion(world_, objectBoxes_, cameras, params_.d2);
   t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
   return t;
+}
+
+double RewardModel::reward(std::span<const geometry::Pose> cameras) {
+  const auto t = incremental_.evaluate(occluders_, sweep_, cameras, halfFovs_, perimeter_);
+  return combine(params_, t.coverage, t.utilization,
+                 repulsion_.evaluate(world_, objectBoxes_, cameras, params_.d2));
 }
 
 void RewardModel::visibilityPolygon(geometry::Vec2 point, geometry::Ring& out) {

@@ -8,6 +8,8 @@
 
 #include "kinematics/world.h"
 #include "params/parameters.h"
+#include "reward/incremental_repulsion.h"
+#include "reward/incremental_terms.h"
 #include "reward/metrics.h"
 #include "visibility/occluders.h"
 #include "visibility/sweep.h"
@@ -31,7 +33,10 @@ class RewardModel {
   // All terms for the camera set (camera j has θ_j; at most as many as there are θs); S is kept
   // and readable through segments() until the next call.
   RewardTerms evaluate(std::span<const geometry::Pose> cameras);
-  double reward(std::span<const geometry::Pose> cameras) { return evaluate(cameras).reward; }
+  // evaluate(cameras).reward to the bit, for the optimizers' probes: from the terms kept of
+  // the last call (IncrementalTerms), without making S; segments() still holds the last
+  // evaluate()'s.
+  double reward(std::span<const geometry::Pose> cameras);
   std::span<const visibility::Segment> segments() const { return segments_; }
 
   // Omnidirectional visibility polygon of a point at this instant (Algorithm 2, line 6).
@@ -42,9 +47,12 @@ class RewardModel {
   std::vector<double> halfFovs_;
   kinematics::World world_;
   double perimeter_ = 0.0;
+  std::vector<geometry::Box> objectBoxes_;  // for repulsion()
   visibility::Occluders occluders_;
   visibility::Sweep sweep_;
-  std::vector<visibility::Segment> segments_;
+  std::vector<visibility::Segment> segments_;  // S of the last evaluate()
+  IncrementalTerms incremental_;               // for reward()
+  IncrementalRepulsion repulsion_;             // for reward()
 };
 
 }  // namespace camcov::reward

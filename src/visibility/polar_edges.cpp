@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -49,6 +50,7 @@ void PolarEdges::start(const Occluders& occluders, Vec2 viewpoint, const FieldOf
 
   initiallyInFov_ = true;
   cullFrom_ = cullWidth_ = 0;
+  narrowFov_ = false;
   if (fov != nullptr) {
     // Far points on the two rays, so that rounding p + r·u tilts them by about 2^-52 rad.
     const double r = occluders.extent() + std::abs(p_.x) + std::abs(p_.y);
@@ -61,6 +63,13 @@ void PolarEdges::start(const Occluders& occluders, Vec2 viewpoint, const FieldOf
     // Out of view: counter-clockwise from the left ray (FovLeave) to the right one (FovEnter).
     cullFrom_ = quantizedAngle(fovPoints_[1] - p_);
     cullWidth_ = quantizedAngle(fovPoints_[0] - p_) - cullFrom_;  // modulo 2^32, keys go round
+    narrowFov_ = fov->halfAngle <= 0.5 * std::numbers::pi;
+    if (narrowFov_) {
+      rayRight_ = fovPoints_[0] - p_;
+      rayLeft_ = fovPoints_[1] - p_;
+      rayRightMargin_ = kBeyondRayMargin * geometry::norm(rayRight_);
+      rayLeftMargin_ = kBeyondRayMargin * geometry::norm(rayLeft_);
+    }
   }
 }
 
@@ -152,7 +161,25 @@ std::uint8_t PolarEdges::cull(std::uint8_t state, std::uint32_t startKey,
   return outOfView(startKey, endKey) ? 0 : state;
 }
 
+bool PolarEdges::boxBeyondARay(const geometry::Box& box) const {
+  if (!narrowFov_) return false;
+  const Vec2 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  bool right = true, left = true;
+  for (const Vec2 c : corners) {
+    const Vec2 d = c - p_;
+    const double l1 = std::abs(d.x) + std::abs(d.y);  // at least |d|
+    // sin of the angle past the ray, times |ray| · |d|.
+    right = right && geometry::cross(rayRight_, d) < -rayRightMargin_ * l1;
+    left = left && geometry::cross(d, rayLeft_) < -rayLeftMargin_ * l1;
+  }
+  return right || left;
+}
+
 bool PolarEdges::boxOutOfView(const geometry::Box& box) const {
+  return cullWidth_ != 0 && (boxBeyondARay(box) || boxArcOutOfView(box));
+}
+
+bool PolarEdges::boxArcOutOfView(const geometry::Box& box) const {
   if (cullWidth_ == 0) return false;
   const std::optional<KeyArc> arc = boxArc(box, p_);
   return arc && outOfView(arc->start, arc->end());
@@ -165,24 +192,13 @@ bool PolarEdges::less(const Event& a, const Event& b) const {
 }
 
 void PolarEdges::sortEvents() {
-  // LSD radix sort on the 32-bit key (four passes of 8 bits) ...
+  // A stable sort by key ...
+  if (events_.size() <= kFewEvents) {
+    bucketSortByKey(events_, scratch_);
+  } else {
+    radixSortByKey(events_, scratch_);
+  }
   const std::size_t n = events_.size();
-  std::array<std::array<std::uint32_t, 256>, 4> count{};
-  for (const Event& e : events_) {
-    for (int d = 0; d < 4; ++d)
-      ++count[d][(e.key >> (8 * d)) & 0xff];
-  }
-  scratch_.resize(n);
-  for (int d = 0; d < 4; ++d) {
-    auto& c = count[d];
-    if (n == 0 || c[(events_[0].key >> (8 * d)) & 0xff] == n) continue;  // all in one bucket
-    std::uint32_t sum = 0;
-    for (std::uint32_t& slot : c)
-      sum += std::exchange(slot, sum);
-    for (const Event& e : events_)
-      scratch_[c[(e.key >> (8 * d)) & 0xff]++] = e;
-    events_.swap(scratch_);
-  }
   // ... then insertion sort in the exact order. Only events whose keys share a quantum or lie
   // within the pseudo-angle's error of each other can be out of place, so this pass is linear
   // unless many vertices lie on one ray.
@@ -193,6 +209,61 @@ void PolarEdges::sortEvents() {
     for (; j > 0 && less(e, events_[j - 1]); --j)
       events_[j] = events_[j - 1];
     events_[j] = e;
+  }
+}
+
+void PolarEdges::radixSortByKey(std::vector<Event>& events, std::vector<Event>& scratch) {
+  // LSD: four passes of 8 bits, each stable.
+  const std::size_t n = events.size();
+  scratch.resize(n);
+  std::array<std::array<std::uint32_t, 256>, 4> count{};
+  for (const Event& e : events) {
+    for (int d = 0; d < 4; ++d)
+      ++count[d][(e.key >> (8 * d)) & 0xff];
+  }
+  for (int d = 0; d < 4; ++d) {
+    auto& c = count[d];
+    if (n == 0 || c[(events[0].key >> (8 * d)) & 0xff] == n) continue;  // all in one bucket
+    std::uint32_t sum = 0;
+    for (std::uint32_t& slot : c)
+      sum += std::exchange(slot, sum);
+    for (const Event& e : events)
+      scratch[c[(e.key >> (8 * d)) & 0xff]++] = e;
+    events.swap(scratch);
+  }
+}
+
+void PolarEdges::bucketSortByKey(std::vector<Event>& events, std::vector<Event>& scratch) {
+  if (events.size() > kTinyEvents) {
+    std::uint32_t lo = events[0].key, hi = lo;
+    for (const Event& e : events) {
+      lo = std::min(lo, e.key);
+      hi = std::max(hi, e.key);
+    }
+    // About as many buckets as events over [lo, hi] (a power of two, at most 256): the events
+    // spread over them, so each holds a few. Counting into them is stable.
+    const int bits = std::min(static_cast<int>(std::bit_width(events.size() - 1)), 8);
+    const int shift = std::max(static_cast<int>(std::bit_width(hi - lo)) - bits, 0);
+    const std::size_t buckets = std::size_t{1} << bits;
+    std::array<std::uint32_t, 257> start;  // start[b + 1]: bucket b's count, then its end
+    std::fill_n(start.begin(), buckets + 1, 0u);
+    for (const Event& e : events)
+      ++start[((e.key - lo) >> shift) + 1];
+    for (std::size_t b = 1; b <= buckets; ++b)
+      start[b] += start[b - 1];
+    scratch.resize(events.size());
+    for (const Event& e : events)
+      scratch[start[(e.key - lo) >> shift]++] = e;
+    events.swap(scratch);
+  }
+  // Keys now only fall out of order within a bucket (or, for a tiny few, anywhere): stable
+  // insertion by key.
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    const Event e = events[i];
+    std::size_t j = i;
+    for (; j > 0 && e.key < events[j - 1].key; --j)
+      events[j] = events[j - 1];
+    events[j] = e;
   }
 }
 

@@ -96,6 +96,27 @@ class PolarEdges {
   geometry::Vec2 pointOf(const Event& event) const;
   bool sameRay(const Event& a, const Event& b) const;
 
+  // The box, seen from a viewpoint outside it, is out of view as a whole (after build()):
+  // boxBeyondARay() first, then boxArcOutOfView().
+  bool boxOutOfView(const geometry::Box& box) const;
+  // The arc the box spans, in keys, lies in the out-of-view arc with two quanta to spare.
+  bool boxArcOutOfView(const geometry::Box& box) const;
+  // A quick first test, for a field of view no wider than a half-plane (θ ≤ π/2): the box
+  // lies wholly on the far side of one of the rays, by an angle of more than kBeyondRayMargin.
+  // That side lies inside the out-of-view arc, so boxArcOutOfView() says so too: the margin,
+  // 1e-6 rad, dwarfs the two quanta of slack its keys keep (about 1e-8 rad), so the quick test
+  // never culls a chain the other would keep, and the sweep's output is unchanged.
+  bool boxBeyondARay(const geometry::Box& box) const;
+  static constexpr double kBeyondRayMargin = 1e-6;
+
+  // Two stable sorts of events by key, one result: an LSD radix sort (four passes of 8 bits),
+  // and for a few events, as a camera's narrow view holds, a counting sort into 256 buckets
+  // over the keys' range followed by insertion within them (insertion alone up to kTinyEvents).
+  // sortEvents() takes the second up to kFewEvents events.
+  static void radixSortByKey(std::vector<Event>& events, std::vector<Event>& scratch);
+  static void bucketSortByKey(std::vector<Event>& events, std::vector<Event>& scratch);
+  static constexpr std::size_t kFewEvents = 256, kTinyEvents = 24;
+
   // Where the ray from the viewpoint through q meets the piece: its parameter from the
   // piece's chain start (0) to its chain end (1), exact when q is one of the two.
   double param(std::uint32_t piece, geometry::Vec2 q) const;
@@ -116,14 +137,14 @@ class PolarEdges {
   bool outOfView(std::uint32_t startKey, std::uint32_t endKey) const;
   // `state`, or 0 when the piece is out of view on every ray from its ends' keys.
   std::uint8_t cull(std::uint8_t state, std::uint32_t startKey, std::uint32_t endKey) const;
-  // The box, seen from a viewpoint outside it, is out of view as a whole.
-  bool boxOutOfView(const geometry::Box& box) const;
+
   void addChainEvents(const Chain& chain, bool classify);
   void addWedge(std::uint32_t start, std::uint32_t end);
   void addEvent(geometry::Vec2 point, std::uint32_t ref, EventKind kind);
 
   bool less(const Event& a, const Event& b) const;
   void sortEvents();
+
   geometry::Vec2 vertex(std::uint32_t i) const { return occluders_->vertices()[i]; }
 
   const Occluders* occluders_ = nullptr;
@@ -136,6 +157,10 @@ class PolarEdges {
   // The out-of-view arc in keys: from cullFrom_ counter-clockwise over cullWidth_ quanta (0 for
   // an omnidirectional viewpoint: nothing is culled).
   std::uint32_t cullFrom_ = 0, cullWidth_ = 0;
+  // For boxBeyondARay(): the rays' directions (fovPoints_ − p_) and margins times their length.
+  bool narrowFov_ = false;
+  geometry::Vec2 rayRight_, rayLeft_;
+  double rayRightMargin_ = 0.0, rayLeftMargin_ = 0.0;
 
   std::vector<std::uint8_t> state_;  // per piece: kActive, kReversed, kEdgeOn
   std::vector<Wedge> wedges_;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/same_bits.h"
 #include "visibility/occlusion_culling.h"
 #include "visibility/polar_edges.h"
 #include "visibility/polar_sweep.h"
@@ -21,8 +22,10 @@ namespace {
 // Spans of the current edge → visible intervals of target edges (Algorithm 1, lines 12–13).
 class TargetSink final : public SpanSink {
  public:
-  TargetSink(const PolarEdges& edges, Tessellation& tessellation, unsigned camera)
-      : edges_(edges), tessellation_(tessellation), camera_(camera) {}
+  TargetSink(const PolarEdges& edges, std::vector<SeenInterval>& seen)
+      : edges_(edges), seen_(seen) {
+    seen_.clear();
+  }
 
   void span(std::uint32_t front, Vec2 from, Vec2 to, bool inFov) override {
     // Wedges (and kNone) are not pieces; an edge-on piece has no length to see.
@@ -34,14 +37,13 @@ class TargetSink final : public SpanSink {
     for (const Occluders::Member m : members) {
       const double t0 = occluders.t0(m.piece), dt = occluders.t1(m.piece) - t0;
       const double u0 = m.reversed ? 1.0 - s0 : s0, u1 = m.reversed ? 1.0 - s1 : s1;
-      tessellation_.add(occluders.globalEdge(m.piece), t0 + u0 * dt, t0 + u1 * dt, camera_);
+      appendSeen(seen_, occluders.globalEdge(m.piece), t0 + u0 * dt, t0 + u1 * dt);
     }
   }
 
  private:
   const PolarEdges& edges_;
-  Tessellation& tessellation_;
-  unsigned camera_;
+  std::vector<SeenInterval>& seen_;
 };
 
 // Spans of the current edge → vertices of the visibility polygon; outside the field of view
@@ -168,6 +170,21 @@ void checkCamera(const geometry::Pose& camera, double halfFov) {
 
 }  // namespace
 
+// One camera's sweep as segments() last did it for a camera slot.
+struct CameraMemo {
+  std::uint64_t build = 0;  // Occluders::buildId(); 0: nothing kept
+  geometry::Pose pose;
+  double halfFov = 0.0;
+  std::uint64_t lastUse = 0;
+  std::vector<SeenInterval> seen;
+
+  // Bit for bit: a pose that differs in the last bit is swept again, so a kept sweep is
+  // exactly the one a new sweep would make.
+  bool holds(std::uint64_t b, const geometry::Pose& p, double theta) const {
+    return build == b && geometry::sameBits(pose, p) && geometry::sameBits(halfFov, theta);
+  }
+};
+
 struct Sweep::Impl {
   Culling culling;
   CullingCounts counts;
@@ -175,6 +192,35 @@ struct Sweep::Impl {
   PolarEdges edges;
   PolarSweep sweep;
   Tessellation tessellation;
+  // Per camera slot, its last two sweeps: an optimizer probing one camera's pose returns to
+  // its current pose between probes, and leaves every other camera where it was.
+  std::vector<std::array<CameraMemo, 2>> memos;
+  std::uint64_t clock = 0;
+
+  // What camera slot j at `pose` sees: a kept sweep, or a new one kept in place of the
+  // slot's least recently used.
+  std::span<const SeenInterval> seenBy(const Occluders& occluders, std::size_t j,
+                                       const geometry::Pose& pose, double halfFov) {
+    if (memos.size() <= j) memos.resize(j + 1);
+    auto& slot = memos[j];
+    ++clock;
+    for (CameraMemo& memo : slot) {
+      if (memo.holds(occluders.buildId(), pose, halfFov)) {
+        memo.lastUse = clock;
+        ++counts.reused;
+        return memo.seen;
+      }
+    }
+    CameraMemo& memo = slot[0].lastUse <= slot[1].lastUse ? slot[0] : slot[1];
+    const FieldOfView fov{pose.yaw, halfFov};
+    TargetSink sink(edges, memo.seen);
+    sweepFrom(occluders, pose.position(), &fov, sink);
+    memo.build = occluders.buildId();
+    memo.pose = pose;
+    memo.halfFov = halfFov;
+    memo.lastUse = clock;
+    return memo.seen;
+  }
 
   // The sweep from `viewpoint` into `sink`; in a large scene only of the chains that
   // OcclusionCulling cannot rule out.
@@ -204,6 +250,16 @@ const CullingCounts& Sweep::counts() const {
   return impl_->counts;
 }
 
+std::span<const SeenInterval> Sweep::seenBy(const Occluders& occluders, std::size_t slot,
+                                            const geometry::Pose& camera, double halfFov) {
+  if (slot >= kMaxCameras) {
+    throw std::invalid_argument("visibility: camera slot " + std::to_string(slot) +
+                                " beyond the 64 of a mask");
+  }
+  checkCamera(camera, halfFov);
+  return impl_->seenBy(occluders, slot, camera, halfFov);
+}
+
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
                      std::span<const double> halfFovs, std::vector<Segment>& out) {
   if (cameras.size() > kMaxCameras) {
@@ -218,9 +274,8 @@ void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose>
     checkCamera(cameras[j], halfFovs[j]);
   impl_->tessellation.clear();
   for (std::size_t j = 0; j < cameras.size(); ++j) {  // Algorithm 1, line 2
-    const FieldOfView fov{cameras[j].yaw, halfFovs[j]};
-    TargetSink sink(impl_->edges, impl_->tessellation, static_cast<unsigned>(j));
-    impl_->sweepFrom(occluders, cameras[j].position(), &fov, sink);
+    impl_->tessellation.add(impl_->seenBy(occluders, j, cameras[j], halfFovs[j]),
+                            static_cast<unsigned>(j));
   }
   impl_->tessellation.build(occluders, out);
 }

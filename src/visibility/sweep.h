@@ -44,6 +44,7 @@ struct CullingCounts {
   std::uint64_t culled = 0;         // queries culled first
   std::uint64_t whole = 0;          // queries swept over the whole scene
   std::uint64_t chainsLeftOut = 0;  // chains left out, summed over the culled queries
+  std::uint64_t reused = 0;         // cameras of segments() answered by a kept sweep
 };
 
 class Sweep {
@@ -59,6 +60,10 @@ class Sweep {
   // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into
   // `out` (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
+  // Each camera slot j keeps its last two sweeps: a camera whose arrangement
+  // (Occluders::buildId()), pose and θ_j are bit for bit those of a kept sweep is not swept
+  // again, so a call where one camera moved costs one sweep and the union, O(n log n + k log k)
+  // for k seen intervals (the optimizers move one camera at a time; issue 23).
   // Throws std::invalid_argument for more than kMaxCameras cameras, fewer half-angles than
   // cameras, θ_j outside (0, π), or a non-finite pose.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
@@ -66,6 +71,13 @@ class Sweep {
   // The same for a team of like cameras, every one with half-angle `halfFov`.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
                 std::vector<Segment>& out);
+
+  // What camera slot `slot` (< kMaxCameras; bit `slot` of segments()) at `camera` with
+  // half-angle θ sees of the targets' edges: the intervals segments() unites into S, from the
+  // slot's kept sweeps when they hold this query. Valid until the slot's next sweep. Throws
+  // like segments().
+  std::span<const SeenInterval> seenBy(const Occluders& occluders, std::size_t slot,
+                                       const geometry::Pose& camera, double halfFov);
 
   const CullingCounts& counts() const;
 

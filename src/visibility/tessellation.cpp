@@ -12,15 +12,19 @@ void Tessellation::clear() {
   pending_.clear();
 }
 
-void Tessellation::add(std::uint32_t globalEdge, double lo, double hi, unsigned camera) {
-  if (lo > hi) std::swap(lo, hi);
-  lo = std::max(lo, 0.0);
-  hi = std::min(hi, 1.0);
-  if (!(hi > lo)) return;  // seen edge-on, or only at a point
-  pending_.push_back({lo, camera, +1});
-  pending_.push_back({hi, camera, -1});
-  edgeOf_.push_back(globalEdge);
-  edgeOf_.push_back(globalEdge);
+void appendSeen(std::vector<SeenInterval>& out, std::uint32_t globalEdge, double a, double b) {
+  if (a > b) std::swap(a, b);
+  const double lo = std::max(a, 0.0), hi = std::min(b, 1.0);
+  if (hi > lo) out.push_back({globalEdge, lo, hi});
+}
+
+void Tessellation::add(std::span<const SeenInterval> seen, unsigned camera) {
+  for (const SeenInterval& s : seen) {
+    pending_.push_back({s.lo, camera, +1});
+    pending_.push_back({s.hi, camera, -1});
+    edgeOf_.push_back(s.edge);
+    edgeOf_.push_back(s.edge);
+  }
 }
 
 void Tessellation::build(const Occluders& occluders, std::vector<Segment>& out) {
@@ -42,7 +46,7 @@ void Tessellation::build(const Occluders& occluders, std::vector<Segment>& out) 
          g < occluders.targetEdgeOffset(target + 1); ++g) {
       const Vec2 a = occluders.targetEdgeStart(g), b = occluders.targetEdgeEnd(g);
       if (a == b) continue;  // a repeated vertex: no length to cover
-      const auto point = [a, b](double t) { return t == 0.0 ? a : t == 1.0 ? b : lerp(a, b, t); };
+      const auto point = [a, b](double t) { return pointAt(a, b, t); };
       const auto first = out.size();
       double cur = 0.0;
       std::uint64_t mask = 0;

@@ -2,6 +2,8 @@
 // update(S) and update(visibleBy(·)) — Algorithm 1, lines 12–13 and 16 (paper section IV-B).
 // Internal to the visibility stage.
 //
+// Each camera's sweep reports the parameter intervals of target edges it sees (SeenInterval);
+// the Sweep keeps them per camera, so a camera that did not move is not swept again.
 // Each camera's sweep reports the parameter intervals of target edges it sees. Instead of
 // re-splitting S after every camera (the paper's line 16), the intervals of all cameras are
 // collected and every target edge is cut once at all their endpoints: the same S, in
@@ -10,6 +12,7 @@
 // up to its perimeter.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "visibility/occluders.h"
@@ -17,11 +20,16 @@
 
 namespace camcov::visibility {
 
+// Appends to `out` what a sweep found of target edge `globalEdge`, between parameters t = a and
+// b in either order: clipped to the edge, and nothing if it has no length (seen edge-on, or
+// only at a point).
+void appendSeen(std::vector<SeenInterval>& out, std::uint32_t globalEdge, double a, double b);
+
 class Tessellation {
  public:
   void clear();
-  // Camera `camera` (< 64) sees the target edge `globalEdge` for t in [lo, hi].
-  void add(std::uint32_t globalEdge, double lo, double hi, unsigned camera);
+  // Camera `camera` (< 64) sees each of `seen`.
+  void add(std::span<const SeenInterval> seen, unsigned camera);
   // Writes S, ordered by target, edge, and along the edge.
   void build(const Occluders& occluders, std::vector<Segment>& out);
 

@@ -137,8 +137,13 @@ void Sweep(benchmark::State& state) {
   const vis::Occluders occluders(scene.world);
   vis::Sweep sweep(culling(kMode));
   std::vector<vis::Segment> segments;
-  const camcov::geometry::Pose camera{scene.viewpoint.x, scene.viewpoint.y, 0.3};
+  // Three yaws a few ulps apart in turn: the Sweep keeps a camera's last two sweeps and would
+  // answer a repeated pose without sweeping.
+  camcov::geometry::Pose camera{scene.viewpoint.x, scene.viewpoint.y, 0.3};
+  int turn = 0;
   for (auto _ : state) {
+    camera.yaw = 0.3 + 1e-15 * turn;
+    turn = (turn + 1) % 3;
     sweep.segments(occluders, {&camera, 1}, std::numbers::pi / 4, segments);
     benchmark::DoNotOptimize(segments.data());
   }

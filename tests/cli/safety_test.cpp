@@ -4,7 +4,9 @@
 // the layer's additions (continuous-time distances, contact events) are left out of the comparison.
 // The hashes were taken from runs of commit 22712ab, the last one without the layer:
 //   camcov run ../shared/coverage_scenes/SCENE.json --method M --seed N
-// then FNV-1a of the JSON dump of those keys, as computed below.
+// then FNV-1a of the JSON dump of those keys, as computed below. Issue 23 made the reward's sums
+// exact (reward/fixed_point_sum.h), which moves the last bits of most runs: the hashes since are
+// of those runs with the layer off (dynamic1 local kept its bytes), taken the same way.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -68,9 +70,9 @@ TEST_P(SafetyOff, ReproducesTheRunsMadeBeforeTheSafetyLayer) {
 
 INSTANTIATE_TEST_SUITE_P(
     Published, SafetyOff,
-    ::testing::Values(Golden{"dynamic13", "paper", 1, 0x65697f456ece98faull},  // hit at 6 mm
-                      Golden{"dynamic9", "paper", 2, 0x2ca5d741c9775d77ull},   // 2.6 s below δ
-                      Golden{"dynamic9", "local", 1, 0x399040c2a1fcb2c2ull},
+    ::testing::Values(Golden{"dynamic13", "paper", 1, 0xbc86539daad8a881ull},  // hit at 6 mm
+                      Golden{"dynamic9", "paper", 2, 0x9054e287b5fc0a4full},   // 2.6 s below δ
+                      Golden{"dynamic9", "local", 1, 0x49359c7832840ab4ull},
                       Golden{"dynamic1", "local", 1, 0xb973b74d9ebd39d4ull}),
     [](const auto& info) {
       return fmt::format("{}_{}_seed{}", info.param.scene, info.param.method, info.param.seed);

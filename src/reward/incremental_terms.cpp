@@ -1,0 +1,137 @@
+#include "reward/incremental_terms.h"
+
+#include <algorithm>
+
+#include "geometry/same_bits.h"
+#include "reward/metrics.h"
+
+namespace camcov::reward {
+
+namespace {
+
+// Calls f(edge, lo, hi) for each run of `sorted` (intervals by edge, then lo): the union of
+// the intervals of one edge that overlap or touch — as S joins its consecutive seen pieces.
+template <typename Interval, typename EdgeOf, typename F>
+void forEachRun(std::span<const Interval> sorted, EdgeOf edgeOf, F&& f) {
+  for (std::size_t i = 0; i < sorted.size();) {
+    const auto edge = edgeOf(sorted[i]);
+    const double lo = sorted[i].lo;
+    double hi = sorted[i].hi;
+    for (++i; i < sorted.size() && edgeOf(sorted[i]) == edge && sorted[i].lo <= hi; ++i)
+      hi = std::max(hi, sorted[i].hi);
+    f(edge, lo, hi);
+  }
+}
+
+}  // namespace
+
+IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& occluders,
+                                                   visibility::Sweep& sweep,
+                                                   std::span<const geometry::Pose> cameras,
+                                                   std::span<const double> halfFovs,
+                                                   double perimeter) {
+  if (occluders.buildId() != build_) reset(occluders);
+  const std::size_t kept = cameras_.size();
+  for (std::size_t j = cameras.size(); j < kept; ++j)
+    leave(static_cast<std::uint32_t>(j));
+  cameras_.resize(cameras.size());
+  for (std::size_t j = 0; j < cameras.size(); ++j) {
+    Camera& c = cameras_[j];
+    if (j < kept && geometry::sameBits(c.pose, cameras[j]) &&
+        geometry::sameBits(c.halfFov, halfFovs[j])) {
+      continue;
+    }
+    const auto seen = sweep.seenBy(occluders, j, cameras[j], halfFovs[j]);
+    if (j < kept) leave(static_cast<std::uint32_t>(j));
+    c.pose = cameras[j];
+    c.halfFov = halfFovs[j];
+    see(occluders, static_cast<std::uint32_t>(j), seen);
+  }
+  for (const std::uint32_t e : dirty_) {
+    Edge& edge = edges_[e];
+    visible_.subtract(edge.length);
+    edge.length = unionLength(occluders, e);
+    visible_.add(edge.length);
+    edge.dirty = false;
+  }
+  dirty_.clear();
+
+  angles_.clear();
+  for (const Camera& c : cameras_)
+    angles_.push_back(c.angles);
+  return {coverageOf(visible_.value(), perimeter), utilizationOf(angles_, halfFovs)};
+}
+
+void IncrementalTerms::reset(const visibility::Occluders& occluders) {
+  build_ = occluders.buildId();
+  cameras_.clear();
+  dirty_.clear();
+  visible_ = {};
+  edges_.resize(occluders.targetEdgeCount());
+  for (Edge& e : edges_) {
+    e.seenBy.clear();  // keeps its buffer
+    e.length = 0;
+    e.dirty = false;
+  }
+}
+
+void IncrementalTerms::see(const visibility::Occluders& occluders, std::uint32_t camera,
+                           std::span<const visibility::SeenInterval> seen) {
+  Camera& c = cameras_[camera];
+  c.seen.assign(seen.begin(), seen.end());
+  std::sort(c.seen.begin(), c.seen.end(),
+            [](const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
+              return a.edge != b.edge ? a.edge < b.edge : a.lo < b.lo;
+            });
+  // In the order of S, as utilization() adds them.
+  c.angles = 0.0;
+  const geometry::Vec2 p = c.pose.position();
+  forEachRun(
+      std::span<const visibility::SeenInterval>(c.seen),
+      [](const visibility::SeenInterval& s) { return s.edge; },
+      [&](std::uint32_t edge, double lo, double hi) {
+        const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
+        if (a == b) return;  // a repeated vertex: S has no segment there
+        c.angles += subtendedAngle(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi), p);
+      });
+  for (const visibility::SeenInterval& s : c.seen) {
+    auto& seenBy = edges_[s.edge].seenBy;  // kept by lo, for unionLength()
+    const auto at = std::upper_bound(seenBy.begin(), seenBy.end(), s.lo,
+                                     [](double lo, const Interval& i) { return lo < i.lo; });
+    seenBy.insert(at, {camera, s.lo, s.hi});
+    markDirty(s.edge);
+  }
+}
+
+void IncrementalTerms::leave(std::uint32_t camera) {
+  for (const visibility::SeenInterval& s : cameras_[camera].seen) {
+    std::erase_if(edges_[s.edge].seenBy,
+                  [camera](const Interval& i) { return i.camera == camera; });
+    markDirty(s.edge);
+  }
+  cameras_[camera].seen.clear();
+  cameras_[camera].angles = 0.0;
+}
+
+void IncrementalTerms::markDirty(std::uint32_t edge) {
+  if (edges_[edge].dirty) return;
+  edges_[edge].dirty = true;
+  dirty_.push_back(edge);
+}
+
+FixedPointSum::Units IncrementalTerms::unionLength(const visibility::Occluders& occluders,
+                                                   std::uint32_t edge) {
+  const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
+  if (a == b) return 0;  // a repeated vertex: S has no segment there
+  const auto& seenBy = edges_[edge].seenBy;
+  FixedPointSum::Units total = 0;
+  forEachRun(
+      std::span<const Interval>(seenBy), [](const Interval&) { return 0; },
+      [&](int, double lo, double hi) {
+        total += FixedPointSum::units(
+            geometry::distance(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi)));
+      });
+  return total;
+}
+
+}  // namespace camcov::reward

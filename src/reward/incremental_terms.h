@@ -1,0 +1,77 @@
+#pragma once
+// Coverage, eq. (3), and utilization, eq. (5), of a team whose cameras move a few at a time —
+// the optimizers' probes (issue 23). Made from S, they cost a sweep per camera, the cut of
+// every target edge and a sum over all of S on every call, although a probe moves one camera
+// and changes only what that camera sees.
+//
+// Both terms are sums that split by what changes (metrics.h says how they are taken):
+//  - utilization: per camera, the angles of the runs it sees — its own sweep alone decides
+//    them, so they are kept with the camera and summed over the cameras, O(M);
+//  - vis(S): per target edge, the length of the union of every camera's intervals on it —
+//    kept per edge in a fixed-point sum, which a changed edge updates exactly, O(1).
+// A call sweeps the cameras whose pose or θ changed (Sweep keeps their last sweeps), takes
+// their angles, and measures again the union of the edges their intervals leave or reach. The
+// terms are those of reward::coverage() and reward::utilization() on S, to the bit
+// (tests/reward/incremental_terms_test.cpp).
+//
+// Cost of a call where c cameras moved: their sweeps, O(k log k) for the k intervals they
+// see before and after, the union of the edges those touch, and O(M).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "reward/fixed_point_sum.h"
+#include "visibility/occluders.h"
+#include "visibility/segment.h"
+#include "visibility/sweep.h"
+
+namespace camcov::reward {
+
+class IncrementalTerms {
+ public:
+  struct Terms {
+    double coverage = 0.0;
+    double utilization = 0.0;
+  };
+
+  // The terms of `cameras` (camera j with half-angle halfFovs[j]) at the instant of
+  // `occluders`, whose targets' perimeter is `perimeter`. `sweep` answers the sweeps; a new
+  // arrangement (Occluders::buildId()) starts afresh.
+  Terms evaluate(const visibility::Occluders& occluders, visibility::Sweep& sweep,
+                 std::span<const geometry::Pose> cameras, std::span<const double> halfFovs,
+                 double perimeter);
+
+ private:
+  struct Camera {
+    geometry::Pose pose;
+    double halfFov = 0.0;
+    std::vector<visibility::SeenInterval> seen;  // by edge and along it
+    double angles = 0.0;                         // Σ subtendedAngle() over the runs of `seen`
+  };
+  struct Interval {
+    std::uint32_t camera;
+    double lo, hi;
+  };
+  struct Edge {
+    std::vector<Interval> seenBy;     // every camera's intervals on this edge
+    FixedPointSum::Units length = 0;  // of their union
+    bool dirty = false;
+  };
+
+  void reset(const visibility::Occluders& occluders);
+  void see(const visibility::Occluders& occluders, std::uint32_t camera,
+           std::span<const visibility::SeenInterval> seen);
+  void leave(std::uint32_t camera);
+  void markDirty(std::uint32_t edge);
+  FixedPointSum::Units unionLength(const visibility::Occluders& occluders, std::uint32_t edge);
+
+  std::uint64_t build_ = 0;  // Occluders::buildId() of what is kept; 0: nothing
+  std::vector<Camera> cameras_;
+  std::vector<Edge> edges_;
+  std::vector<std::uint32_t> dirty_;
+  FixedPointSum visible_;  // vis(S): Σ over edges of their union's length
+  std::vector<double> angles_;
+};
+
+}  // namespace camcov::reward

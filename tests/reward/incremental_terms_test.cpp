@@ -1,0 +1,208 @@
+// The optimizers' incremental terms (issue 23) against the terms made afresh from S, to the bit,
+// over long random sequences of the calls the optimizers make: one camera probed and put
+// back, a camera placed after the others, cameras taken away, θ changed, a new instant. And
+// the sums of runs (metrics.h) against the paper's sums over segments, to rounding.
+#include "reward/incremental_terms.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <numbers>
+
+#include "reward/incremental_repulsion.h"
+#include "reward/metrics.h"
+#include "reward/reward_model.h"
+#include "support/splitmix64.h"
+
+namespace camcov::reward {
+namespace {
+
+using geometry::Pose;
+using geometry::Ring;
+using geometry::Vec2;
+
+// Bit for bit, with a readable failure.
+void expectSameBits(double expected, double actual, const char* what) {
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(expected), std::bit_cast<std::uint64_t>(actual))
+      << what << ": " << expected << " made afresh, " << actual << " kept up to date";
+}
+
+// A 40 m room with quadrilateral and triangular targets and obstacles, some touching (a shared
+// edge: pieces seen by two targets), one target with a repeated vertex (an edge of no length).
+kinematics::World randomWorld(testing::SplitMix64& random) {
+  kinematics::World w;
+  w.boundary = {{-20, -20}, {20, -20}, {20, 20}, {-20, 20}};
+  for (int i = 0; i < 8; ++i) {
+    const Vec2 c{random.uniform(-15, 15), random.uniform(-15, 15)};
+    const double r = random.uniform(0.5, 2.5);
+    Ring ring;
+    const int n = i % 3 == 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) {
+      const double a = (k + random.uniform(0.2, 0.8)) * 2 * std::numbers::pi / n;
+      ring.push_back(c + r * geometry::unitVector(a));
+    }
+    (i % 4 == 3 ? w.obstacles : w.targets).push_back(ring);
+  }
+  // Two squares sharing a side, and a target with a repeated vertex.
+  w.targets.push_back({{1, 16}, {3, 16}, {3, 18}, {1, 18}});
+  w.targets.push_back({{3, 16}, {5, 16}, {5, 18}, {3, 18}});
+  w.targets.push_back({{-16, 16}, {-14, 16}, {-14, 16}, {-14, 18}});
+  return w;
+}
+
+Pose randomPose(testing::SplitMix64& random) {
+  return {random.uniform(-19, 19), random.uniform(-19, 19),
+          random.uniform(-std::numbers::pi, std::numbers::pi)};
+}
+
+// One of the optimizers' calls: a probe of one camera (ε away, or anywhere), the camera put
+// back, a camera placed or taken away at the end, one camera's θ changed.
+struct Caller {
+  testing::SplitMix64 random;
+  std::vector<Pose> team;
+  std::vector<double> thetas;
+  std::vector<Pose> before;  // the team before the last probe
+
+  void next() {
+    const double what = random.uniform(0, 1);
+    const auto j = static_cast<std::size_t>(random.uniform(0, static_cast<double>(team.size())));
+    if (what < 0.3 && !before.empty() && before.size() == team.size()) {
+      team = before;  // put back
+    } else if (what < 0.55) {
+      before = team;
+      (random.uniform(0, 3) < 1   ? team[j].x
+       : random.uniform(0, 2) < 1 ? team[j].y
+                                  : team[j].yaw) += 1e-6;
+    } else if (what < 0.8) {
+      before = team;
+      team[j] = randomPose(random);
+    } else if (what < 0.88 && team.size() < 12) {
+      team.push_back(randomPose(random));
+    } else if (what < 0.96 && team.size() > 1) {
+      team.pop_back();
+    } else {
+      thetas[j] = random.uniform(0.2, 1.5);
+    }
+  }
+};
+
+TEST(IncrementalTerms, EqualTheTermsOfSToTheBitOverLongSequencesOfProbes) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 random{seed};
+    visibility::Occluders occluders(randomWorld(random));
+    visibility::Sweep afresh, kept;
+    IncrementalTerms terms;
+    Caller caller{{seed * 7919}, {}, std::vector<double>(12, std::numbers::pi / 6), {}};
+    for (int j = 0; j < 4; ++j)
+      caller.team.push_back(randomPose(random));
+    std::vector<visibility::Segment> s;
+    for (int call = 0; call < 400; ++call) {
+      if (call == 200) occluders.build(randomWorld(random));  // a new instant
+      afresh.segments(occluders, caller.team, caller.thetas, s);
+      const auto t = terms.evaluate(occluders, kept, caller.team, caller.thetas, 37.0);
+      expectSameBits(coverage(s, 37.0), t.coverage, "coverage");
+      expectSameBits(utilization(s, caller.team, caller.thetas), t.utilization, "utilization");
+      if (HasFailure()) return;
+      caller.next();
+    }
+  }
+}
+
+TEST(IncrementalRepulsion, EqualsRepulsionToTheBit) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 random{seed};
+    kinematics::World world = randomWorld(random);
+    std::vector<geometry::Box> boxes = objectBoxes(world);
+    IncrementalRepulsion repulsionKept;
+    Caller caller{{seed * 104729}, {}, std::vector<double>(12, 0.5), {}};
+    for (int j = 0; j < 4; ++j)
+      caller.team.push_back(randomPose(random));
+    for (int call = 0; call < 400; ++call) {
+      if (call == 200) {  // a new instant
+        world = randomWorld(random);
+        boxes = objectBoxes(world);
+        repulsionKept.reset();
+      }
+      // Cameras near objects and each other: most terms are not 0.
+      for (Pose& p : caller.team) {
+        p.x = std::clamp(p.x, -16.0, 16.0) * 0.5;
+        p.y = std::clamp(p.y, -16.0, 16.0) * 0.5;
+      }
+      expectSameBits(repulsion(world, caller.team, 2.0),
+                     repulsionKept.evaluate(world, boxes, caller.team, 2.0), "repulsion");
+      if (HasFailure()) return;
+      caller.next();
+    }
+  }
+}
+
+TEST(RewardModel, ProbesGiveTheRewardOfEvaluateToTheBit) {
+  testing::SplitMix64 random{99};
+  const kinematics::World world = randomWorld(random);
+  RewardModel probing(params::RewardParams{}, std::numbers::pi / 6);
+  RewardModel afresh(params::RewardParams{}, std::numbers::pi / 6);
+  probing.setWorld(world);
+  afresh.setWorld(world);
+  Caller caller{{5}, {}, std::vector<double>(12, std::numbers::pi / 6), {}};
+  for (int j = 0; j < 5; ++j)
+    caller.team.push_back(randomPose(random));
+  for (int call = 0; call < 500; ++call) {
+    expectSameBits(afresh.evaluate(caller.team).reward, probing.reward(caller.team), "reward");
+    if (HasFailure()) return;
+    caller.next();
+    caller.thetas.assign(12, std::numbers::pi / 6);  // the model's θ are fixed
+  }
+}
+
+// The sums of runs are the paper's sums over segments, up to rounding.
+TEST(Metrics, RunSumsAreThePaperSumsOverSegments) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 random{seed};
+    const visibility::Occluders occluders(randomWorld(random));
+    std::vector<Pose> team;
+    for (int j = 0; j < 6; ++j)
+      team.push_back(randomPose(random));
+    const std::vector<double> thetas{0.5, 0.5, 0.3, 0.5, 1.2, 0.5};
+    visibility::Sweep sweep;
+    std::vector<visibility::Segment> s;
+    sweep.segments(occluders, team, thetas, s);
+    double length = 0.0, angles = 0.0;
+    for (const auto& segment : s) {
+      if (segment.visibleBy != 0) length += visibility::length(segment);
+      for (std::size_t j = 0; j < team.size(); ++j) {
+        if ((segment.visibleBy >> j) & 1u) {
+          angles +=
+              thetas[0] / thetas[j] * subtendedAngle(segment.a, segment.b, team[j].position());
+        }
+      }
+    }
+    EXPECT_NEAR(visibleLength(s), length, 1e-12 * (1 + length));
+    EXPECT_NEAR(utilization(s, team, thetas), angles / (2 * thetas[0]) / 6.0, 1e-13);
+  }
+}
+
+TEST(Metrics, RunsJoinTouchingPiecesAndStopAtGapsAndEdgeEnds) {
+  // Edge 0 from (0, 0) to (4, 0), then edge 1 up to (4, 4). Camera 0 sees [0, 1] and [1, 2]
+  // (touching: one run); camera 1 sees [1, 2], then after a gap [3, 4] and all of edge 1 (two
+  // runs on edge 0, one on edge 1: a run ends with its edge).
+  const std::vector<visibility::Segment> s{{{0, 0}, {1, 0}, 0, 0, 1},
+                                           {{1, 0}, {2, 0}, 0, 0, 3},
+                                           {{2, 0}, {3, 0}, 0, 0, 0},
+                                           {{3, 0}, {4, 0}, 0, 0, 2},
+                                           {{4, 0}, {4, 4}, 0, 1, 2}};
+  EXPECT_EQ(visibleLength(s), 2.0 + 1.0 + 4.0);
+  const Vec2 p0{0, -1}, p1{3.5, -1};
+  const std::vector<Pose> team{{p0.x, p0.y, 0}, {p1.x, p1.y, 0}};
+  const double camera0 = subtendedAngle({0, 0}, {2, 0}, p0);
+  const double camera1 = subtendedAngle({1, 0}, {2, 0}, p1) + subtendedAngle({3, 0}, {4, 0}, p1) +
+                         subtendedAngle({4, 0}, {4, 4}, p1);
+  const std::vector<double> thetas{0.5, 0.5};
+  EXPECT_EQ(utilization(s, team, thetas), (camera0 + camera1) / (2 * 0.5) / 2);
+}
+
+}  // namespace
+}  // namespace camcov::reward
