@@ -7,8 +7,8 @@
 #include <exception>
 #include <mutex>
 
-#include "batch/worker_pool.h"
 #include "records/run_files.h"
+#include "util/worker_pool.h"
 
 namespace camcov::batch {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "batch/worker_pool.h"
 #include "cli/progress.h"
 #include "records/run_files.h"
+#include "util/worker_pool.h"
 #include "viz/run_replay.h"
 
 namespace camcov::cli {
@@ -43,7 +43,7 @@ VideoBatch writeBenchVideos(const records::BatchFolder& folder,
   std::atomic<std::size_t> written{0};
   std::mutex mutex;
   std::vector<std::string> problems;  // said again after the progress line, which may overwrite
-  batch::forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
+  forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const records::VideoRun& chosen = runs[pending[k]];
     const std::string stem = records::runStem(chosen.scene, chosen.method, chosen.seed);
     std::string what;

@@ -1,5 +1,5 @@
-// `camcov run SCENE --method paper|local --seed N [--duration S] [--out DIR]`: one run,
-// its results files written atomically, its averages printed.
+// `camcov run SCENE --method paper|local --seed N [--duration S] [--out DIR] [--threads T]`:
+// one run, its results files written atomically, its averages printed.
 #include <fmt/format.h>
 
 #include <iostream>
@@ -11,6 +11,7 @@
 #include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
+#include "util/run_threads.h"
 #include "viz/run_replay.h"
 
 namespace camcov::cli {
@@ -23,6 +24,7 @@ struct RunOptions {
   double duration = -1.0;
   std::string out = "results";
   std::string video;  // also write the run's video here, if given
+  unsigned threads = 1;
   ParameterOptions parameters;
 };
 
@@ -31,6 +33,7 @@ int run(const RunOptions& o) {
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
   batch::JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
+  setRunThreads(o.threads);
   const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);
   const auto& s = record.summary;
@@ -63,6 +66,10 @@ Registration addRunCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--out,-o", o->out, "folder for the results files")->capture_default_str();
   cmd->add_option("--video", o->video, "also write the run's video (MP4, 1280x720)");
+  cmd->add_option("--threads,-t", o->threads,
+                  "threads for the run's own work (the same results with any number)")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
   o->parameters.addTo(*cmd);
   return {cmd, [o] { return run(*o); }};
 }

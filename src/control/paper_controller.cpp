@@ -6,6 +6,7 @@
 #include "control/local_controller.h"
 #include "planners/global_optimizer.h"
 #include "planners/hungarian.h"
+#include "util/run_threads.h"
 
 namespace camcov::control {
 
@@ -19,7 +20,10 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       local_(params.local),
       random_(seed),
       executors_(scene.cameras.size(), planners::PlanExecutor(params.potential, params.reward.d2)),
-      roadmapOf_(scene.cameras.size()) {}
+      roadmapOf_(scene.cameras.size()) {
+  for (unsigned t = 1; t < runThreads(); ++t)
+    helpers_.emplace_back(params.reward, scene::halfFovs(scene));
+}
 
 PaperController::~PaperController() = default;
 
@@ -54,8 +58,10 @@ std::vector<geometry::Pose> PaperController::committedTeam(
 }
 
 void PaperController::globalOptimization(const Observation& observation) {
+  for (auto& helper : helpers_)
+    helper.setWorld(observation.world);
   const auto result = planners::optimizeGlobally(model_, validity_, observation.cameras.size(),
-                                                 params_.global.K, random_);
+                                                 params_.global.K, random_, helpers_);
   const double current = model_.reward(committedTeam(observation.cameras));
   if (!result) {
     raise(observation.time, "global", -1, "no valid pose found for some camera", {},

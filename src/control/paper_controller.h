@@ -60,6 +60,8 @@ class PaperController final : public Controller {
   params::Parameters params_;
   std::vector<planners::StepLimits> limits_;
   reward::RewardModel model_;
+  // One more model per thread the run may use (util/run_threads.h), for Algorithm 2's scores.
+  std::vector<reward::RewardModel> helpers_;
   planners::StateValidity validity_;
   planners::LocalOptimizer local_;
   Random random_;

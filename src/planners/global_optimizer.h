@@ -3,6 +3,7 @@
 // one by one, each at the best of K sampled poses that see a point q1 of the target boundary
 // not yet covered by the cameras placed before it, scored by reward(C_1, ..., C_j).
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/vec2.h"
@@ -19,8 +20,12 @@ struct GlobalResult {
 };
 
 // nullopt if some camera found no valid pose among its K samples. Uses `model`'s instant.
+// `helpers`, models set to the same instant, score the samples on as many more threads; the
+// result is the same with any number of them (the samples are drawn first, in order, and the
+// first best is taken).
 std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
                                              const StateValidity& validity, std::size_t cameras,
-                                             int samplesPerCamera, Random& random);
+                                             int samplesPerCamera, Random& random,
+                                             std::span<reward::RewardModel> helpers = {});
 
 }  // namespace camcov::planners

@@ -6,7 +6,6 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/ValidStateSampler.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
-#include <ompl/datastructures/NearestNeighborsLinear.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/util/Console.h>
@@ -16,6 +15,7 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "planners/grid_nearest_neighbors.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
 #include "reward/reward_model.h"
@@ -180,9 +180,13 @@ class SharedRoadmap final : public og::PRMstar {
  public:
   using PRMstar::PRMstar;
 
-  // Exhaustive neighbour search: no random pivots (GNAT's), and 10³ milestones are cheap.
-  void useExhaustiveNeighbours() {
-    setNearestNeighbors<ompl::NearestNeighborsLinear>();
+  // Exact neighbours from a grid of cells of side `cell` (m), with no random pivots (GNAT's);
+  // before setup(), which hands them to PRM*'s connection strategy.
+  void useGridNeighbours(double cell) {
+    nn_ = std::make_shared<GridNearestNeighbors<Vertex>>(cell, [this](const Vertex v) {
+      const auto* s = stateProperty_[v]->as<ob::SE2StateSpace::StateType>();
+      return geometry::Vec2{s->getX(), s->getY()};
+    });
     nn_->setDistanceFunction(
         [this](const Vertex a, const Vertex b) { return distanceFunction(a, b); });
   }
@@ -221,12 +225,14 @@ struct Roadmap::Impl {
     auto problem = std::make_shared<ob::ProblemDefinition>(si);
     problem->setOptimizationObjective(objective);
     planner = std::make_shared<SharedRoadmap>(si);
-    planner->useExhaustiveNeighbours();
-    planner->setProblemDefinition(problem);
-    planner->setup();
-
     const auto budget =
         static_cast<std::size_t>(std::ceil(params.planner.T2 * params.planner.milestonesPerSecond));
+    // About four milestones a cell once the roadmap is grown.
+    const double area = (w.box.max.x - w.box.min.x) * (w.box.max.y - w.box.min.y);
+    planner->useGridNeighbours(
+        std::sqrt(4.0 * area / static_cast<double>(std::max<std::size_t>(budget, 1))));
+    planner->setProblemDefinition(problem);
+    planner->setup();
     planner->growRoadmap(ob::PlannerTerminationCondition([this, budget] {
       return planner->milestoneCount() >= budget ||
              w.samplesDrawn >= budget * kSampleAttemptsPerMilestone;

@@ -48,6 +48,17 @@ TEST(CliRun, SameArgumentsGiveByteIdenticalFilesAndAnotherSeedDiffers) {
   EXPECT_EQ(one["events"][0]["kind"], "global");
 }
 
+TEST(CliRun, MoreThreadsGiveTheSameBytes) {
+  const fs::path one = freshDir("threads1"), three = freshDir("threads3");
+  const std::string args = " --method paper --duration 6 --seed 4 --set global.T1=2 ";
+  ASSERT_EQ(runCamcov("run " + kScene + args + "--threads 1 --out " + one.string()).exitCode, 0);
+  ASSERT_EQ(runCamcov("run " + kScene + args + "--threads 3 --out " + three.string()).exitCode, 0);
+  const std::string stem = "fig1_example-paper-seed4";
+  EXPECT_EQ(readFile(one / (stem + ".json")), readFile(three / (stem + ".json")));
+  EXPECT_EQ(readFile(one / (stem + ".csv")), readFile(three / (stem + ".csv")));
+  EXPECT_EQ(runCamcov("run " + kScene + " --threads 0 --out " + one.string()).exitCode, 2);
+}
+
 TEST(CliRun, BadInputExitsTwo) {
   const fs::path out = freshDir("bad") / "out";
   EXPECT_EQ(runCamcov("run " + kScene + " --method magic --out " + out.string()).exitCode, 2);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <vector>
 
 #include "support/small_worlds.h"
 
@@ -24,6 +25,28 @@ TEST(OptimizeGlobally, PlacesEveryCameraAtAValidPoseAndReportsTheTeamReward) {
   EXPECT_DOUBLE_EQ(result->reward, model.reward(result->poses));
   // Three cameras around a lone square see most of it.
   EXPECT_GT(model.evaluate(result->poses).coverage, 0.6);
+}
+
+TEST(OptimizeGlobally, HelperModelsOnMoreThreadsGiveTheSameResult) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  StateValidity validity(1.0);
+  validity.setWorld(w);
+  const auto makeModel = [&w] {
+    reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+    model.setWorld(w);
+    return model;
+  };
+  reward::RewardModel alone = makeModel(), main = makeModel();
+  std::vector<reward::RewardModel> helpers;
+  for (int t = 0; t < 3; ++t)
+    helpers.push_back(makeModel());
+  Random a(4), b(4);
+  const auto one = optimizeGlobally(alone, validity, 3, 101, a);
+  const auto four = optimizeGlobally(main, validity, 3, 101, b, helpers);
+  ASSERT_TRUE(one && four);
+  EXPECT_EQ(one->poses, four->poses);
+  EXPECT_EQ(one->reward, four->reward);
+  EXPECT_EQ(a.uniform(), b.uniform()) << "the same random numbers were drawn";
 }
 
 TEST(OptimizeGlobally, SameSeedSameResult) {

@@ -1,13 +1,14 @@
 #pragma once
-// The batch's thread pool: `workers` threads (the calling one among them) take the items
-// 0..count-1 in order, one at a time, so long and short items balance themselves.
+// A plain thread pool: `workers` threads (the calling one among them) take the items
+// 0..count-1 in order, one at a time, so long and short items balance themselves. The batch
+// runs its jobs on it, and a run alone its own work (util/run_threads.h).
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <thread>
 #include <vector>
 
-namespace camcov::batch {
+namespace camcov {
 
 // `task(i)` is called once per item, from any of the threads; it must not throw.
 template <class Task>
@@ -27,4 +28,4 @@ void forEachOnWorkers(std::size_t count, unsigned workers, const Task& task) {
     t.join();
 }
 
-}  // namespace camcov::batch
+}  // namespace camcov
