@@ -11,6 +11,7 @@
 #include "kinematics/camera_command.h"
 #include "kinematics/world.h"
 #include "reward/metrics.h"
+#include "reward/reward_model.h"
 #include "visibility/segment.h"
 
 namespace camcov::control {
@@ -27,7 +28,21 @@ struct Observation {
   // a method need not sweep again to know what is seen now. Empty where nobody measured.
   std::span<const visibility::Segment> seen = {};
   reward::RewardTerms terms = {};
+  // The simulator's own model at t, which measured `seen`: a method's RewardModel takes its
+  // instant from it (RewardModel::setInstant) instead of building the occluders again, and
+  // keeps its sweeps. Null where nobody measured.
+  const reward::RewardModel* measured = nullptr;
 };
+
+// Sets `model` to the observation's instant: the simulator's, shared, where it measured; else
+// made from the world.
+inline void takeInstant(reward::RewardModel& model, const Observation& observation) {
+  if (observation.measured != nullptr) {
+    model.setInstant(*observation.measured);
+  } else {
+    model.setWorld(observation.world);
+  }
+}
 
 // Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",
 // "plan-completed", ... (see docs of each controller), and the simulator's

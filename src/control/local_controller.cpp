@@ -26,7 +26,7 @@ LocalController::LocalController(const scene::Scene& scene, const params::Parame
 
 void LocalController::control(const Observation& observation,
                               std::span<kinematics::CameraCommand> commands) {
-  model_.setWorld(observation.world);
+  takeInstant(model_, observation);
   team_.assign(observation.cameras.begin(), observation.cameras.end());
   local_.improve(model_, team_, allCameras(team_.size()), limits_);
   for (std::size_t j = 0; j < team_.size(); ++j) {

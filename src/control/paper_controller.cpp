@@ -59,7 +59,7 @@ std::vector<geometry::Pose> PaperController::committedTeam(
 
 void PaperController::globalOptimization(const Observation& observation) {
   for (auto& helper : helpers_)
-    helper.setWorld(observation.world);
+    helper.setInstant(model_);
   const auto result = planners::optimizeGlobally(model_, validity_, observation.cameras.size(),
                                                  params_.global.K, random_, helpers_);
   const double current = model_.reward(committedTeam(observation.cameras));
@@ -175,7 +175,7 @@ void PaperController::refineGoals(const Observation& observation) {
 
 void PaperController::control(const Observation& observation,
                               std::span<kinematics::CameraCommand> commands) {
-  model_.setWorld(observation.world);
+  takeInstant(model_, observation);
   validity_.setWorld(observation.world);
   const double t = observation.time;
   // Global optimization at t = 0 and every T1 (half a step of slack against rounding).

@@ -14,12 +14,24 @@ void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
   perimeter_ = targetPerimeter(world_);
   objectBoxes_ = objectBoxes(world_);
-  occluders_.build(world_);
+  // A new arrangement, unless this model alone holds its last one: then its buffers are reused.
+  if (!occluders_ || occluders_.use_count() > 1)
+    occluders_ = std::make_shared<visibility::Occluders>();
+  occluders_->build(world_);
+  repulsion_.reset();
+}
+
+void RewardModel::setInstant(const RewardModel& measured) {
+  world_ = measured.world_;
+  perimeter_ = measured.perimeter_;
+  objectBoxes_ = measured.objectBoxes_;
+  occluders_ = measured.occluders_;
+  sweep_.keepSweepsOf(measured.sweep_);
   repulsion_.reset();
 }
 
 RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
-  sweep_.segments(occluders_, cameras, halfFovs_, segments_);
+  sweep_.segments(*occluders_, cameras, halfFovs_, segments_);
   RewardTerms t;
   t.coverage = coverage(segments_, perimeter_);
   t.utilization = utilization(segments_, cameras, halfFovs_);
@@ -29,13 +41,13 @@ RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
 }
 
 double RewardModel::reward(std::span<const geometry::Pose> cameras) {
-  const auto t = incremental_.evaluate(occluders_, sweep_, cameras, halfFovs_, perimeter_);
+  const auto t = incremental_.evaluate(*occluders_, sweep_, cameras, halfFovs_, perimeter_);
   return combine(params_, t.coverage, t.utilization,
                  repulsion_.evaluate(world_, objectBoxes_, cameras, params_.d2));
 }
 
 void RewardModel::visibilityPolygon(geometry::Vec2 point, geometry::Ring& out) {
-  sweep_.visibilityPolygon(occluders_, point, out);
+  sweep_.visibilityPolygon(*occluders_, point, out);
 }
 
 }  // namespace camcov::reward

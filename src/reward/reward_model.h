@@ -3,6 +3,7 @@
 // planner call it thousands of times per step, so the per-instant work (the occluder
 // arrangement, the perimeter) is done once in setWorld() and every buffer is reused.
 // One RewardModel per thread.
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -25,8 +26,13 @@ class RewardModel {
 
   // The instant to evaluate at. The world is copied: callers may change theirs afterwards.
   void setWorld(const kinematics::World& world);
+  // The instant `measured` is at, sharing its occluder arrangement (built once per instant)
+  // and the sweeps it has made (a camera at a pose it measured is not swept again): how a
+  // method takes the simulator's instant (control::Observation::measured). `measured` may
+  // change afterwards; what is shared stays as it was.
+  void setInstant(const RewardModel& measured);
   const kinematics::World& world() const { return world_; }
-  const visibility::Occluders& occluders() const { return occluders_; }
+  const visibility::Occluders& occluders() const { return *occluders_; }
   double halfFov(std::size_t camera) const { return halfFovs_[camera]; }
   const params::RewardParams& params() const { return params_; }
 
@@ -47,8 +53,8 @@ class RewardModel {
   std::vector<double> halfFovs_;
   kinematics::World world_;
   double perimeter_ = 0.0;
-  std::vector<geometry::Box> objectBoxes_;  // for repulsion()
-  visibility::Occluders occluders_;
+  std::vector<geometry::Box> objectBoxes_;            // for repulsion()
+  std::shared_ptr<visibility::Occluders> occluders_;  // shared by setInstant()
   visibility::Sweep sweep_;
   std::vector<visibility::Segment> segments_;  // S of the last evaluate()
   IncrementalTerms incremental_;               // for reward()

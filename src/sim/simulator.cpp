@@ -190,7 +190,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
 
     if (k < steps) {
       // The controller acts on the present; its events belong to this step's record.
-      controller.control({t, world, cameras, measure.segments(), record.terms}, commands);
+      controller.control({t, world, cameras, measure.segments(), record.terms, &measure}, commands);
       for (std::size_t j = 0; j < cameras.size(); ++j) {
         commands[j] = saturate(commands[j], scene.cameras[j]);
         velocities[j] = commands[j].velocity;

@@ -1,5 +1,6 @@
 #include "visibility/sweep.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -245,6 +246,11 @@ Sweep::Sweep(Culling culling) : impl_(std::make_unique<Impl>()) {
 Sweep::~Sweep() = default;
 Sweep::Sweep(Sweep&&) noexcept = default;
 Sweep& Sweep::operator=(Sweep&&) noexcept = default;
+
+void Sweep::keepSweepsOf(const Sweep& other) {
+  impl_->memos = other.impl_->memos;
+  impl_->clock = std::max(impl_->clock, other.impl_->clock);
+}
 
 const CullingCounts& Sweep::counts() const {
   return impl_->counts;

@@ -80,6 +80,9 @@ class Sweep {
                                        const geometry::Pose& camera, double halfFov);
 
   const CullingCounts& counts() const;
+  // Keeps the sweeps `other` keeps (replacing this one's), for a workspace that takes up
+  // another's instant: a query they answer is not swept again.
+  void keepSweepsOf(const Sweep& other);
 
   // The omnidirectional visibility polygon of `point` (Algorithm 2, line 6; the motion
   // planner's sampler): the region seen from it, inside the boundary, among the objects.
