@@ -23,6 +23,27 @@ void forEachRun(std::span<const Interval> sorted, EdgeOf edgeOf, F&& f) {
   }
 }
 
+bool byEdge(const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
+  return a.edge != b.edge ? a.edge < b.edge : a.lo < b.lo;
+}
+
+// Sorts a sweep's intervals by edge and along it. The sweep reports them counter-clockwise
+// around the camera, which along a counter-clockwise ring is mostly by falling edge and
+// wraps round once: a many-sided target's thousands of intervals are put in order by a
+// reversal and a rotation instead of a sort.
+void sortByEdge(std::vector<visibility::SeenInterval>& seen) {
+  const auto sorted = [&seen] { return std::is_sorted(seen.begin(), seen.end(), byEdge); };
+  if (sorted()) return;
+  std::reverse(seen.begin(), seen.end());
+  const auto descent = std::is_sorted_until(seen.begin(), seen.end(), byEdge);
+  if (std::is_sorted(descent, seen.end(), byEdge) &&
+      (descent == seen.end() || !byEdge(seen.front(), seen.back()))) {
+    std::rotate(seen.begin(), descent, seen.end());
+    if (sorted()) return;
+  }
+  std::sort(seen.begin(), seen.end(), byEdge);
+}
+
 }  // namespace
 
 IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& occluders,
@@ -79,10 +100,7 @@ void IncrementalTerms::see(const visibility::Occluders& occluders, std::uint32_t
                            std::span<const visibility::SeenInterval> seen) {
   Camera& c = cameras_[camera];
   c.seen.assign(seen.begin(), seen.end());
-  std::sort(c.seen.begin(), c.seen.end(),
-            [](const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
-              return a.edge != b.edge ? a.edge < b.edge : a.lo < b.lo;
-            });
+  sortByEdge(c.seen);
   // In the order of S, as utilization() adds them.
   c.angles = 0.0;
   const geometry::Vec2 p = c.pose.position();

@@ -353,8 +353,11 @@ void Occluders::findTwins() {
 
   isRepresentative_.resize(pieces);
   memberBegin_.assign(pieces + 1, 0);
+  hasTwins_.assign(pieces, 0);
   for (std::uint32_t i = 0; i < pieces; ++i) {
-    isRepresentative_[i] = findTwinRoot(i) == i;
+    const std::uint32_t root = findTwinRoot(i);
+    isRepresentative_[i] = root == i;
+    if (root != i) hasTwins_[i] = hasTwins_[root] = 1;
     if (globalEdge_[i] != kNone) ++memberBegin_[twinOf_[i] + 1];
   }
   for (std::size_t i = 0; i < pieces; ++i)

@@ -53,6 +53,8 @@ class Occluders {
   // Twins: a piece with the same endpoints as a piece with a smaller index (in either
   // direction) is not swept; the representative carries the target pieces of all its twins.
   bool isRepresentative(std::uint32_t piece) const { return isRepresentative_[piece] != 0; }
+  // The piece has twins (pieces of other rings with the same endpoints).
+  bool hasTwins(std::uint32_t piece) const { return hasTwins_[piece] != 0; }
   struct Member {
     std::uint32_t piece;
     bool reversed;  // runs against the representative: parameter s there is 1 − s here
@@ -154,6 +156,7 @@ class Occluders {
   std::vector<std::uint32_t> globalEdge_;
   std::vector<double> t0_, t1_;
   std::vector<std::uint8_t> isRepresentative_;
+  std::vector<std::uint8_t> hasTwins_;
   std::vector<std::uint32_t> twinOf_;
   std::vector<std::uint8_t> twinReversed_;  // relative to its representative
   std::vector<std::uint32_t> memberBegin_, memberCursor_;

@@ -20,8 +20,10 @@ constexpr std::uint8_t kTouching = 8;  // replaced by a blocked wedge
 
 }  // namespace
 
-void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov) {
+void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov,
+                       Faces faces) {
   start(occluders, viewpoint, fov);
+  faces_ = faces;
   for (const Chain& chain : occluders.chains()) {
     if (!addChain(chain)) return;
   }
@@ -31,6 +33,7 @@ void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOf
 void PolarEdges::build(const Occluders& occluders, Vec2 viewpoint, const FieldOfView* fov,
                        std::span<const std::uint32_t> chains) {
   start(occluders, viewpoint, fov);
+  faces_ = Faces::Seeable;
   for (const std::uint32_t c : chains) {
     if (!addChain(occluders.chains()[c])) return;
   }
@@ -102,24 +105,31 @@ void PolarEdges::finish(const FieldOfView* fov) {
 }
 
 void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
-  // One pass along the chain in memory order: vertex v ends the piece before it and starts the
-  // piece after it. A chain far from the viewpoint has its pieces classified on the way.
   const std::uint32_t first = chain.first, last = first + chain.count - 1;
-  Vec2 a = vertex(first);
-  const Vec2 lastVertex = vertex(last);
-  std::uint32_t key = quantizedAngle(a - p_);
-  const std::uint32_t firstKey = key;
-  if (classify) state_[last] = pieceState(last, lastVertex, a);
-  state_[last] = cull(state_[last], quantizedAngle(lastVertex - p_), key);
+  const auto nextOf = [first, last](std::uint32_t v) { return v == last ? first : v + 1; };
+  // A chain far from the viewpoint has its pieces classified first, so that only the vertices
+  // of active pieces get a key (a key costs a division; half an object's pieces face away).
+  if (classify) {
+    for (std::uint32_t v = first; v <= last; ++v)
+      state_[v] = farPieceState(chain, v, vertex(v), vertex(nextOf(v)));
+  }
+  const auto active = [this](std::uint32_t piece) { return (state_[piece] & kActive) != 0; };
+  const auto keyOf = [this](std::uint32_t v) { return quantizedAngle(vertex(v) - p_); };
+  // Then one pass along the chain in memory order: vertex v ends the piece before it and starts
+  // the piece after it. A vertex's key is taken where a piece at it is active, before culling.
+  const std::uint32_t firstKey = active(last) || active(first) ? keyOf(first) : 0;
+  if (active(last)) state_[last] = cull(state_[last], keyOf(last), firstKey);
   std::uint8_t before = state_[last];
-  int beforeHalf = geometry::angleHalf(lastVertex - p_);
+  int beforeHalf = geometry::angleHalf(vertex(last) - p_);
+  std::uint32_t key = firstKey;
   for (std::uint32_t v = first; v <= last; ++v) {
-    const Vec2 b = vertex(v == last ? first : v + 1);
-    const std::uint32_t nextKey = v == last ? firstKey : quantizedAngle(b - p_);
-    if (classify && v != last) state_[v] = pieceState(v, a, b);
-    if (v != last) state_[v] = cull(state_[v], key, nextKey);
+    std::uint32_t nextKey = firstKey;
+    if (v != last) {
+      nextKey = active(v) || active(v + 1) ? keyOf(v + 1) : 0;
+      state_[v] = cull(state_[v], key, nextKey);
+    }
     const std::uint8_t after = state_[v];
-    const int half = geometry::angleHalf(a - p_);
+    const int half = geometry::angleHalf(vertex(v) - p_);
     // An active piece running with its chain is inserted at its chain start and removed at its
     // chain end; a reversed one the other way round.
     std::uint8_t actions = 0;
@@ -136,7 +146,6 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
         (reversed ? beforeHalf : half) == 0) {
       initial_.push_back(v == first ? last : v - 1);
     }
-    a = b;
     key = nextKey;
     before = after;
     beforeHalf = half;
@@ -325,6 +334,18 @@ bool PolarEdges::classifyNearChain(const Chain& chain) {
     if (state_[i] != kTouching) state_[i] = pieceState(i, vertex(i), vertex(occluders_->next(i)));
   }
   return true;
+}
+
+std::uint8_t PolarEdges::farPieceState(const Chain& chain, std::uint32_t piece, Vec2 a,
+                                       Vec2 b) const {
+  const std::uint8_t state = pieceState(piece, a, b);
+  if (faces_ == Faces::All || chain.kind == RingKind::Boundary || occluders_->hasTwins(piece)) {
+    return state;
+  }
+  // Seen from its solid side: the viewpoint left of a → b (not kReversed) with the solid on the
+  // left, or right of it with the solid on the right.
+  const bool facesAway = ((state & kReversed) == 0) == chain.solidOnLeft;
+  return facesAway ? 0 : state;
 }
 
 std::uint8_t PolarEdges::pieceState(std::uint32_t piece, Vec2 a, Vec2 b) const {

@@ -63,9 +63,14 @@ class PolarEdges {
     std::uint32_t start, end;
   };
 
+  // Which pieces of the objects the viewpoint is outside of take part: those that may be the
+  // front edge (farPieceState()), or all of them, for the sweep debugger's trace.
+  enum class Faces : std::uint8_t { Seeable, All };
+
   // Prepares the sweep from `viewpoint` over all chains; `fov` is null for an omnidirectional
   // viewpoint.
-  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov);
+  void build(const Occluders& occluders, geometry::Vec2 viewpoint, const FieldOfView* fov,
+             Faces faces = Faces::Seeable);
   // The same for the chains `chains` only (ascending indices). Every chain the viewpoint may
   // see or lies near must be among them, and the boundary: then the front edge is the same on
   // every ray as with all chains (OcclusionCulling::kept()).
@@ -132,6 +137,13 @@ class PolarEdges {
   void finish(const FieldOfView* fov);
   bool classifyNearChain(const Chain& chain);
   std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
+  // pieceState() of a piece of an object whose box the viewpoint is outside, and so strictly
+  // outside the object: a piece the viewpoint sees from the object's solid side is never the
+  // front edge (a ray reaching it from inside the object has crossed the object's boundary
+  // nearer), so it is left inactive, with no events. Pieces with twins (shared with another
+  // ring) and the boundary's keep their state, and so does every piece for Faces::All.
+  std::uint8_t farPieceState(const Chain& chain, std::uint32_t piece, geometry::Vec2 a,
+                             geometry::Vec2 b) const;
   // Culling what is out of view (keys as in Event::key). The arc counter-clockwise from
   // startKey to endKey, shorter than π, lies inside the out-of-view arc.
   bool outOfView(std::uint32_t startKey, std::uint32_t endKey) const;
@@ -159,6 +171,7 @@ class PolarEdges {
   std::uint32_t cullFrom_ = 0, cullWidth_ = 0;
   // For boxBeyondARay(): the rays' directions (fovPoints_ − p_) and margins times their length.
   bool narrowFov_ = false;
+  Faces faces_ = Faces::Seeable;
   geometry::Vec2 rayRight_, rayLeft_;
   double rayRightMargin_ = 0.0, rayLeftMargin_ = 0.0;
 

@@ -317,9 +317,9 @@ void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, doub
   out.frontBefore = {};
   out.inFovBefore = false;
   out.events.clear();
-  // The whole scene at once, so that every event is recorded.
+  // The whole scene at once, every piece, so that every event is recorded.
   const FieldOfView fov{camera.yaw, halfFov};
-  impl_->edges.build(occluders, camera.position(), &fov);
+  impl_->edges.build(occluders, camera.position(), &fov, PolarEdges::Faces::All);
   TraceObserver observer(impl_->edges, out);
   PolygonSink sink(impl_->edges, out.fieldOfView);
   impl_->sweep.run(impl_->edges, sink, &observer);

@@ -11,6 +11,9 @@
 // the line. --csv and --svg (log-log, both methods) write the same points. One run per point,
 // so pin it to one core and keep the machine quiet:
 //   taskset -c 0 build/tests/bench/bench_scaling --csv scaling.csv --svg scaling.svg
+// With --scene FILE... it times whole runs of those files instead (the median of --repeat
+// runs, on --threads threads), the real-time factor per scene and method:
+//   taskset -c 0 build/tests/bench/bench_scaling --scene scenes/large/crowd_100x30.json
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -29,6 +32,7 @@
 #include "scene/scene_generator.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
+#include "util/run_threads.h"
 
 namespace camcov {
 namespace {
@@ -46,6 +50,11 @@ struct Options {
   std::uint64_t seed = 1;
   std::string csv;
   std::string svg;
+  // Instead of the sweeps: whole runs of these scene files (sim.duration unless --duration is
+  // given), each the median of `repeat` runs, on `threads` threads (camcov run --threads).
+  std::vector<std::string> scenes;
+  int repeat = 3;
+  unsigned threads = 1;
 };
 
 // What one sweep varies.
@@ -87,6 +96,22 @@ double fieldSide(int targets) {
   return std::max(20.0, 10.0 * std::sqrt(static_cast<double>(targets)));
 }
 
+// Wall seconds of one whole run of `scene` (making the controller is part of it, as in
+// `camcov run`).
+double timeRun(const scene::Scene& scene, const std::string& method, double duration,
+               std::uint64_t seed) {
+  records::RunMetadata metadata;
+  metadata.scene = scene.name;
+  metadata.method = method;
+  metadata.seed = seed;
+  metadata.parameters.sim.duration = duration;
+  const auto start = std::chrono::steady_clock::now();
+  const auto controller = control::requireMethod(method).make(scene, metadata.parameters, seed);
+  records::recordRun(scene, metadata, *controller);
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+  return wall.count();
+}
+
 Point measure(const Options& o, const Sweep& sweep, const std::string& method, int cameras,
               int targets, int vertices) {
   scene::GeneratorOptions g;
@@ -96,17 +121,32 @@ Point measure(const Options& o, const Sweep& sweep, const std::string& method, i
   g.fieldWidth = g.fieldHeight = fieldSide(targets);
   g.seed = o.seed;
   const scene::Scene scene = scene::parseScene(scene::generateScene(g).dump(), "scaling.json");
-  records::RunMetadata metadata;
-  metadata.scene = scene.name;
-  metadata.method = method;
-  metadata.seed = o.seed;
-  metadata.parameters.sim.duration = o.duration;
-  // Making the controller is part of a run, as in `camcov run`.
-  const auto start = std::chrono::steady_clock::now();
-  const auto controller = control::requireMethod(method).make(scene, metadata.parameters, o.seed);
-  records::recordRun(scene, metadata, *controller);
-  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-  return {&sweep, method, cameras, targets, vertices, g.fieldWidth, o.duration, wall.count()};
+  return {&sweep,   method,       cameras,    targets,
+          vertices, g.fieldWidth, o.duration, timeRun(scene, method, o.duration, o.seed)};
+}
+
+// Whole runs of scene files: the real-time factor of each method.
+int runScenes(const Options& o, bool durationGiven) {
+  std::cout << fmt::format(
+      "| scene | targets | cameras | method | threads | simulated, s | wall, s (median of {}) | "
+      "real-time factor |\n|---|---|---|---|---|---|---|---|\n",
+      o.repeat);
+  setRunThreads(o.threads);
+  for (const std::string& file : o.scenes) {
+    const scene::Scene scene = scene::loadScene(file);
+    const double duration = durationGiven ? o.duration : params::Parameters{}.sim.duration;
+    for (const auto& m : o.methods) {
+      std::vector<double> walls;
+      for (int r = 0; r < o.repeat; ++r)
+        walls.push_back(timeRun(scene, m, duration, o.seed));
+      std::sort(walls.begin(), walls.end());
+      const double wall = walls[walls.size() / 2];
+      std::cout << fmt::format("| {} | {} | {} | {} | {} | {:g} | {:.3f} | {:.1f} |\n", scene.name,
+                               scene.targets.size(), scene.cameras.size(), m, o.threads, duration,
+                               wall, duration / wall);
+    }
+  }
+  return 0;
 }
 
 // The least-squares slope of log(cost) over log(swept value), over the points of one sweep
@@ -286,6 +326,14 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of the scenes and the runs")->capture_default_str();
   app.add_option("--csv", options.csv, "write the points to this CSV file");
   app.add_option("--svg", options.svg, "write the log-log plot to this SVG file");
+  app.add_option("--scene", options.scenes,
+                 "instead of the sweeps: time whole runs of these scene files (repeatable)");
+  app.add_option("--repeat", options.repeat, "runs per scene and method; the median is printed")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  app.add_option("--threads", options.threads, "threads per run, with --scene")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
   app.add_flag("--quick", quick,
                "a small grid for a smoke test, for the options not given: 0.5 s per point, M up "
                "to 8 at N = 8, N up to 16 at M = 2");
@@ -301,6 +349,7 @@ int main(int argc, char** argv) {
     unless("--max-n", options.maxN, 16);
   }
   try {
+    if (!options.scenes.empty()) return camcov::runScenes(options, app.count("--duration") > 0);
     return camcov::run(options);
   } catch (const camcov::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
