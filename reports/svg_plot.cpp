@@ -189,6 +189,12 @@ Chart::Chart(ChartSpec spec) : spec_(std::move(spec)) {
   }
   left_ = kPad + (spec_.y.label.empty() ? 0.0 : kLabelFont + 6.0) + widestY + kTickLength + 4.0;
   right_ = spec_.width - kPad - 4.0;
+  // The last x tick's label is centred on the axis's end: room for its half.
+  if (!categorical && !xTicks_.values.empty()) {
+    right_ =
+        std::min(right_, spec_.width - 2.0 -
+                             0.5 * textWidth(tickLabel(xTicks_, xTicks_.values.back()), kTickFont));
+  }
 
   // Legend rows wrap at the plot's width.
   int legendRows = 0;

@@ -214,7 +214,7 @@ void writeCsv(const std::string& file, const std::vector<Point>& points) {
 void writeSvg(const Options& o, const std::vector<Point>& points,
               const std::vector<Sweep>& sweeps) {
   constexpr double kWidth = 460.0, kHeight = 340.0;
-  constexpr double kGap = 20.0;  // between charts: the last tick label may reach past its chart
+  constexpr double kGap = 48.0;  // between charts: the last tick label reaches past its chart
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (const Point& p : points) {
     lo = std::min(lo, p.cost());
