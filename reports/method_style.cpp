@@ -24,8 +24,8 @@ std::size_t rank(std::string_view method) {
 MethodStyle methodStyle(std::string_view method) {
   if (const control::Method* m = control::findMethod(method)) return {m->description, m->color};
   // The rest of the Tableau 10 palette the table's colours come from.
-  static constexpr std::array<std::string_view, 6> kOthers{"#d62728", "#9467bd", "#8c564b",
-                                                           "#e377c2", "#bcbd22", "#17becf"};
+  static constexpr std::array<std::string_view, 5> kOthers{"#d62728", "#8c564b", "#e377c2",
+                                                           "#bcbd22", "#17becf"};
   return {method, kOthers[fnv1a(method) % kOthers.size()]};
 }
 

@@ -33,5 +33,6 @@ Registration addReportCommand(CLI::App& app);
 Registration addExploreCommand(CLI::App& app);
 Registration addImportCommand(CLI::App& app);
 Registration addGenerateCommand(CLI::App& app);
+Registration addOptimumCommand(CLI::App& app);
 
 }  // namespace camcov::cli

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
       cli::addInspectCommand(app),  cli::addRunCommand(app),     cli::addRenderCommand(app),
       cli::addVideoCommand(app),    cli::addBenchCommand(app),   cli::addMergeCommand(app),
       cli::addReportCommand(app),   cli::addExploreCommand(app), cli::addImportCommand(app),
-      cli::addGenerateCommand(app),
+      cli::addGenerateCommand(app), cli::addOptimumCommand(app),
   };
   cli::setInvocation(argc, argv);
   try {

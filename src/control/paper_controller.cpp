@@ -1,26 +1,34 @@
 #include "control/paper_controller.h"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
 
 #include "control/local_controller.h"
+#include "control/travel_time.h"
 #include "planners/global_optimizer.h"
 #include "planners/hungarian.h"
+#include "planners/team_improvement.h"
 #include "util/run_threads.h"
 
 namespace camcov::control {
 
 PaperController::PaperController(const scene::Scene& scene, const params::Parameters& params,
-                                 std::uint64_t seed)
+                                 std::uint64_t seed, Variant variant)
     : scene_(scene),
       params_(params),
+      variant_(variant),
       limits_(stepLimits(scene, params.sim.dt)),
       model_(params.reward, scene::halfFovs(scene)),
       validity_(params.planner.d1),
-      local_(params.local),
+      local_(params.local, variant == Variant::Camcov && params.camcov.compass
+                               ? planners::LocalOptimizer::Search::Compass
+                               : planners::LocalOptimizer::Search::Gradient),
       random_(seed),
       executors_(scene.cameras.size(), planners::PlanExecutor(params.potential, params.reward.d2)),
-      roadmapOf_(scene.cameras.size()) {
+      roadmapOf_(scene.cameras.size()),
+      // Ours waits one step to see whether anything moves.
+      nextGlobalTime_(variant == Variant::Camcov ? params.sim.dt : 0.0) {
   for (unsigned t = 1; t < runThreads(); ++t)
     helpers_.emplace_back(params.reward, scene::halfFovs(scene));
 }
@@ -62,6 +70,7 @@ void PaperController::globalOptimization(const Observation& observation) {
     helper.setInstant(model_);
   const auto result = planners::optimizeGlobally(model_, validity_, observation.cameras.size(),
                                                  params_.global.K, random_, helpers_);
+  if (ours() && result) return judge(observation, result->poses, result->reward);
   const double current = model_.reward(committedTeam(observation.cameras));
   if (!result) {
     raise(observation.time, "global", -1, "no valid pose found for some camera", {},
@@ -81,6 +90,69 @@ void PaperController::globalOptimization(const Observation& observation) {
   if (better) plan(observation, result->poses, assignment);
 }
 
+void PaperController::judge(const Observation& observation, std::vector<geometry::Pose> candidate,
+                            double sampled) {
+  const params::CamcovParams& ours = params_.camcov;
+  const std::size_t m = candidate.size();
+  double reward = sampled;
+  planners::TeamImprovement(model_, validity_, ours.refine).refineAll(candidate, reward);
+  // What the team is committed to, with the cameras that follow no plan improved the same way:
+  // where local optimization would take them if nothing were replanned.
+  std::vector<geometry::Pose> kept = committedTeam(observation.cameras);
+  std::uint64_t idle = 0;
+  for (std::size_t j = 0; j < m; ++j) {
+    if (!executors_[j].executing()) idle |= std::uint64_t{1} << j;
+  }
+  double keptReward = model_.reward(kept);
+  planners::TeamImprovement(model_, validity_, ours.refine).refineAll(kept, keptReward, idle);
+
+  const Assignment assignment = assign(observation, candidate);
+  std::vector<geometry::Pose> goals(m);
+  for (std::size_t j = 0; j < m; ++j)
+    goals[j] = candidate[assignment.goalOf[j]];
+  // The paths first, so that the transit is judged along them; a camera with none stays.
+  auto routes = planPaths(observation, goals);
+  std::vector<std::vector<geometry::Pose>> goPaths(m), keepPaths(m);
+  std::vector<double> goTravel(m), keepTravel(m);
+  double longest = 0.0;
+  for (std::size_t j = 0; j < m; ++j) {
+    const auto& camera = scene_.cameras[j];
+    const geometry::Pose& now = observation.cameras[j];
+    goPaths[j] = routes[j] ? routes[j]->poses : std::vector<geometry::Pose>{now};
+    keepPaths[j] = executors_[j].executing() ? executors_[j].pathLeft(now)
+                                             : std::vector<geometry::Pose>{now, kept[j]};
+    goTravel[j] = pathTravelTime(goPaths[j], camera.maxVelocity, camera.maxAngularVelocity);
+    keepTravel[j] = pathTravelTime(keepPaths[j], camera.maxVelocity, camera.maxAngularVelocity);
+    longest = std::max(longest, goTravel[j]);
+  }
+  const double horizon = moving_.value_or(true) ? ours.horizon : ours.staticHorizon;
+  const double go = averageCoverageAhead(model_, {goPaths, goTravel}, horizon, ours.transitSamples);
+  const double stay =
+      averageCoverageAhead(model_, {keepPaths, keepTravel}, horizon, ours.transitSamples);
+  // A goal that takes longer to reach than the horizon is not worth the trip: the transit
+  // would be all that is judged, at an instant long past when it ends.
+  const bool better = longest <= horizon && go > stay + ours.margin * std::abs(stay);
+  raise(observation.time, "global", -1,
+        fmt::format("global reward {:.4f} ({:.4f} sampled, travel {:.1f} s); coverage over the "
+                    "next {:g} s: {:.4f} vs {:.4f} kept: {}",
+                    reward, sampled, longest, horizon, go, stay, better ? "replan" : "keep"),
+        {}, better ? "replan" : "keep");
+  if (better) startPlans(observation, goals, std::move(routes));
+}
+
+double PaperController::lookWhileMoving(std::span<geometry::Pose> team, std::size_t j,
+                                        double plannedTurnRate) {
+  const auto& camera = scene_.cameras[j];
+  const double dt = params_.sim.dt, maxTurn = camera.maxAngularVelocity * dt;
+  const planners::PlanExecutor& executor = executors_[j];
+  const double planned =
+      geometry::wrapAngle(team[j].yaw + std::clamp(plannedTurnRate * dt, -maxTurn, maxTurn));
+  const double timeLeft = executor.distanceLeft(team[j]) / camera.maxVelocity - dt;
+  const double yaw = lookoutYaw(model_, team, j, planned, executor.goal().yaw, timeLeft,
+                                camera.maxAngularVelocity, kLookoutDirections);
+  return geometry::wrapAngle(yaw - team[j].yaw) / dt;
+}
+
 PaperController::Assignment PaperController::assign(
     const Observation& observation, const std::vector<geometry::Pose>& goals) const {
   // Section V-B: estimated travel time, obstacles ignored.
@@ -96,12 +168,7 @@ PaperController::Assignment PaperController::assign(
         cost[j * m + g] = kOtherFieldOfView;
         continue;
       }
-      const double travel =
-          geometry::distance(observation.cameras[j].position(), goals[g].position()) /
-          camera.maxVelocity;
-      const double turn = std::abs(geometry::wrapAngle(goals[g].yaw - observation.cameras[j].yaw)) /
-                          camera.maxAngularVelocity;
-      cost[j * m + g] = std::max(travel, turn);
+      cost[j * m + g] = travelTime(camera, observation.cameras[j], goals[g]);
     }
   }
   Assignment result;
@@ -112,38 +179,83 @@ PaperController::Assignment PaperController::assign(
   return result;
 }
 
-void PaperController::plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
-                           const Assignment& assignment) {
-  const std::size_t m = goals.size();
+planners::Roadmap& PaperController::roadmap(const Observation& observation, std::size_t j) {
   // Section V-C: one roadmap for this planning event, queried by every camera — one per
   // field of view in a team of unlike cameras, since eq. (10)'s cost depends on θ.
-  for (std::size_t j = 0; j < m; ++j) {
+  if (!roadmapOf_[j]) {
     const double theta = scene_.cameras[j].halfFov;
-    roadmapOf_[j] = nullptr;
-    for (std::size_t i = 0; i < j && !roadmapOf_[j]; ++i) {
-      if (scene_.cameras[i].halfFov == theta) roadmapOf_[j] = roadmapOf_[i];
+    for (std::size_t i = 0; i < roadmapOf_.size() && !roadmapOf_[j]; ++i) {
+      if (i != j && roadmapOf_[i] && scene_.cameras[i].halfFov == theta)
+        roadmapOf_[j] = roadmapOf_[i];
     }
     if (!roadmapOf_[j]) {
       roadmapOf_[j] =
           std::make_shared<planners::Roadmap>(observation.world, params_, theta, random_.fork());
     }
   }
+  return *roadmapOf_[j];
+}
+
+std::optional<std::vector<geometry::Pose>> PaperController::straightPath(
+    const Observation& observation, std::size_t j, const geometry::Pose& goal) const {
+  const geometry::Pose& start = observation.cameras[j];
+  if (!ours() || !params_.camcov.straightPaths ||
+      !validity_.isValidMotion(start.position(), goal.position())) {
+    return std::nullopt;
+  }
+  return std::vector<geometry::Pose>{start, goal};
+}
+
+std::vector<std::optional<PaperController::Route>> PaperController::planPaths(
+    const Observation& observation, std::span<const geometry::Pose> goals) {
+  const std::size_t m = goals.size();
+  for (auto& r : roadmapOf_)
+    r = nullptr;
+  // The paper builds the roadmaps up front; ours only where a straight move will not do.
+  if (!ours()) {
+    for (std::size_t j = 0; j < m; ++j)
+      roadmap(observation, j);
+  }
+  std::vector<std::optional<Route>> routes(m);
   for (std::size_t j = 0; j < m; ++j) {
-    const geometry::Pose& target = goals[assignment.goalOf[j]];
-    auto path = roadmapOf_[j]->query(observation.cameras[j], target);
-    if (!path) {
+    if (auto straight = straightPath(observation, j, goals[j])) {
+      routes[j] = Route{std::move(*straight), "straight"};
+      continue;
+    }
+    planners::Roadmap& r = roadmap(observation, j);
+    if (auto path = r.query(observation.cameras[j], goals[j])) {
+      routes[j] = Route{std::move(*path), fmt::format("roadmap of {} milestones", r.milestones())};
+    }
+  }
+  return routes;
+}
+
+void PaperController::startPlans(const Observation& observation,
+                                 std::span<const geometry::Pose> goals,
+                                 std::vector<std::optional<Route>> routes) {
+  for (std::size_t j = 0; j < goals.size(); ++j) {
+    const geometry::Pose& target = goals[j];
+    if (!routes[j]) {
       executors_[j].stop();
       raise(observation.time, "plan-failed", static_cast<int>(j),
             "goal not reachable in the roadmap");
       continue;
     }
+    Route& route = *routes[j];
     raise(observation.time, "plan", static_cast<int>(j),
-          fmt::format("{} waypoints to ({:.2f}, {:.2f}, {:.1f}°), roadmap of {} milestones",
-                      path->size(), target.x, target.y, geometry::radToDeg(target.yaw),
-                      roadmapOf_[j]->milestones()),
-          *path);
-    executors_[j].start(std::move(*path), observation.time);
+          fmt::format("{} waypoints to ({:.2f}, {:.2f}, {:.1f}°), {}", route.poses.size(), target.x,
+                      target.y, geometry::radToDeg(target.yaw), route.how),
+          route.poses);
+    executors_[j].start(std::move(route.poses), observation.time);
   }
+}
+
+void PaperController::plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
+                           const Assignment& assignment) {
+  std::vector<geometry::Pose> targets(goals.size());
+  for (std::size_t j = 0; j < goals.size(); ++j)
+    targets[j] = goals[assignment.goalOf[j]];
+  startPlans(observation, targets, planPaths(observation, targets));
 }
 
 void PaperController::refineGoals(const Observation& observation) {
@@ -161,14 +273,14 @@ void PaperController::refineGoals(const Observation& observation) {
     planners::PlanExecutor& executor = executors_[j];
     const geometry::Pose planned = executor.path().back();
     executor.refineGoal(team[j]);
-    // A goal that wandered off the plan is reached through the roadmap again.
-    if (roadmapOf_[j] &&
-        geometry::distance(planned.position(), team[j].position()) > params_.planner.d1) {
-      if (auto path = roadmapOf_[j]->query(observation.cameras[j], team[j])) {
-        raise(observation.time, "replan", static_cast<int>(j), "refined goal moved beyond d1",
-              *path);
-        executor.start(std::move(*path), observation.time);
-      }
+    // A goal that wandered off the plan is reached again: straight (ours, where valid), else
+    // through the roadmap.
+    if (geometry::distance(planned.position(), team[j].position()) <= params_.planner.d1) continue;
+    auto path = straightPath(observation, j, team[j]);
+    if (!path && roadmapOf_[j]) path = roadmapOf_[j]->query(observation.cameras[j], team[j]);
+    if (path) {
+      raise(observation.time, "replan", static_cast<int>(j), "refined goal moved beyond d1", *path);
+      executor.start(std::move(*path), observation.time);
     }
   }
 }
@@ -177,6 +289,7 @@ void PaperController::control(const Observation& observation,
                               std::span<kinematics::CameraCommand> commands) {
   takeInstant(model_, observation);
   validity_.setWorld(observation.world);
+  if (ours()) moving_ = motion_.see(observation.world);
   const double t = observation.time;
   // Global optimization at t = 0 and every T1 (half a step of slack against rounding).
   if (t + 0.5 * params_.sim.dt >= nextGlobalTime_) {
@@ -195,6 +308,9 @@ void PaperController::control(const Observation& observation,
       others.erase(others.begin() + static_cast<std::ptrdiff_t>(j));
       commands[j] = executor.step(team[j], observation.world, others, scene_.cameras[j].maxVelocity,
                                   params_.sim.dt, t);
+      if (ours() && params_.camcov.transitYaw && executor.executing()) {
+        commands[j].angularVelocity = lookWhileMoving(team, j, commands[j].angularVelocity);
+      }
       if (executor.status() == planners::PlanExecutor::Status::Completed) {
         raise(t, "plan-completed", static_cast<int>(j), "goal reached");
       } else if (executor.status() == planners::PlanExecutor::Status::Aborted) {

@@ -12,8 +12,10 @@
 // "plan-failed" (no path in the roadmap), "plan-completed", "plan-aborted" (no progress for
 // T3), "replan" (the refined goal drifted more than d1 from the path: queried again).
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "control/camcov_choices.h"
 #include "control/controller.h"
 #include "params/parameters.h"
 #include "planners/local_optimizer.h"
@@ -26,10 +28,22 @@
 
 namespace camcov::control {
 
+// Our method (`--method camcov`, issue 19) is this loop with the choices of params.camcov
+// (docs/method.md, "Our method"): the global candidate is improved camera by camera
+// (camcov.refine) and judged by the reward the team would average over the next H seconds,
+// transit included, against the same for what it is committed to (camcov.horizon, while
+// anything moves, else camcov.staticHorizon; the first global optimization waits one step to
+// see whether anything moves); a camera goes straight to its goal where that move is valid
+// (camcov.straightPaths) and on the way looks where it sees most (camcov.transitYaw). Its
+// "global" events say so.
+//
 // Holds a reference to `scene`: the scene must outlive the controller.
 class PaperController final : public Controller {
  public:
-  PaperController(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed);
+  enum class Variant { Paper, Camcov };
+
+  PaperController(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed,
+                  Variant variant = Variant::Paper);
   ~PaperController() override;
 
   void control(const Observation& observation,
@@ -47,10 +61,33 @@ class PaperController final : public Controller {
     double travelTime = 0.0;  // the largest estimated travel time, s
   };
 
+  bool ours() const { return variant_ == Variant::Camcov; }
   void globalOptimization(const Observation& observation);
+  // Ours: improve the candidate, judge it over the horizon, plan if it wins.
+  void judge(const Observation& observation, std::vector<geometry::Pose> candidate, double sampled);
+  // The roadmap camera j queries, built for this planning event when first asked for.
+  planners::Roadmap& roadmap(const Observation& observation, std::size_t j);
+  // Ours: the turn rate that looks where camera j sees most on its way (camcov.transitYaw),
+  // choosing among this many directions.
+  static constexpr int kLookoutDirections = 16;
+  double lookWhileMoving(std::span<geometry::Pose> team, std::size_t j, double plannedTurnRate);
+  // Ours: the straight move to `goal` where it is valid.
+  std::optional<std::vector<geometry::Pose>> straightPath(const Observation& observation,
+                                                          std::size_t j,
+                                                          const geometry::Pose& goal) const;
   Assignment assign(const Observation& observation, const std::vector<geometry::Pose>& goals) const;
   void plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
             const Assignment& assignment);
+  // A path and how it was found ("straight", "roadmap of N milestones").
+  struct Route {
+    std::vector<geometry::Pose> poses;
+    std::string how;
+  };
+  // A route for every camera j to goals[j] (nullopt: none in the roadmap).
+  std::vector<std::optional<Route>> planPaths(const Observation& observation,
+                                              std::span<const geometry::Pose> goals);
+  void startPlans(const Observation& observation, std::span<const geometry::Pose> goals,
+                  std::vector<std::optional<Route>> routes);
   void refineGoals(const Observation& observation);
   void raise(double t, std::string kind, int camera, std::string detail,
              std::vector<geometry::Pose> path = {}, std::string reason = {});
@@ -58,6 +95,9 @@ class PaperController final : public Controller {
 
   const scene::Scene& scene_;
   params::Parameters params_;
+  Variant variant_;
+  MotionWatch motion_;  // ours: does anything move?
+  std::optional<bool> moving_;
   std::vector<planners::StepLimits> limits_;
   reward::RewardModel model_;
   // One more model per thread the run may use (util/run_threads.h), for Algorithm 2's scores.

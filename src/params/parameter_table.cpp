@@ -106,6 +106,42 @@ constexpr std::array kTable{
         "δ + margin against objects at their observed speeds; values below dt mean dt. "
         "Longer: earlier, gentler braking and a wider stand-off from fast objects",
         0, 10),
+    row<&P::camcov, &CamcovParams::refine>(
+        "camcov.refine", "", "evaluations",
+        "our method: pattern-search evaluations spent improving each global candidate camera "
+        "by camera before it is judged (0: Algorithm 2's result as it is); run time grows "
+        "linearly",
+        0, 1e7),
+    row<&P::camcov, &CamcovParams::horizon>(
+        "camcov.horizon", "H", "s",
+        "our method: judge a candidate by the reward the team would average over the next H "
+        "seconds, transit included, while anything moves",
+        1e-3, kInf),
+    row<&P::camcov, &CamcovParams::staticHorizon>(
+        "camcov.staticHorizon", "H_s", "s",
+        "our method: the same horizon while nothing moved in the last step (a static scene)", 1e-3,
+        kInf),
+    row<&P::camcov, &CamcovParams::transitSamples>(
+        "camcov.transitSamples", "", "",
+        "our method: points of the transit at which its reward is estimated", 0, 1000),
+    row<&P::camcov, &CamcovParams::margin>(
+        "camcov.margin", "", "",
+        "our method: a candidate must beat the committed team's value by this fraction", 0, kInf),
+    row<&P::camcov, &CamcovParams::straightPaths>(
+        "camcov.straightPaths", "", "",
+        "our method: go straight to a goal when the straight move is valid, not through the "
+        "roadmap",
+        0, 1),
+    row<&P::camcov, &CamcovParams::transitYaw>(
+        "camcov.transitYaw", "", "",
+        "our method: while following a plan, turn to the yaw within reach that sees most now, "
+        "while the goal's yaw stays reachable on arrival",
+        0, 1),
+    row<&P::camcov, &CamcovParams::compass>(
+        "camcov.compass", "", "",
+        "our method: local optimization by compass search (the best of moves by the step's "
+        "limit and a quarter of it along ±x, ±y, ±γ) instead of gradient ascent",
+        0, 1),
 };
 
 void checkValue(const ParamField& f, double v, const std::string& where) {

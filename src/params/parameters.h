@@ -64,6 +64,33 @@ struct SafetyParams {
                          // against objects moving at their observed speeds; at least dt
 };
 
+// The choices of camcov's own method (`--method camcov`, issue 19; docs/method.md, "Our
+// method"), which keeps the paper's loop and changes how a global optimization's candidate is
+// made, judged and reached. The paper's method ignores them.
+struct CamcovParams {
+  // Pattern-search evaluations spent on improving each global candidate, camera by camera,
+  // before it is judged (0: Algorithm 2's result as it is; measured not to help, so off).
+  int refine = 0;
+  // Judge a candidate by the reward the team would average over the next H seconds, the
+  // transit included (estimated on straight moves at the cameras' speeds, V-B), against the
+  // same for what the team is committed to. H while anything moves, s:
+  double horizon = 15.0;
+  // and while nothing has moved in the last step (a static scene), s:
+  double staticHorizon = 60.0;
+  // Points of the transit at which its reward is estimated.
+  int transitSamples = 4;
+  // The candidate must beat the committed team's value by this fraction.
+  double margin = 0.02;
+  // Go straight to a goal when the straight move is valid, instead of through the roadmap.
+  bool straightPaths = true;
+  // While following a plan, turn to the yaw (within reach this step) that sees most now, as
+  // long as the goal's yaw can still be reached on arrival.
+  bool transitYaw = true;
+  // Local optimization by compass search (the best of moves by the step's limit and a quarter
+  // of it along ±x, ±y, ±γ) instead of the paper's gradient ascent.
+  bool compass = true;
+};
+
 struct Parameters {
   RewardParams reward;
   GlobalParams global;
@@ -72,6 +99,7 @@ struct Parameters {
   PotentialParams potential;
   SimParams sim;
   SafetyParams safety;
+  CamcovParams camcov;
 };
 
 }  // namespace camcov::params

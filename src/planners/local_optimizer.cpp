@@ -5,8 +5,48 @@
 
 namespace camcov::planners {
 
+geometry::Pose LocalOptimizer::compassStep(reward::RewardModel& model,
+                                           std::span<geometry::Pose> team, std::size_t j,
+                                           double currentReward, StepLimits limits) const {
+  const geometry::Pose current = team[j];
+  // The gradient's step is one of the moves tried.
+  geometry::Pose best = gradientStep(model, team, j, currentReward, limits);
+  team[j] = best;
+  auto bestTerms = model.terms(team);
+  for (const double scale : {1.0, 0.25}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double sign : {1.0, -1.0}) {
+        geometry::Pose probe = current;
+        (axis == 0   ? probe.x
+         : axis == 1 ? probe.y
+                     : probe.yaw) +=
+            sign * scale * (axis == 2 ? limits.maxRotation : limits.maxTranslation);
+        probe.yaw = geometry::wrapAngle(probe.yaw);
+        team[j] = probe;
+        const auto t = model.terms(team);
+        const bool turn = axis == 2;
+        if (t.reward > currentReward &&
+            (t.coverage > bestTerms.coverage ||
+             (turn && t.coverage == bestTerms.coverage && t.reward > bestTerms.reward))) {
+          bestTerms = t;
+          best = probe;
+        }
+      }
+    }
+  }
+  team[j] = current;
+  return best;
+}
+
 geometry::Pose LocalOptimizer::step(reward::RewardModel& model, std::span<geometry::Pose> team,
                                     std::size_t j, double currentReward, StepLimits limits) const {
+  return search_ == Search::Compass ? compassStep(model, team, j, currentReward, limits)
+                                    : gradientStep(model, team, j, currentReward, limits);
+}
+
+geometry::Pose LocalOptimizer::gradientStep(reward::RewardModel& model,
+                                            std::span<geometry::Pose> team, std::size_t j,
+                                            double currentReward, StepLimits limits) const {
   const geometry::Pose current = team[j];
   const double eps = params_.epsilon;
   // ∂reward/∂x, ∂y, ∂γ by forward differences over ε (the reward has no analytic gradient:

@@ -18,7 +18,13 @@ struct StepLimits {
 
 class LocalOptimizer {
  public:
-  explicit LocalOptimizer(const params::LocalParams& params) : params_(params) {}
+  // How a step is found: the paper's gradient ascent, or our compass search (issue 19): the
+  // best of the gradient's step and moves by the step's limit, and a quarter of it, along ±x,
+  // ±y and ±γ.
+  enum class Search { Gradient, Compass };
+
+  explicit LocalOptimizer(const params::LocalParams& params, Search search = Search::Gradient)
+      : params_(params), search_(search) {}
 
   // The pose camera j of `team` should move to in one step (its current pose if no step
   // along the gradient raises reward(team)). `team` is restored before returning.
@@ -33,7 +39,13 @@ class LocalOptimizer {
                  std::span<const StepLimits> limits) const;
 
  private:
+  geometry::Pose gradientStep(reward::RewardModel& model, std::span<geometry::Pose> team,
+                              std::size_t j, double currentReward, StepLimits limits) const;
+  geometry::Pose compassStep(reward::RewardModel& model, std::span<geometry::Pose> team,
+                             std::size_t j, double currentReward, StepLimits limits) const;
+
   params::LocalParams params_;
+  Search search_;
 };
 
 }  // namespace camcov::planners

@@ -92,11 +92,22 @@ void PlanExecutor::chooseIntermediateGoal(geometry::Vec2 p, double reach) {
   // for the current intermediate goal.
 }
 
-double PlanExecutor::remaining(const geometry::Pose& pose) const {
-  // SE(2) distance left, as OMPL measures it: to the intermediate goal, then along the path.
+double PlanExecutor::distanceLeft(const geometry::Pose& pose) const {
   return geometry::distance(pose.position(), intermediate_.position()) +
-         (arcLength_.back() - progress_) +
-         0.5 * std::abs(geometry::wrapAngle(goal().yaw - pose.yaw));
+         (arcLength_.back() - progress_);
+}
+
+std::vector<geometry::Pose> PlanExecutor::pathLeft(const geometry::Pose& pose) const {
+  std::vector<geometry::Pose> left{pose, intermediate_};
+  for (std::size_t i = 0; i < path_.size(); ++i) {
+    if (arcLength_[i] > progress_) left.push_back(path_[i]);
+  }
+  return left;
+}
+
+double PlanExecutor::remaining(const geometry::Pose& pose) const {
+  // SE(2) distance left, as OMPL measures it: the way left, and half the yaw still to turn.
+  return distanceLeft(pose) + 0.5 * std::abs(geometry::wrapAngle(goal().yaw - pose.yaw));
 }
 
 kinematics::CameraCommand PlanExecutor::step(const geometry::Pose& pose,

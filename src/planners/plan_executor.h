@@ -40,6 +40,10 @@ class PlanExecutor {
   void refineGoal(const geometry::Pose& goal) { path_.back() = goal; }
   // The point of the path the camera is heading for now.
   const geometry::Pose& intermediateGoal() const { return intermediate_; }
+  // The way left from `pose` to the goal, m: to the intermediate goal, then along the path.
+  double distanceLeft(const geometry::Pose& pose) const;
+  // That way as a path: `pose`, the intermediate goal, the waypoints after it.
+  std::vector<geometry::Pose> pathLeft(const geometry::Pose& pose) const;
 
   // The command for this step; updates the status (Completed, or Aborted after T3).
   kinematics::CameraCommand step(const geometry::Pose& pose, const kinematics::World& world,

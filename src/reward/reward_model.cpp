@@ -40,10 +40,14 @@ RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
   return t;
 }
 
-double RewardModel::reward(std::span<const geometry::Pose> cameras) {
-  const auto t = incremental_.evaluate(*occluders_, sweep_, cameras, halfFovs_, perimeter_);
-  return combine(params_, t.coverage, t.utilization,
-                 repulsion_.evaluate(world_, objectBoxes_, cameras, params_.d2));
+RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
+  const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, halfFovs_, perimeter_);
+  RewardTerms t;
+  t.coverage = kept.coverage;
+  t.utilization = kept.utilization;
+  t.repulsion = repulsion_.evaluate(world_, objectBoxes_, cameras, params_.d2);
+  t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
+  return t;
 }
 
 void RewardModel::visibilityPolygon(geometry::Vec2 point, geometry::Ring& out) {

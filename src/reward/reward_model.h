@@ -39,10 +39,11 @@ class RewardModel {
   // All terms for the camera set (camera j has θ_j; at most as many as there are θs); S is kept
   // and readable through segments() until the next call.
   RewardTerms evaluate(std::span<const geometry::Pose> cameras);
-  // evaluate(cameras).reward to the bit, for the optimizers' probes: from the terms kept of
+  // evaluate(cameras)'s terms to the bit, for the optimizers' probes: from the terms kept of
   // the last call (IncrementalTerms), without making S; segments() still holds the last
   // evaluate()'s.
-  double reward(std::span<const geometry::Pose> cameras);
+  RewardTerms terms(std::span<const geometry::Pose> cameras);
+  double reward(std::span<const geometry::Pose> cameras) { return terms(cameras).reward; }
   std::span<const visibility::Segment> segments() const { return segments_; }
 
   // Omnidirectional visibility polygon of a point at this instant (Algorithm 2, line 6).

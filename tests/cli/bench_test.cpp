@@ -36,9 +36,9 @@ TEST(CliBench, WritesRunsSummaryAndLogs) {
   const fs::path out = freshDir("plain");
   const auto r = runCamcov(benchArgs(out) + " --jobs 2");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  EXPECT_EQ(runFiles(out).size(), 24u) << "12 runs, JSON and CSV each";
+  EXPECT_EQ(runFiles(out).size(), 36u) << "2 scenes x 3 methods x 3 seeds, JSON and CSV each";
   const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
-  EXPECT_EQ(summary["methods"].size(), 4u);
+  EXPECT_EQ(summary["methods"].size(), 6u);
   EXPECT_EQ(summary["scenes"].size(), 2u);
   EXPECT_EQ(summary["methods"][0]["runs"], 3);
   EXPECT_TRUE(fs::exists(out / "summary.csv"));
@@ -78,7 +78,7 @@ TEST(CliBench, VideosShowTheMedianSeedRunOfEachMethodAndAreNotMadeTwice) {
   const auto first = runCamcov(benchArgs(out, 3, "median") + " --jobs 2");
   ASSERT_EQ(first.exitCode, 0) << first.out << first.err;
   const std::set<std::string> expected = medianRunVideos(out);
-  ASSERT_EQ(expected.size(), 4u) << "2 scenes x 2 methods";
+  ASSERT_EQ(expected.size(), 6u) << "2 scenes x 3 methods";
   EXPECT_EQ(videoFiles(out), expected);
   const std::string report = readFile(out / "report.html");
   for (const auto& name : expected) {
@@ -223,12 +223,12 @@ TEST(CliBench, OmplBenchmarkStatisticsReadsOurLogs) {
       runShell("ompl_benchmark_statistics " + (out / "ompl" / "tiny_static.log").string() + " " +
                (out / "ompl" / "tiny_dynamic.log").string() + " -d " + db.string());
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  // 2 scenes x 2 methods x 2 seeds runs, 21 progress samples each.
+  // 2 scenes x 3 methods x 2 seeds runs, 21 progress samples each.
   const auto count = runShell("python3 -c \"import sqlite3; c = sqlite3.connect('" + db.string() +
                               "'); print(c.execute('select count(*) from runs').fetchone()[0], "
                               "c.execute('select count(*) from progress').fetchone()[0], "
                               "c.execute('select count(*) from plannerConfigs').fetchone()[0])\"");
-  EXPECT_EQ(count.out, "8 168 2\n") << count.err;
+  EXPECT_EQ(count.out, "12 252 3\n") << count.err;
 }
 
 }  // namespace

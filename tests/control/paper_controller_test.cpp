@@ -110,5 +110,44 @@ TEST(PaperController, GivesEachCameraAGoalSampledForItsOwnFieldOfView) {
   EXPECT_GE(plans, 3);
 }
 
+TEST(CamcovMethod, WaitsAStepToSeeMotionThenJudgesOverTheStaticHorizonAndGoesStraight) {
+  // The scene holds still: the first global optimization comes at t = dt, is judged over the
+  // static horizon, and both cameras, looking away, go; in the open room straight.
+  const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  params::Parameters p = quick();
+  PaperController controller(s, p, 1, PaperController::Variant::Camcov);
+  EventLog log;
+  const sim::RunSummary summary = sim::simulate(s, p, controller, log);
+  std::vector<double> globals;
+  int straight = 0;
+  for (const auto& e : log.events) {
+    if (e.kind == "global") {
+      globals.push_back(e.time);
+      EXPECT_NE(e.detail.find("over the next 60 s"), std::string::npos) << e.detail;
+    }
+    if (e.kind == "plan") straight += e.detail.find("straight") != std::string::npos;
+  }
+  ASSERT_EQ(globals.size(), 3u);
+  EXPECT_NEAR(globals[0], 0.1, 1e-9);
+  EXPECT_NEAR(globals[1], 5.1, 1e-9);
+  EXPECT_GE(straight, 1);
+  PaperController paper(s, p, 1);
+  EventLog none;
+  EXPECT_GT(summary.averageCoverage, sim::simulate(s, p, paper, none).averageCoverage * 0.9);
+}
+
+TEST(CamcovMethod, KeepsWhatItHasWhenTheGoalLiesBeyondTheHorizon) {
+  const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  params::Parameters p = quick();
+  p.sim.duration = 1.0;
+  p.camcov.staticHorizon = 1e-3;  // no goal can be reached within it
+  PaperController controller(s, p, 1, PaperController::Variant::Camcov);
+  EventLog log;
+  sim::simulate(s, p, controller, log);
+  ASSERT_FALSE(log.events.empty());
+  EXPECT_EQ(log.events[0].kind, "global");
+  EXPECT_EQ(log.events[0].reason, "keep") << log.events[0].detail;
+}
+
 }  // namespace
 }  // namespace camcov::control

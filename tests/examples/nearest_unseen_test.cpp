@@ -31,7 +31,7 @@ TEST(NearestUnseen, IsRegisteredAsAnExampleOutsideTheDefaultBatch) {
   EXPECT_EQ(m->role, control::Role::example);
   const auto defaults = control::defaultMethods();
   EXPECT_EQ(std::count(defaults.begin(), defaults.end(), "nearest-unseen"), 0);
-  EXPECT_EQ(defaults, (std::vector<std::string>{"paper", "local"}));
+  EXPECT_EQ(defaults, (std::vector<std::string>{"paper", "local", "camcov"}));
 }
 
 TEST(NearestUnseen, CamerasLookingAwayTurnToTheTargetAndSeeIt) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "support/small_worlds.h"
@@ -50,6 +51,56 @@ TEST(LocalOptimizer, ImproveMovesOnlyTheSelectedCameras) {
   EXPECT_EQ(team[1], (geometry::Pose{4, 3, 3.0}));
   EXPECT_GE(after, before);
   EXPECT_DOUBLE_EQ(after, model.reward(team));
+}
+
+TEST(LocalOptimizer, CompassStepNeverLowersTheRewardAndRespectsLimits) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+  model.setWorld(w);
+  const LocalOptimizer compass{params::LocalParams{}, LocalOptimizer::Search::Compass};
+  const StepLimits limits{0.2, 0.1};
+  Random random(43);
+  int moved = 0, sawMore = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<geometry::Pose> team;
+    for (int j = 0; j < 3; ++j) {
+      team.push_back({random.uniform(-15, 15), random.uniform(-15, 15), random.uniform(-3, 3)});
+    }
+    const auto before = model.terms(team);
+    const std::vector<geometry::Pose> original = team;
+    const geometry::Pose next = compass.step(model, team, 1, before.reward, limits);
+    EXPECT_EQ(team, original) << "the team is restored";
+    team[1] = next;
+    const auto after = model.terms(team);
+    EXPECT_GE(after.reward, before.reward);
+    EXPECT_LE(geometry::distance(next.position(), original[1].position()),
+              limits.maxTranslation + 1e-12);
+    EXPECT_LE(std::abs(geometry::wrapAngle(next.yaw - original[1].yaw)),
+              limits.maxRotation + 1e-12);
+    if (!(next == original[1])) ++moved;
+    if (after.coverage > before.coverage) ++sawMore;
+  }
+  EXPECT_GT(moved, 50);
+  EXPECT_GT(sawMore, 10);
+}
+
+TEST(LocalOptimizer, CompassTurnsTowardsATargetJustOutOfViewWhereTheGradientSeesNothing) {
+  // The target's nearest corner lies 0.05 rad beyond the left edge of the view: no small
+  // change of yaw shows it (the reward is flat, its numerical gradient 0), a full step does.
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+  model.setWorld(w);
+  const geometry::Vec2 camera{-0.5, -8.0};
+  const double toCorner = std::atan2(-0.5 - camera.y, 0.5 - camera.x);  // the corner (0.5, -0.5)
+  std::vector<geometry::Pose> team{{camera.x, camera.y, toCorner - std::numbers::pi / 6 - 0.05}};
+  ASSERT_EQ(model.terms(team).coverage, 0.0);
+  const StepLimits limits{0.2, 0.1};
+  const double before = model.reward(team);
+  const LocalOptimizer gradient{params::LocalParams{}};
+  EXPECT_EQ(gradient.step(model, team, 0, before, limits), team[0]);
+  const LocalOptimizer compass{params::LocalParams{}, LocalOptimizer::Search::Compass};
+  team[0] = compass.step(model, team, 0, before, limits);
+  EXPECT_GT(model.terms(team).coverage, 0.0);
 }
 
 }  // namespace

@@ -71,8 +71,8 @@ TEST(Report, ShowsContactsBelowDeltaByKindInTheTableAndOnTheTimePlots) {
   EXPECT_NE(summary.find("avoidable / unavoidable"), std::string::npos);
   EXPECT_NE(summary.find("runs with avoidable contact"), std::string::npos);
   // Each method: no avoidable time (0.00 first), some unavoidable, no run with an avoidable one.
-  EXPECT_EQ(countOf(summary, "\">0.00 / 0."), 2) << summary;
-  EXPECT_EQ(countOf(summary, "2 runs had an unavoidable contact\">0 / 2<"), 2) << summary;
+  EXPECT_EQ(countOf(summary, "\">0.00 / 0."), 3) << summary;
+  EXPECT_EQ(countOf(summary, "2 runs had an unavoidable contact\">0 / 2<"), 3) << summary;
   const std::string series = section(html, "time-series");
   EXPECT_GE(countOf(series, "unavoidable-contact camera 1 (outpaced)"), 2) << "a mark per method";
   EXPECT_NE(series.find(">unavoidable contact &lt; δ<"), std::string::npos) << "in the legend";
@@ -94,15 +94,15 @@ TEST(Report, EveryPlotHasAxesAndTheRightNumberOfBoxes) {
   }
   const std::string boxes = section(html, "box-plots");
   EXPECT_EQ(countOf(boxes, "class=\"box\" data-metric=\"coverage\""),
-            2 * static_cast<int>(std::size(kFixtureScenes)));
+            3 * static_cast<int>(std::size(kFixtureScenes)));
   EXPECT_EQ(countOf(boxes, "class=\"box\" data-metric=\"utilization\""),
-            2 * static_cast<int>(std::size(kFixtureScenes)));
+            3 * static_cast<int>(std::size(kFixtureScenes)));
   for (const std::string scene : kFixtureScenes) {
     const auto at = html.find("data-figure=\"series\" data-scene=\"" + scene + "\"");
     ASSERT_NE(at, std::string::npos);
     const std::string figure = html.substr(at, html.find("</figure>", at) - at);
     EXPECT_EQ(countOf(figure, "<svg class=\"chart\""), 2) << "coverage and utilization";
-    EXPECT_EQ(countOf(figure, "<polyline"), 4) << "the median run of each method, twice";
+    EXPECT_EQ(countOf(figure, "<polyline"), 6) << "the median run of each method, twice";
     EXPECT_GE(countOf(figure, "class=\"axis-mark\""), 2) << "the paper's replan at t = 0";
   }
   EXPECT_EQ(svgs(html, "scene").size(), std::size(kFixtureScenes));
@@ -134,10 +134,10 @@ TEST(Report, HeaderNamesCommandJobsAndParameterOverrides) {
   const ScratchDir dir;
   ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
   const std::string html = readFile(dir / "results" / "report.html");
-  EXPECT_NE(html.find("12 = 2 scenes × 2 methods × 3 seeds; 0 failed"), std::string::npos);
+  EXPECT_NE(html.find("18 = 2 scenes × 3 methods × 3 seeds; 0 failed"), std::string::npos);
   EXPECT_NE(html.find("bench --scenes"), std::string::npos);
   EXPECT_NE(html.find("<dt>Machine</dt>"), std::string::npos);
-  EXPECT_NE(html.find("summed over 12 jobs"), std::string::npos);
+  EXPECT_NE(html.find("summed over 18 jobs"), std::string::npos);
   const std::string parameters = section(html, "parameters");
   EXPECT_EQ(countOf(parameters, "<tr class=\"override\">"), 3) << "K, T2 and the duration";
   EXPECT_NE(parameters.find("<code>global.K</code> = 30 (default 500)"), std::string::npos);

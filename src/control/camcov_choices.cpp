@@ -1,0 +1,112 @@
+#include "control/camcov_choices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace camcov::control {
+
+namespace {
+
+double pathLength(std::span<const geometry::Pose> path) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i)
+    length += geometry::distance(path[i - 1].position(), path[i].position());
+  return length;
+}
+
+// The pose a fraction u of the way along `path` (by length; the yaw turned that far).
+geometry::Pose along(std::span<const geometry::Pose> path, double u) {
+  const geometry::Pose& first = path.front();
+  const geometry::Pose& last = path.back();
+  const double yaw = geometry::wrapAngle(first.yaw + u * geometry::wrapAngle(last.yaw - first.yaw));
+  double left = u * pathLength(path);
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const double piece = geometry::distance(path[i - 1].position(), path[i].position());
+    if (left <= piece && piece > 0.0) {
+      const geometry::Vec2 p =
+          geometry::lerp(path[i - 1].position(), path[i].position(), left / piece);
+      return {p.x, p.y, yaw};
+    }
+    left -= piece;
+  }
+  return {last.x, last.y, yaw};
+}
+
+}  // namespace
+
+double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
+                      double maxAngularVelocity) {
+  const double turn = std::abs(geometry::wrapAngle(path.back().yaw - path.front().yaw));
+  return std::max(pathLength(path) / maxVelocity, turn / maxAngularVelocity);
+}
+
+double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, double horizon,
+                            int samples) {
+  const double transit =
+      move.travel.empty() ? 0.0 : *std::max_element(move.travel.begin(), move.travel.end());
+  std::vector<geometry::Pose> team;
+  for (const auto& path : move.paths)
+    team.push_back(path.back());
+  const double arrived = model.terms(team).coverage;
+  if (!(transit > 0.0)) return arrived;
+  const double end = std::min(transit, horizon);
+  const auto coverageAt = [&](double t) {
+    for (std::size_t j = 0; j < team.size(); ++j) {
+      const double u = move.travel[j] > 0.0 ? std::min(1.0, t / move.travel[j]) : 1.0;
+      team[j] = along(move.paths[j], u);
+    }
+    return model.terms(team).coverage;
+  };
+  // The trapezoid rule over the transit's first `end` seconds.
+  double integral = 0.0, before = coverageAt(0.0), tBefore = 0.0;
+  for (int k = 1; k <= samples + 1; ++k) {
+    const double t = end * k / (samples + 1);
+    const double c = t >= transit ? arrived : coverageAt(t);
+    integral += 0.5 * (before + c) * (t - tBefore);
+    before = c;
+    tBefore = t;
+  }
+  integral += arrived * std::max(0.0, horizon - transit);
+  return integral / horizon;
+}
+
+std::optional<bool> MotionWatch::see(const kinematics::World& world) {
+  std::optional<bool> moved;
+  if (seen_) {
+    moved = !(world.targets == last_.targets && world.obstacles == last_.obstacles &&
+              world.targetIds == last_.targetIds && world.obstacleIds == last_.obstacleIds);
+  }
+  last_ = world;
+  seen_ = true;
+  return moved;
+}
+
+double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
+                  double plannedYaw, double goalYaw, double timeLeft, double turnRate,
+                  int directions) {
+  const geometry::Pose kept = team[j];
+  const double reach = turnRate * std::max(0.0, timeLeft);
+  double bestYaw = plannedYaw, best = -std::numeric_limits<double>::infinity();
+  for (int k = -1; k < directions; ++k) {
+    const double yaw =
+        k < 0 ? plannedYaw : geometry::wrapAngle(2.0 * std::numbers::pi * k / directions);
+    // Turning there, then on to the goal's yaw, must fit in the time left.
+    if (k >= 0 && std::abs(geometry::wrapAngle(yaw - kept.yaw)) +
+                          std::abs(geometry::wrapAngle(goalYaw - yaw)) >
+                      reach) {
+      continue;
+    }
+    team[j].yaw = yaw;
+    const double r = model.reward(team);
+    if (r > best) {
+      best = r;
+      bestYaw = yaw;
+    }
+  }
+  team[j] = kept;
+  return bestYaw;
+}
+
+}  // namespace camcov::control

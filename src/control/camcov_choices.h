@@ -1,0 +1,56 @@
+#pragma once
+// The pieces our method (`--method camcov`, issue 19; docs/method.md, "Our method") adds to
+// the paper's loop in PaperController: how a global candidate is judged against what the team
+// is committed to, whether anything in the scene moves, and where a camera following a plan
+// looks on the way.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "kinematics/world.h"
+#include "reward/reward_model.h"
+
+namespace camcov::control {
+
+// A team on its way: camera j along paths[j] (its pose now first, its goal last), at an even
+// pace that takes travel[j] seconds, then staying at its goal.
+struct TeamMove {
+  std::span<const std::vector<geometry::Pose>> paths;
+  std::span<const double> travel;
+};
+
+// How long a path takes at the camera's limits: the longer of running its length at v_max
+// and turning from its first yaw to its last at γ̇_max (section V-B's estimate, along the path).
+double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
+                      double maxAngularVelocity);
+
+// The coverage, eq. (3), the team would average over the next `horizon` seconds along `move`,
+// at the model's instant: the transit's coverage at its two ends and `samples` instants between
+// them (each camera's position that far along its path, its yaw turned that far from its first
+// to its goal's), by the trapezoid rule, then the goals' coverage for the rest of the horizon.
+// A transit longer than the horizon counts up to the horizon only.
+double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, double horizon,
+                            int samples);
+
+// Whether a target or obstacle moved (or came or went) between the last two instants seen.
+class MotionWatch {
+ public:
+  // The world at the next instant; nullopt until two instants have been seen.
+  std::optional<bool> see(const kinematics::World& world);
+
+ private:
+  bool seen_ = false;
+  kinematics::World last_;
+};
+
+// Where camera j, following a plan, should look: of `directions` yaws evenly round and the
+// executor's `plannedYaw`, the one from which the team (camera j turned so) has the highest
+// reward now, among those it can turn to and then on to the goal's yaw within `timeLeft` s at
+// `turnRate`; ties go to the planned yaw.
+double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
+                  double plannedYaw, double goalYaw, double timeLeft, double turnRate,
+                  int directions);
+
+}  // namespace camcov::control

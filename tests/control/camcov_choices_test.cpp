@@ -1,0 +1,82 @@
+// The pieces of our method (issue 19; control/camcov_choices.h), each against numbers worked
+// out by hand on a unit square target.
+#include "control/camcov_choices.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "support/small_worlds.h"
+
+namespace camcov::control {
+namespace {
+
+using geometry::Pose;
+
+constexpr double kTheta = std::numbers::pi / 6;
+
+kinematics::World squareWorld() {
+  return testing::world(testing::box(-20, -20, 20, 20), {testing::box(0, 0, 1, 1)});
+}
+
+TEST(PathTravelTime, IsTheLongerOfRunningTheLengthAndTurning) {
+  const std::vector<Pose> path{{0, 0, 0}, {3, 0, 0}, {3, 4, 0.5}};
+  EXPECT_DOUBLE_EQ(pathTravelTime(path, 1.0, 1.0), 7.0);   // 7 m at 1 m/s
+  EXPECT_DOUBLE_EQ(pathTravelTime(path, 10.0, 0.1), 5.0);  // 0.5 rad at 0.1 rad/s
+  EXPECT_DOUBLE_EQ(pathTravelTime({{{1, 1, 0}}}, 1.0, 1.0), 0.0);
+}
+
+TEST(AverageCoverageAhead, HoldsTheGoalsCoverageWhenNothingMoves) {
+  reward::RewardModel model(params::RewardParams{}, kTheta);
+  model.setWorld(squareWorld());
+  // Facing the bottom side from 5 m: a quarter of the perimeter.
+  const std::vector<std::vector<Pose>> paths{{{0.5, -5, std::numbers::pi / 2}}};
+  const std::vector<double> travel{0.0};
+  EXPECT_NEAR(averageCoverageAhead(model, {paths, travel}, 10.0, 4), 0.25, 1e-12);
+}
+
+TEST(AverageCoverageAhead, CountsTheTransitByTheTrapezoidRuleThenTheGoalToTheHorizon) {
+  reward::RewardModel model(params::RewardParams{}, kTheta);
+  model.setWorld(squareWorld());
+  // Facing away from the target all the way (coverage 0), then facing it at the goal: with
+  // one sample inside a 4 s transit and a 10 s horizon, the trapezoid rule gives the last 2 s
+  // of the transit half the goal's coverage: (0.5 · 0.25 · 2 + 0.25 · 6) / 10.
+  const std::vector<std::vector<Pose>> paths{
+      {{0.5, -9, -std::numbers::pi / 2}, {0.5, -5, std::numbers::pi / 2}}};
+  const std::vector<double> travel{4.0};
+  const double expected = (0.5 * 0.25 * 2.0 + 0.25 * 6.0) / 10.0;
+  // The yaw turns from −90° to 90° along the way: at the midpoint it faces 0° (east), away
+  // from the target's x range: nothing seen, as assumed.
+  EXPECT_NEAR(averageCoverageAhead(model, {paths, travel}, 10.0, 1), expected, 1e-12);
+  // A horizon shorter than the transit counts the transit only, up to the horizon.
+  EXPECT_NEAR(averageCoverageAhead(model, {paths, travel}, 2.0, 1), 0.0, 1e-12);
+}
+
+TEST(MotionWatch, SaysNothingAtFirstThenWhetherAnythingMovedCameOrWent) {
+  MotionWatch watch;
+  kinematics::World w = squareWorld();
+  EXPECT_FALSE(watch.see(w).has_value());
+  EXPECT_EQ(watch.see(w), std::optional<bool>(false));
+  w.targets[0][0].x += 1e-9;
+  EXPECT_EQ(watch.see(w), std::optional<bool>(true));
+  EXPECT_EQ(watch.see(w), std::optional<bool>(false));
+  w.obstacles.push_back(testing::box(5, 5, 6, 6));
+  EXPECT_EQ(watch.see(w), std::optional<bool>(true));
+}
+
+TEST(LookoutYaw, LooksAtTheTargetWhenThereIsTimeAndKeepsThePlanWhenThereIsNot) {
+  reward::RewardModel model(params::RewardParams{}, kTheta);
+  model.setWorld(squareWorld());
+  // West of the target, planned to face north: turning east shows the target.
+  std::vector<Pose> team{{-6, 0.5, std::numbers::pi / 2}};
+  const double planned = std::numbers::pi / 2, goal = std::numbers::pi / 2;
+  const double seen = lookoutYaw(model, team, 0, planned, goal, 10.0, 1.0, 16);
+  EXPECT_NEAR(seen, 0.0, 1e-12) << "east, of 16 directions";
+  EXPECT_EQ(team[0], (Pose{-6, 0.5, std::numbers::pi / 2})) << "the team is restored";
+  // One second left at 1 rad/s: east and back to north (π) does not fit.
+  EXPECT_EQ(lookoutYaw(model, team, 0, planned, goal, 1.0, 1.0, 16), planned);
+}
+
+}  // namespace
+}  // namespace camcov::control
