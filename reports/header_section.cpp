@@ -73,14 +73,18 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
       "and local optimization) against local optimization only, on {} scenes with {} seeds "
       "each.</p>\n",
       m.scenes.size(), m.seeds);
-  for (const records::Tally& t : s.tallies) {
-    out += fmt::format(
-        "<p class=\"verdict\">On average coverage {} <b>wins {}</b>, ties {} and <b>loses "
-        "{}</b> of {} scenes against {} (two-sided Mann-Whitney U test over seeds, "
-        "α&nbsp;=&nbsp;{}).</p>\n",
-        escapeXml(methodStyle(t.method).label), t.wins, t.ties, t.losses,
-        t.wins + t.ties + t.losses, escapeXml(methodStyle(s.reference).label),
-        records::kSignificance);
+  // Against the reference, then the others pairwise (section "Methods against each other").
+  for (const auto* tallies : {&s.tallies, &s.pairTallies}) {
+    for (const records::Tally& t : *tallies) {
+      out += fmt::format(
+          "<p class=\"verdict\">On average coverage {} <b>wins {}</b>, ties {} and <b>loses "
+          "{}</b> of {} scenes against {} (two-sided Mann-Whitney U test over seeds, "
+          "α&nbsp;=&nbsp;{}).</p>\n",
+          escapeXml(methodStyle(t.method).label), t.wins, t.ties, t.losses,
+          t.wins + t.ties + t.losses,
+          escapeXml(methodStyle(t.against.empty() ? s.reference : t.against).label),
+          records::kSignificance);
+    }
   }
   if (!s.tallies.empty()) {
     out +=

@@ -52,6 +52,7 @@ th, td { padding: .3rem .55rem; border-bottom: 1px solid var(--line); text-align
 thead th { background: var(--panel); font-weight: 600; vertical-align: bottom; white-space: nowrap; }
 thead th[colspan] { text-align: center; border-bottom: 1px solid #c3c8cf; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+td.near-optimum { color: #1a7f37; font-weight: 600; }
 table.summary tbody { border-top: 1px solid #b4bac3; }
 table.summary tbody th { font-weight: 600; white-space: nowrap; }
 th button { font: inherit; font-weight: 600; color: inherit; background: none; border: 0;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "records/atomic_file.h"
 #include "reports/markup.h"
 #include "reports/report_assets.h"
@@ -16,6 +18,11 @@ std::string navigation(const ReportData& data) {
       "</a></li><li><a href=\"#time-series\">Over time (Fig. 5)</a></li><li><a "
       "href=\"#scenes\">Scenes (Fig. 3)</a></li><li><a href=\"#parameters\">Parameters "
       "(Table I)</a></li>";
+  if (!data.summary.pairTallies.empty())
+    links += "<li><a href=\"#pairs\">Methods against each other</a></li>";
+  if (std::any_of(data.scenes.begin(), data.scenes.end(),
+                  [](const SceneData& s) { return s.optimum.has_value(); }))
+    links += "<li><a href=\"#optimum\">Against the optimum</a></li>";
   if (!data.videos.empty()) links += "<li><a href=\"#videos\">Videos</a></li>";
   if (!data.summary.failures.empty()) {
     links += fmt::format("<li><a href=\"#failures\">Failed jobs ({})</a></li>",
@@ -35,6 +42,8 @@ std::string buildReportHtml(const ReportData& data, const BuildContext& context)
   html += headerSection(data, context);
   html += "<main>\n";
   html += summarySection(data);
+  html += pairsSection(data);
+  html += optimumSection(data);
   html += boxPlotSection(data);
   html += timeSeriesSection(data);
   html += sceneGallerySection(data);

@@ -95,6 +95,20 @@ void loadScene(const records::SceneEntry& entry, SceneData& data) {
   }
 }
 
+// The offline optimum the bench searched for this scene, if any and if it was made from the
+// scene file the runs were (an unreadable one is left out: it is a reference, not a result).
+std::optional<records::OptimumFile> findOptimum(const records::BatchFolder& folder,
+                                                const records::SceneEntry& entry) {
+  const fs::path file = folder.optimumFile(entry.name);
+  if (!fs::exists(file)) return std::nullopt;
+  try {
+    records::OptimumFile optimum = records::loadOptimumFile(file);
+    if (optimum.sceneHash == entry.hash) return optimum;
+  } catch (const InputError&) {
+  }
+  return std::nullopt;
+}
+
 std::vector<std::string> findVideos(const fs::path& resultsDir, const fs::path& reportDir) {
   std::vector<fs::path> files;
   std::error_code ec;
@@ -119,11 +133,7 @@ SceneGroup sceneGroup(const std::string& name, const scene::Scene* scene) {
   if (startsWith(name, "dynamic")) return SceneGroup::Dynamic;
   if (scene == nullptr) return SceneGroup::Other;
   if (scene->hasPresenceWindows()) return SceneGroup::Recorded;
-  const auto isStatic = [](const scene::MovingObject& o) { return o.isStatic(); };
-  return std::all_of(scene->targets.begin(), scene->targets.end(), isStatic) &&
-                 std::all_of(scene->obstacles.begin(), scene->obstacles.end(), isStatic)
-             ? SceneGroup::Static
-             : SceneGroup::Dynamic;
+  return scene->holdsStill() ? SceneGroup::Static : SceneGroup::Dynamic;
 }
 
 const char* groupName(SceneGroup group) {
@@ -171,6 +181,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
                                     [&](const records::SceneEntry& e) { return e.name == name; });
     if (entry != data.manifest.scenes.end()) {
       loadScene(*entry, scene);
+      scene.optimum = findOptimum(folder, *entry);
     } else {
       scene.sceneNote = "not listed in batch.json";
     }

@@ -14,6 +14,7 @@
 #include "control/controller.h"
 #include "records/batch_folder.h"
 #include "records/batch_summary.h"
+#include "records/optimum_file.h"
 #include "scene/scene.h"
 
 namespace camcov::reports {
@@ -52,6 +53,8 @@ struct SceneData {
   std::string sceneNote;                      // why the scene is missing, or that its file changed
   std::map<std::string, MethodRuns> methods;  // by method name
   std::string explorerUrl;  // explore/<scene>.html relative to the report; empty if none
+  // optimum/<scene>.json (issue 19) when it was made from the scene the batch ran.
+  std::optional<records::OptimumFile> optimum;
 };
 
 struct ReportData {

@@ -12,6 +12,10 @@ namespace camcov::reports {
 std::string headerSection(const ReportData& data, const BuildContext& context);
 // 2. Per scene and method: coverage, utilization, safety; winner and p; grouped, sortable.
 std::string summarySection(const ReportData& data);
+// 2b. The methods other than the reference against each other (e.g. ours against the paper's).
+std::string pairsSection(const ReportData& data);
+// 2c. Scenes that hold still: each method's final coverage against the offline optimum.
+std::string optimumSection(const ReportData& data);
 // 3. The paper's Fig. 4: box-and-whisker plots of average coverage (and utilization).
 std::string boxPlotSection(const ReportData& data);
 // 4. The paper's Fig. 5: coverage and utilization over time, per scene.

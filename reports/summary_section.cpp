@@ -9,19 +9,10 @@
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
+#include "reports/verdict_markup.h"
 
 namespace camcov::reports {
 namespace {
-
-std::string pValueText(double p) {
-  return p < 0.001 ? "&lt;&nbsp;0.001" : fixed(p, 3);
-}
-
-std::string winnerBadge(const std::string& winner) {
-  if (winner.empty()) return "<span class=\"badge\">—</span>";
-  const std::string_view color = winner == "tie" ? "#8a8f98" : methodStyle(winner).color;
-  return fmt::format("<span class=\"badge\" style=\"--c:{}\">{}</span>", color, escapeXml(winner));
-}
 
 std::string meanSd(const records::Description& d, bool best) {
   if (d.count == 0) return "—";

@@ -11,12 +11,12 @@
 
 namespace camcov::cli {
 
-ExplorerBatch writeBenchExplorers(const records::BatchFolder& folder,
-                                  std::span<const records::VideoRun> runs) {
+OutputBatch writeBenchExplorers(const records::BatchFolder& folder,
+                                std::span<const records::VideoRun> runs) {
   std::map<std::string, std::vector<std::filesystem::path>> byScene;  // in the runs' order
   for (const auto& run : runs)
     byScene[run.scene].push_back(folder.runFile(records::runStem(run.scene, run.method, run.seed)));
-  ExplorerBatch batch;
+  OutputBatch batch;
   for (const auto& [scene, files] : byScene) {
     const std::filesystem::path page = folder.root() / "explore" / (scene + ".html");
     try {

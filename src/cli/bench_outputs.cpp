@@ -7,6 +7,7 @@
 #include <map>
 
 #include "cli/bench_explorers.h"
+#include "cli/bench_optima.h"
 #include "cli/bench_videos.h"
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
@@ -28,6 +29,11 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
   cmd.add_option("--reference", reference,
                  "the method every other is tested against (default: the baseline, local, if "
                  "run; else the first method)");
+  cmd.add_option("--optimum-budget", optimumBudget,
+                 "reward evaluations of the offline optimum (camcov optimum) searched for each "
+                 "scene that holds still, for the report to set final coverage against; 0: none")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40))
+      ->capture_default_str();
 }
 
 records::VideoChoice BenchOutputOptions::explorerChoice() const {
@@ -78,9 +84,13 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
     }
     std::cout << line << "\n";
   }
-  for (const auto& t : summary.tallies) {
-    std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}\n", t.method,
-                             summary.reference, t.wins, t.ties, t.losses);
+  // Against the reference, then the others pairwise.
+  for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
+    for (const auto& t : *tallies) {
+      std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}\n", t.method,
+                               t.against.empty() ? summary.reference : t.against, t.wins, t.ties,
+                               t.losses);
+    }
   }
   std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
 }
@@ -91,7 +101,7 @@ int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchMa
                       const std::vector<records::JobOutcome>& outcomes,
                       const BenchOutputOptions& options, unsigned workers) {
   const records::BatchSummary summary =
-      records::summarize(outcomes, options.referenceAmong(manifest.methods));
+      records::summarize(outcomes, options.referenceAmong(manifest.methods), manifest.methods);
   folder.writeSummary(summary);
   const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
   printSummary(summary, manifest.methods);
@@ -103,19 +113,20 @@ int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchMa
       folder.root().string(), logs.size(), folder.root().string());
   // Before the report, which embeds what it finds in videos/.
   const auto chosen = records::chooseVideoRuns(summary, outcomes, options.videoChoice());
+  const std::string root = folder.root().string();
   if (!chosen.empty()) {
-    const VideoBatch videos = writeBenchVideos(folder, chosen, workers);
-    std::cout << fmt::format("wrote {} videos in {}/videos ({} up to date{})\n", videos.written,
-                             folder.root().string(), videos.upToDate,
-                             videos.failed ? fmt::format(", {} not written", videos.failed) : "");
+    std::cout << writeBenchVideos(folder, chosen, workers).describe("videos", root + "/videos")
+              << "\n";
   }
   const auto explored = records::chooseVideoRuns(summary, outcomes, options.explorerChoice());
   if (!explored.empty()) {
-    const ExplorerBatch pages = writeBenchExplorers(folder, explored);
-    std::cout << fmt::format("wrote {} run explorer pages in {}/explore{}\n", pages.written,
-                             folder.root().string(),
-                             pages.failed ? fmt::format(" ({} not written)", pages.failed) : "");
+    std::cout
+        << writeBenchExplorers(folder, explored).describe("run explorer pages", root + "/explore")
+        << "\n";
   }
+  const OutputBatch optima = writeBenchOptima(folder, manifest, options.optimumBudget, workers);
+  if (optima.written + optima.upToDate + optima.failed > 0)
+    std::cout << optima.describe("offline optima", root + "/optimum") << "\n";
   if (!options.noReport) {
     reports::writeReport(folder.root(), folder.root() / "report.html");
     std::cout << fmt::format("wrote {}\n", (folder.root() / "report.html").string());

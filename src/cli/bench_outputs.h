@@ -2,6 +2,7 @@
 // What `camcov bench` and `camcov merge` write once the runs exist: the summary (JSON, CSV),
 // the OMPL benchmark logs, the videos, the explorer pages, the report, and a table on stdout.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ struct BenchOutputOptions {
   std::string videos = "median";
   std::string explorer = "median";  // explore/<scene>.html: none, median or best
   std::string reference;            // the method the others are tested against; empty: the baseline
+  std::int64_t optimumBudget = 200000;  // reward evaluations per optimum/<scene>.json; 0: none
   void addTo(CLI::App& cmd);
   // InputError for a bad --videos.
   records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }

@@ -5,7 +5,6 @@
 #include <atomic>
 #include <exception>
 #include <filesystem>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -18,9 +17,9 @@ namespace camcov::cli {
 
 namespace fs = std::filesystem;
 
-VideoBatch writeBenchVideos(const records::BatchFolder& folder,
-                            std::span<const records::VideoRun> runs, unsigned workers) {
-  VideoBatch batch;
+OutputBatch writeBenchVideos(const records::BatchFolder& folder,
+                             std::span<const records::VideoRun> runs, unsigned workers) {
+  OutputBatch batch;
   if (runs.empty()) return batch;
   const fs::path dir = folder.root() / "videos";  // made by the first video's encoder
 
@@ -41,8 +40,7 @@ VideoBatch writeBenchVideos(const records::BatchFolder& folder,
                batch.upToDate, dir.c_str());
   Progress progress(runs.size(), batch.upToDate);
   std::atomic<std::size_t> written{0};
-  std::mutex mutex;
-  std::vector<std::string> problems;  // said again after the progress line, which may overwrite
+  OutputProblems problems;
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const records::VideoRun& chosen = runs[pending[k]];
     const std::string stem = records::runStem(chosen.scene, chosen.method, chosen.seed);
@@ -58,16 +56,13 @@ VideoBatch writeBenchVideos(const records::BatchFolder& folder,
                       scene.changed ? " (warning: the scene file has changed since the run)" : "");
     } catch (const std::exception& e) {
       what = fmt::format("videos/{}.mp4: not written: {}", stem, e.what());
-      const std::lock_guard lock(mutex);
-      problems.push_back(what);
+      problems.add(what);
     }
     progress.finished(what);
   });
   progress.close();
-  for (const std::string& problem : problems)
-    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+  batch.failed = problems.report();
   batch.written = written;
-  batch.failed = problems.size();
   return batch;
 }
 

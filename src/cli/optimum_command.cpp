@@ -9,16 +9,11 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "batch/scene_optimum.h"
 #include "cli/command.h"
 #include "cli/parameter_options.h"
-#include "kinematics/kinematics.h"
-#include "params/parameter_table.h"
-#include "planners/offline_optimum.h"
 #include "records/atomic_file.h"
-#include "reward/reward_model.h"
-#include "scene/scene_loader.h"
-#include "util/input_error.h"
-#include "util/random.h"
+#include "records/optimum_file.h"
 
 namespace camcov::cli {
 namespace {
@@ -33,64 +28,20 @@ struct OptimumCommandOptions {
   ParameterOptions parameters;
 };
 
-nlohmann::json poseList(const std::vector<geometry::Pose>& poses) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const auto& p : poses)
-    list.push_back({{"x", p.x}, {"y", p.y}, {"yaw_deg", geometry::radToDeg(p.yaw)}});
-  return list;
-}
-
 int optimum(const OptimumCommandOptions& o) {
-  const scene::SceneFile file = scene::loadSceneFile(o.scene);
-  const scene::Scene& s = file.scene;
-  const params::Parameters p = o.parameters.resolve();
-  const kinematics::World world = kinematics::Kinematics(s).worldAt(o.time);
-  reward::RewardModel model(p.reward, scene::halfFovs(s));
-  model.setWorld(world);
-  planners::StateValidity validity(p.planner.d1);
-  validity.setWorld(world);
-  planners::OptimumOptions options;
-  options.budget = o.budget;
-  options.samplesPerCamera = p.global.K;
-  Random random(o.seed);
-  const auto best = planners::searchOptimum(model, validity, s.cameras.size(), options, random);
-  if (!best) {
-    throw InputError(
-        fmt::format("{}: no valid pose for every camera was found at t = {} s", o.scene, o.time));
-  }
-
-  nlohmann::json curve = nlohmann::json::array();
-  for (const auto& step : best->curve)
-    curve.push_back(
-        {{"evaluations", step.evaluations}, {"reward", step.reward}, {"coverage", step.coverage}});
-  const nlohmann::json j = {
-      {"format", "camcov-optimum/1"},
-      {"note",
-       "the best team pose a random, local search found: a reference, not a proof of "
-       "optimality; the curve shows how the best grew with the budget"},
-      {"scene", {{"name", s.name}, {"file", o.scene}, {"hash", file.hash}}},
-      {"time", o.time},
-      {"seed", o.seed},
-      {"budget", o.budget},
-      {"parameters", params::toJson(p)},
-      {"best",
-       {{"poses", poseList(best->poses)},
-        {"coverage", best->terms.coverage},
-        {"utilization", best->terms.utilization},
-        {"repulsion", best->terms.repulsion},
-        {"reward", best->terms.reward}}},
-      {"found",
-       {{"round", best->foundInRound}, {"by", best->foundBy}, {"evaluations", best->foundAt}}},
-      {"rounds", best->rounds},
-      {"evaluations", best->evaluations},
-      {"curve", curve}};
+  const records::OptimumFile found =
+      batch::searchSceneOptimum(o.scene, o.parameters.resolve(), o.time, o.budget, o.seed);
+  const nlohmann::json j = records::optimumToJson(found);
   if (!o.out.empty()) records::writeFileAtomically(o.out, j.dump(1) + "\n");
-  if (!o.poses.empty()) records::writeFileAtomically(o.poses, poseList(best->poses).dump(1) + "\n");
+  if (!o.poses.empty()) {
+    records::writeFileAtomically(o.poses, j.at("best").at("poses").dump(1) + "\n");
+  }
+  const planners::OptimumResult& best = found.result;
   std::cout << fmt::format(
       "{} at t = {} s: coverage {:.4f}, reward {:.4f}; found in round {} of {} by {} after {} "
       "of {} evaluations\n",
-      s.name, o.time, best->terms.coverage, best->terms.reward, best->foundInRound, best->rounds,
-      best->foundBy, best->foundAt, best->evaluations);
+      found.scene, o.time, best.terms.coverage, best.terms.reward, best.foundInRound, best.rounds,
+      best.foundBy, best.foundAt, best.evaluations);
   for (const std::string* f : {&o.out, &o.poses}) {
     if (!f->empty()) std::cout << "  -> " << *f << "\n";
   }

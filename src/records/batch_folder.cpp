@@ -78,7 +78,7 @@ void BatchFolder::writeManifest(const BatchManifest& manifest) const {
 }
 
 void BatchFolder::removeStaleTemporaries() const {
-  for (const fs::path& dir : {root_, runsDir(), root_ / "ompl"}) {
+  for (const fs::path& dir : {root_, runsDir(), root_ / "ompl", root_ / "optimum"}) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       if (isTemporaryFile(entry.path())) fs::remove(entry.path(), ec);

@@ -5,6 +5,7 @@
 //   runs/<stem>.error.json   one failed job: its error
 //   timings.json         wall and CPU seconds per job (machine-dependent, kept apart)
 //   summary.json/.csv    the summary; ompl/<scene>.log; report.html
+//   optimum/<scene>.json the offline optimum of a scene that holds still (optimum_file.h)
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -50,6 +51,10 @@ class BatchFolder {
   }
   std::filesystem::path errorFile(const std::string& stem) const {
     return runsDir() / (stem + ".error.json");
+  }
+
+  std::filesystem::path optimumFile(const std::string& scene) const {
+    return root_ / "optimum" / (scene + ".json");
   }
 
   std::optional<BatchManifest> readManifest() const;

@@ -29,7 +29,8 @@ Description describedFrom(const nlohmann::json& j) {
 
 }  // namespace
 
-BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference) {
+BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
+                       std::span<const std::string> order) {
   std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
     if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
     return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
@@ -58,7 +59,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
     m.scene = key.first;
     m.method = key.second;
     m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
-    std::vector<double> coverage, utilization;
+    std::vector<double> coverage, utilization, finalCoverage;
     std::vector<std::pair<double, std::uint64_t>> bySeed;
     for (const JobOutcome* job : jobs) {
       if (job->failed) {
@@ -69,6 +70,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
       ++m.runs;
       coverage.push_back(s.averageCoverage);
       utilization.push_back(s.averageUtilization);
+      if (!std::isnan(s.finalCoverage)) finalCoverage.push_back(s.finalCoverage);
       bySeed.push_back({s.averageCoverage, job->seed});
       m.meanObjectCollisionTime += s.objectCollisionTime;
       m.meanCameraCollisionTime += s.cameraCollisionTime;
@@ -93,44 +95,83 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
     }
     m.coverage = describe(coverage);
     m.utilization = describe(utilization);
+    m.finalCoverage = describe(finalCoverage);
     coverageByScene[m.scene][m.method] = coverage;
     summary.methods.push_back(std::move(m));
   }
   summary.reference = reference;
+  // One method against another on one scene, counted in `tally`.
+  const auto compare = [](const std::string& scene, const std::string& method,
+                          const std::string& against, const std::vector<double>& runs,
+                          const std::vector<double>* others, Tally& tally) {
+    Comparison c{scene, method, "", 1.0, false, 0.0};
+    if (others == nullptr || others->empty() || runs.empty()) return c;
+    const RunsComparison r = compareRuns(runs, *others);
+    c.pValue = r.pValue;
+    c.exact = r.exact;
+    c.meanDifference = r.meanDifference;
+    tally.method = method;
+    switch (r.verdict) {
+      case Verdict::Tie:
+        c.winner = "tie";
+        ++tally.ties;
+        break;
+      case Verdict::Better:
+        c.winner = method;
+        ++tally.wins;
+        break;
+      case Verdict::Worse:
+        c.winner = against;
+        ++tally.losses;
+        break;
+    }
+    return c;
+  };
+  // The batch's order: a method's position in `order`, else after, by name.
+  const auto rank = [&order](const std::string& m) {
+    return std::make_pair(
+        static_cast<std::size_t>(std::find(order.begin(), order.end(), m) - order.begin()), m);
+  };
   std::map<std::string, Tally> tallies;
+  std::map<std::pair<std::string, std::string>, Tally> pairTallies;
   for (const auto& [scene, byMethod] : coverageByScene) {
     summary.scenes.push_back(scene);
-    const auto base = byMethod.find(reference);
+    const auto runsOf = [&byMethod](const std::string& m) {
+      const auto it = byMethod.find(m);
+      return it == byMethod.end() ? nullptr : &it->second;
+    };
+    std::vector<std::string> others;
     for (const auto& [method, coverage] : byMethod) {
       if (method == reference) continue;
-      Comparison c{scene, method, "", 1.0, false, 0.0};
-      if (base != byMethod.end() && !base->second.empty() && !coverage.empty()) {
-        const RunsComparison r = compareRuns(coverage, base->second);
-        c.pValue = r.pValue;
-        c.exact = r.exact;
-        c.meanDifference = r.meanDifference;
-        Tally& t = tallies[method];
-        t.method = method;
-        switch (r.verdict) {
-          case Verdict::Tie:
-            c.winner = "tie";
-            ++t.ties;
-            break;
-          case Verdict::Better:
-            c.winner = method;
-            ++t.wins;
-            break;
-          case Verdict::Worse:
-            c.winner = reference;
-            ++t.losses;
-            break;
-        }
+      summary.comparisons.push_back(
+          compare(scene, method, reference, coverage, runsOf(reference), tallies[method]));
+      others.push_back(method);
+    }
+    std::sort(others.begin(), others.end(),
+              [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+    for (std::size_t i = 0; i < others.size(); ++i) {
+      for (std::size_t k = i + 1; k < others.size(); ++k) {
+        const std::string &against = others[i], &method = others[k];
+        Tally& t = pairTallies[{method, against}];
+        t.against = against;
+        summary.pairs.push_back(
+            {against, compare(scene, method, against, *runsOf(method), runsOf(against), t)});
       }
-      summary.comparisons.push_back(std::move(c));
     }
   }
-  for (auto& [method, t] : tallies)
-    summary.tallies.push_back(std::move(t));
+  for (auto& [method, t] : tallies) {
+    if (!t.method.empty()) summary.tallies.push_back(std::move(t));
+  }
+  for (auto& [key, t] : pairTallies) {
+    if (!t.method.empty()) summary.pairTallies.push_back(std::move(t));
+  }
+  std::sort(summary.tallies.begin(), summary.tallies.end(),
+            [&](const Tally& a, const Tally& b) { return rank(a.method) < rank(b.method); });
+  std::sort(summary.pairTallies.begin(), summary.pairTallies.end(),
+            [&](const Tally& a, const Tally& b) {
+              return std::make_pair(rank(a.against), rank(a.method)) <
+                     std::make_pair(rank(b.against), rank(b.method));
+            });
   return summary;
 }
 
@@ -165,6 +206,7 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"failed", m.failed},
                             {"averageCoverage", describeJson(m.coverage)},
                             {"averageUtilization", describeJson(m.utilization)},
+                            {"finalCoverage", describeJson(m.finalCoverage)},
                             {"meanObjectCollisionTime", m.meanObjectCollisionTime},
                             {"meanCameraCollisionTime", m.meanCameraCollisionTime},
                             {"runsWithCollision", m.runsWithCollision},
@@ -192,6 +234,25 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
   for (const auto& t : summary.tallies) {
     j["totals"].push_back(
         {{"method", t.method}, {"wins", t.wins}, {"ties", t.ties}, {"losses", t.losses}});
+  }
+  j["pairs"] = nlohmann::json::array();
+  for (const auto& p : summary.pairs) {
+    const Comparison& c = p.comparison;
+    j["pairs"].push_back({{"scene", c.scene},
+                          {"method", c.method},
+                          {"against", p.against},
+                          {"winner", c.winner},
+                          {"pValue", c.pValue},
+                          {"exactTest", c.exact},
+                          {"meanCoverageDifference", c.meanDifference}});
+  }
+  j["pairTotals"] = nlohmann::json::array();
+  for (const auto& t : summary.pairTallies) {
+    j["pairTotals"].push_back({{"method", t.method},
+                               {"against", t.against},
+                               {"wins", t.wins},
+                               {"ties", t.ties},
+                               {"losses", t.losses}});
   }
   j["failures"] = nlohmann::json::array();
   for (const auto& f : summary.failures) {
@@ -242,6 +303,7 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       ms.failed = m.at("failed").get<int>();
       ms.coverage = describedFrom(m.at("averageCoverage"));
       ms.utilization = describedFrom(m.at("averageUtilization"));
+      if (m.contains("finalCoverage")) ms.finalCoverage = describedFrom(m.at("finalCoverage"));
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
       ms.runsWithCollision = m.at("runsWithCollision").get<int>();
@@ -265,7 +327,20 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
     }
     for (const auto& t : j.at("totals")) {
       s.tallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
-                           t.at("ties").get<int>(), t.at("losses").get<int>()});
+                           t.at("ties").get<int>(), t.at("losses").get<int>(), ""});
+    }
+    // Summaries written before issue 19 have no pairs.
+    for (const auto& c : j.value("pairs", nlohmann::json::array())) {
+      s.pairs.push_back(
+          {c.at("against").get<std::string>(),
+           {c.at("scene").get<std::string>(), c.at("method").get<std::string>(),
+            c.at("winner").get<std::string>(), c.at("pValue").get<double>(),
+            c.at("exactTest").get<bool>(), c.at("meanCoverageDifference").get<double>()}});
+    }
+    for (const auto& t : j.value("pairTotals", nlohmann::json::array())) {
+      s.pairTallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
+                               t.at("ties").get<int>(), t.at("losses").get<int>(),
+                               t.at("against").get<std::string>()});
     }
     for (const auto& f : j.at("failures")) {
       s.failures.push_back({f.at("scene").get<std::string>(),

@@ -34,6 +34,7 @@ struct MethodSummary {
   int failed = 0;
   Description coverage;                  // of the runs' average coverage, eq. (4)
   Description utilization;               // of the runs' average utilization
+  Description finalCoverage;             // of the runs' coverage at the last step
   double meanObjectCollisionTime = 0.0;  // s below δ, mean over runs
   double meanCameraCollisionTime = 0.0;
   int runsWithCollision = 0;  // runs with any time below δ
@@ -53,12 +54,12 @@ struct MethodSummary {
 
 inline constexpr double kSignificance = 0.05;
 
-// One method against the reference method on one scene: the two-sided Mann-Whitney U test of
-// their runs' average coverage.
+// One method against another (the reference, or for pairs the other) on one scene: the
+// two-sided Mann-Whitney U test of their runs' average coverage.
 struct Comparison {
   std::string scene;
   std::string method;
-  std::string winner;  // the method, the reference, "tie" (p >= α), or "" when either is missing
+  std::string winner;  // the method, the other, "tie" (p >= α), or "" when either is missing
   double pValue = 1.0;
   bool exact = false;
   double meanDifference = 0.0;  // mean coverage of the method minus the reference's
@@ -77,10 +78,17 @@ struct RunsComparison {
 // Both samples must be non-empty.
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
 
-// How one method fared against the reference over the scenes where both ran.
+// How one method fared against the reference (or `against`) over the scenes where both ran.
 struct Tally {
   std::string method;
   int wins = 0, ties = 0, losses = 0;
+  std::string against;  // pairs only; the reference's tallies leave it empty
+};
+
+// A comparison of two methods other than the reference, and its tally (BatchSummary::pairs).
+struct PairComparison {
+  std::string against;
+  Comparison comparison;
 };
 
 struct BatchSummary {
@@ -88,15 +96,21 @@ struct BatchSummary {
   std::vector<std::string> scenes;      // every scene with a job, natural order
   std::string reference;                // what every other method is compared with
   std::vector<Comparison> comparisons;  // by scene, then method; none for the reference
-  std::vector<Tally> tallies;           // by method; none for the reference
-  std::vector<JobOutcome> failures;     // sorted by scene, method, seed
+  std::vector<Tally> tallies;           // in the batch's order; none for the reference
+  // The methods other than the reference against each other: for each pair, the later one in
+  // the batch's order against the earlier (e.g. ours against the paper's), by scene.
+  std::vector<PairComparison> pairs;
+  std::vector<Tally> pairTallies;    // by `against`, then method, in the batch's order
+  std::vector<JobOutcome> failures;  // sorted by scene, method, seed
 
   // The comparison of `method` on `scene`, or nullptr (the reference, or a method not run).
   const Comparison* comparison(const std::string& scene, const std::string& method) const;
 };
 
-// Compares every method with `reference` (the baseline, by default).
-BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference);
+// Compares every method with `reference` (the baseline, by default), and the others pairwise
+// in the order of `order` (the batch's methods; names it lacks come after, by name).
+BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
+                       std::span<const std::string> order = {});
 nlohmann::json summaryToJson(const BatchSummary& summary);
 // The inverse of summaryToJson, so a report shows exactly the numbers the batch wrote.
 // Throws InputError naming `source` if the document is not a camcov summary.

@@ -25,6 +25,7 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
                       {"averageCoverage", s.averageCoverage},
                       {"averageUtilization", s.averageUtilization},
                       {"averageReward", s.averageReward},
+                      {"finalCoverage", s.finalCoverage},
                       {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
                       {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
                       {"objectCollisionTime", s.objectCollisionTime},
@@ -50,6 +51,9 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
   s.averageCoverage = j.at("averageCoverage").get<double>();
   s.averageUtilization = j.at("averageUtilization").get<double>();
   s.averageReward = j.at("averageReward").get<double>();
+  // Runs written before issue 19 lack it: NaN, which the summary leaves out.
+  s.finalCoverage = j.contains("finalCoverage") ? j.at("finalCoverage").get<double>()
+                                                : std::numeric_limits<double>::quiet_NaN();
   s.minObjectDistance = numberOrInfinity(j.at("minObjectDistance"));
   s.minCameraDistance = numberOrInfinity(j.at("minCameraDistance"));
   s.objectCollisionTime = j.at("objectCollisionTime").get<double>();

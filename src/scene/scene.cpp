@@ -16,6 +16,12 @@ bool Scene::hasPresenceWindows() const {
          std::any_of(obstacles.begin(), obstacles.end(), tracked);
 }
 
+bool Scene::holdsStill() const {
+  const auto isStatic = [](const MovingObject& o) { return o.isStatic(); };
+  return std::all_of(targets.begin(), targets.end(), isStatic) &&
+         std::all_of(obstacles.begin(), obstacles.end(), isStatic);
+}
+
 std::vector<double> halfFovs(const Scene& scene) {
   std::vector<double> out;
   for (const CameraSpec& camera : scene.cameras)

@@ -87,6 +87,9 @@ struct Scene {
 
   // Some object comes and goes (a recorded track): its records carry targetsPresent.
   bool hasPresenceWindows() const;
+  // Nothing in it moves, turns, deforms or comes and goes (isStatic): the cameras face one
+  // instant for the whole run, whose best team pose `camcov optimum` can search.
+  bool holdsStill() const;
 };
 
 // θ_j of every camera, in camera order: what the visibility and reward stages take.

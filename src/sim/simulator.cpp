@@ -214,6 +214,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
     }
   }
   summary.steps = steps + 1;
+  summary.finalCoverage = previous.coverage;
   // Without gaps this is steps · dt exactly, so runs without tracks keep their bytes.
   const double measured = (steps - intervalsWithoutTargets) * dt;
   if (measured > 0.0) {

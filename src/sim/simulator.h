@@ -54,6 +54,9 @@ struct RunSummary {
   double averageCoverage = 0.0;
   double averageUtilization = 0.0;  // the same for utilization, eq. (5)
   double averageReward = 0.0;
+  // Coverage at the last step, t = duration: where the team ended up (issue 19 sets it
+  // against the offline optimum of a scene that holds still).
+  double finalCoverage = 0.0;
   // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.
   double minObjectDistance = 0.0;  // over the whole run, m
   double minCameraDistance = 0.0;

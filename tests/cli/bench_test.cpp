@@ -47,6 +47,33 @@ TEST(CliBench, WritesRunsSummaryAndLogs) {
   EXPECT_NE(r.out.find("tiny_dynamic"), std::string::npos) << "the table names each scene";
 }
 
+TEST(CliBench, SearchesTheOptimumOfScenesThatHoldStillOnceAndTheReportSetsRunsAgainstIt) {
+  const fs::path out = freshDir("optimum");
+  const auto first = runCamcov(benchArgs(out, 2) + " --optimum-budget 5000");
+  ASSERT_EQ(first.exitCode, 0) << first.out << first.err;
+  EXPECT_TRUE(fs::exists(out / "optimum" / "tiny_static.json"));
+  EXPECT_FALSE(fs::exists(out / "optimum" / "tiny_dynamic.json")) << "its targets move";
+  const auto optimum = nlohmann::json::parse(readFile(out / "optimum" / "tiny_static.json"));
+  EXPECT_EQ(optimum["budget"], 5000);
+  EXPECT_NE(first.out.find("wrote 1 offline optima"), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find("camcov against paper: wins"), std::string::npos) << first.out;
+  const std::string report = readFile(out / "report.html");
+  EXPECT_NE(report.find("id=\"optimum\""), std::string::npos);
+  EXPECT_NE(report.find("id=\"pairs\""), std::string::npos);
+
+  const auto again = runCamcov(benchArgs(out, 2) + " --optimum-budget 5000");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.out.find("wrote 0 offline optima in " + out.string() + "/optimum (1 up to date)"),
+            std::string::npos)
+      << again.out;
+  EXPECT_EQ(readFile(out / "optimum" / "tiny_static.json"), optimum.dump(1) + "\n");
+
+  const fs::path none = freshDir("no-optimum");
+  ASSERT_EQ(runCamcov(benchArgs(none, 1) + " --optimum-budget 0").exitCode, 0);
+  EXPECT_FALSE(fs::exists(none / "optimum"));
+  EXPECT_EQ(readFile(none / "report.html").find("id=\"optimum\""), std::string::npos);
+}
+
 std::set<std::string> videoFiles(const fs::path& out) {
   std::set<std::string> names;
   std::error_code ec;

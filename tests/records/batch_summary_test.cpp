@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <tuple>
+
 #include "util/input_error.h"
 
 namespace camcov::records {
@@ -105,6 +109,54 @@ TEST(Summarize, OutputDoesNotDependOnInputOrder) {
   EXPECT_EQ(summaryToCsv(summarize(jobs, "local")), summaryToCsv(summarize(reversed, "local")));
 }
 
+TEST(Summarize, MethodsOtherThanTheReferenceAreComparedPairwiseInTheBatchOrder) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    jobs.push_back(job("a", "local", s, 0.1 + 0.001 * s));
+    jobs.push_back(job("a", "paper", s, 0.5 + 0.001 * s));
+    jobs.push_back(job("a", "camcov", s, 0.7 + 0.001 * s));
+    jobs.push_back(job("b", "local", s, 0.1 + 0.001 * s));
+    jobs.push_back(job("b", "paper", s, 0.5 + 0.001 * s));
+    jobs.push_back(job("b", "camcov", s, 0.5 + 0.001 * s));
+    jobs.push_back(job("c", "paper", s, 0.9 + 0.001 * s));  // camcov did not run on c
+  }
+  const std::vector<std::string> order{"paper", "local", "camcov"};
+  const BatchSummary summary = summarize(jobs, "local", order);
+  ASSERT_EQ(summary.tallies.size(), 2u);
+  EXPECT_EQ(summary.tallies[0].method, "paper") << "tallies follow the batch's order";
+  EXPECT_EQ(summary.tallies[1].method, "camcov");
+  // One pair: the later method against the earlier, on the scenes where both ran.
+  ASSERT_EQ(summary.pairs.size(), 2u) << "none on c, where camcov did not run";
+  EXPECT_EQ(summary.pairs[0].against, "paper");
+  EXPECT_EQ(summary.pairs[0].comparison.method, "camcov");
+  EXPECT_EQ(summary.pairs[0].comparison.winner, "camcov");
+  EXPECT_NEAR(summary.pairs[0].comparison.meanDifference, 0.2, 1e-12);
+  EXPECT_EQ(summary.pairs[1].comparison.winner, "tie");
+  ASSERT_EQ(summary.pairTallies.size(), 1u);
+  const Tally& t = summary.pairTallies[0];
+  EXPECT_EQ(std::tie(t.method, t.against, t.wins, t.ties, t.losses),
+            std::make_tuple(std::string("camcov"), std::string("paper"), 1, 1, 0));
+  // The reference's tallies say nothing of the pairs.
+  EXPECT_EQ(summary.tallies[1].against, "");
+}
+
+TEST(Summarize, FinalCoverageIsDescribedAndRunsWithoutItAreLeftOut) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 3; ++s) {
+    JobOutcome o = job("a", "paper", s, 0.5);
+    o.summary.finalCoverage = 0.1 * static_cast<double>(s);
+    jobs.push_back(o);
+  }
+  JobOutcome old = job("a", "paper", 4, 0.5);
+  old.summary.finalCoverage = std::numeric_limits<double>::quiet_NaN();  // a run before issue 19
+  jobs.push_back(old);
+  const BatchSummary summary = summarize(jobs, "local");
+  ASSERT_EQ(summary.methods.size(), 1u);
+  EXPECT_EQ(summary.methods[0].runs, 4);
+  EXPECT_EQ(summary.methods[0].finalCoverage.count, 3);
+  EXPECT_NEAR(summary.methods[0].finalCoverage.median, 0.2, 1e-12);
+}
+
 TEST(SummaryFile, ReadsBackWhatTheSummaryWrote) {
   std::vector<JobOutcome> jobs;
   for (std::uint64_t s = 1; s <= 4; ++s) {
@@ -113,12 +165,32 @@ TEST(SummaryFile, ReadsBackWhatTheSummaryWrote) {
     jobs.push_back(job("dynamic10", "paper", s, 0.3 * s));
   }
   jobs.push_back({"dynamic10", "local", 1, true, "it broke", {}});
-  const nlohmann::json written = summaryToJson(summarize(jobs, "local"));
+  for (std::uint64_t s = 1; s <= 4; ++s) {
+    jobs.push_back(job("static2", "camcov", s, 0.7 + 0.01 * s));
+    jobs.back().summary.finalCoverage = 0.75;
+  }
+  const std::vector<std::string> order{"paper", "local", "camcov"};
+  const nlohmann::json written = summaryToJson(summarize(jobs, "local", order));
+  ASSERT_EQ(written.at("pairTotals").size(), 1u);
   const BatchSummary read = summaryFromJson(written, "summary.json");
   EXPECT_EQ(summaryToJson(read), written);
   EXPECT_TRUE(std::isinf(read.methods[0].minCameraDistance)) << "null reads back as infinity";
   ASSERT_EQ(read.failures.size(), 1u);
   EXPECT_TRUE(read.failures[0].failed);
+}
+
+TEST(SummaryFile, ReadsSummariesWrittenBeforePairsAndFinalCoverage) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 3; ++s)
+    jobs.push_back(job("a", "paper", s, 0.5));
+  nlohmann::json old = summaryToJson(summarize(jobs, "local"));
+  old.erase("pairs");
+  old.erase("pairTotals");
+  for (auto& m : old.at("methods"))
+    m.erase("finalCoverage");
+  const BatchSummary read = summaryFromJson(old, "summary.json");
+  EXPECT_TRUE(read.pairs.empty());
+  EXPECT_EQ(read.methods.at(0).finalCoverage.count, 0);
 }
 
 TEST(SummaryFile, RejectsOtherDocumentsNamingTheFile) {

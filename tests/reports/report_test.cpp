@@ -2,10 +2,12 @@
 // it, and its structure holds: every scene in every section, every plot with axes, two boxes
 // per scene, a time-series figure per scene, nothing fetched from the network, well-nested
 // HTML, and the same bytes from the same folder except the build date and machine.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <vector>
 
@@ -174,6 +176,41 @@ TEST(Report, ReportCommandWritesWhereAskedAndEmbedsVideosByRelativeUrl) {
   r = runCamcov("report " + testDataDir().string());
   EXPECT_EQ(r.exitCode, 2) << "not a results folder";
   EXPECT_NE(r.err.find("batch.json"), std::string::npos) << r.err;
+}
+
+// The optimum's table sets the median final coverage of each method against the optimum's
+// coverage: rewriting the optimum file to a known multiple of it must show that fraction.
+TEST(Report, SetsEachMethodsMedianFinalCoverageAgainstTheOptimum) {
+  const ScratchDir dir;
+  const fs::path results = dir / "results";
+  ASSERT_EQ(benchFixture(results, "--no-report --optimum-budget 2000").exitCode, 0);
+  const auto summary = nlohmann::json::parse(readFile(results / "summary.json"));
+  double paperFinal = -1.0;
+  for (const auto& m : summary["methods"]) {
+    if (m["scene"] == "tiny_static" && m["method"] == "paper")
+      paperFinal = m["finalCoverage"]["median"];
+  }
+  ASSERT_GT(paperFinal, 0.0);
+  const fs::path file = results / "optimum" / "tiny_static.json";
+  auto optimum = nlohmann::json::parse(readFile(file));
+  const auto reportWith = [&](double optimumCoverage) {
+    optimum["best"]["coverage"] = optimumCoverage;
+    std::ofstream(file) << optimum.dump(1);
+    EXPECT_EQ(runCamcov("report " + results.string()).exitCode, 0);
+    return section(readFile(results / "report.html"), "optimum");
+  };
+  std::string table = reportWith(paperFinal / 0.5);
+  EXPECT_NE(table.find(fmt::format("<td class=\"num\">{:.3f}</td><td class=\"num\">50.0&nbsp;%",
+                                   paperFinal)),
+            std::string::npos)
+      << table;
+  table = reportWith(paperFinal / 0.99);
+  EXPECT_NE(table.find("<td class=\"num near-optimum\">✓ 99.0&nbsp;%"), std::string::npos) << table;
+  EXPECT_EQ(countOf(table, "<tr><th scope=\"row\">"), 1) << "one scene holds still";
+
+  // An optimum made from another version of the scene is not a reference for these runs.
+  optimum["scene"]["hash"] = optimum["scene"]["hash"].get<std::uint64_t>() + 1;
+  EXPECT_EQ(reportWith(paperFinal), "");
 }
 
 TEST(Report, MergeWritesItWithAFailedJobsSection) {

@@ -38,6 +38,22 @@ TEST(LoadScene, LoadsEveryOwnScene) {
   }
 }
 
+// The published names say which scenes hold still; holdsStill must agree with every one, and
+// a recorded scene (its people come and go) never holds still.
+TEST(Scene, HoldsStillExactlyWhenNothingMovesTurnsDeformsOrComesAndGoes) {
+  CAMCOV_REQUIRE_PUBLISHED_SCENES();
+  for (const auto& file : testing::jsonFilesIn(testing::publishedScenesDir())) {
+    SCOPED_TRACE(file.string());
+    EXPECT_EQ(loadScene(file).holdsStill(), file.stem().string().starts_with("static"));
+  }
+  EXPECT_FALSE(
+      loadScene(testing::testDataDir() / "scenes_tracks" / "comes_and_goes.json").holdsStill());
+  Scene turning = loadScene(testing::testDataDir() / "scenes" / "tiny_static.json");
+  ASSERT_TRUE(turning.holdsStill());
+  turning.targets.at(0).angularVelocity = 0.1;
+  EXPECT_FALSE(turning.holdsStill());
+}
+
 TEST(LoadSceneFile, FingerprintsTheFilesBytesSoAnyEditChangesIt) {
   const auto dir = std::filesystem::temp_directory_path() / "camcov-scene-file";
   std::filesystem::create_directories(dir);

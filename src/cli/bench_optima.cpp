@@ -1,0 +1,76 @@
+#include "cli/bench_optima.h"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "batch/scene_optimum.h"
+#include "params/parameter_table.h"
+#include "records/atomic_file.h"
+#include "records/optimum_file.h"
+#include "scene/scene_loader.h"
+#include "util/worker_pool.h"
+
+namespace camcov::cli {
+
+namespace {
+
+// An optimum file made for this scene file, with these parameters and budget, at t = 0 from
+// the bench's seed: what the search below would write again.
+bool isCurrent(const std::filesystem::path& file, const records::SceneEntry& scene,
+               const params::Parameters& parameters, std::int64_t budget) {
+  if (!std::filesystem::exists(file)) return false;
+  try {
+    const records::OptimumFile found = records::loadOptimumFile(file);
+    return found.sceneHash == scene.hash && found.budget == budget && found.time == 0.0 &&
+           found.seed == batch::kBenchOptimumSeed &&
+           params::toJson(found.parameters) == params::toJson(parameters);
+  } catch (const std::exception&) {
+    return false;  // unreadable: search again, the new file replaces it atomically
+  }
+}
+
+}  // namespace
+
+OutputBatch writeBenchOptima(const records::BatchFolder& folder,
+                             const records::BatchManifest& manifest, std::int64_t budget,
+                             unsigned workers) {
+  OutputBatch batch;
+  if (budget <= 0) return batch;
+  std::vector<const records::SceneEntry*> pending;
+  OutputProblems problems;
+  for (const records::SceneEntry& entry : manifest.scenes) {
+    try {
+      if (!scene::loadSceneFile(entry.file).scene.holdsStill()) continue;
+    } catch (const std::exception& e) {
+      problems.add(fmt::format("optimum/{}.json: not written: {}", entry.name, e.what()));
+      continue;
+    }
+    if (isCurrent(folder.optimumFile(entry.name), entry, manifest.parameters, budget)) {
+      ++batch.upToDate;
+    } else {
+      pending.push_back(&entry);
+    }
+  }
+  std::atomic<std::size_t> written{0};
+  forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
+    const records::SceneEntry& entry = *pending[k];
+    try {
+      const records::OptimumFile found = batch::searchSceneOptimum(
+          entry.file, manifest.parameters, 0.0, budget, batch::kBenchOptimumSeed);
+      records::writeFileAtomically(folder.optimumFile(entry.name),
+                                   records::optimumToJson(found).dump(1) + "\n");
+      ++written;
+    } catch (const std::exception& e) {
+      problems.add(fmt::format("optimum/{}.json: not written: {}", entry.name, e.what()));
+    }
+  });
+  batch.failed = problems.report();
+  batch.written = written;
+  return batch;
+}
+
+}  // namespace camcov::cli

@@ -1,0 +1,29 @@
+#include "cli/output_batch.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace camcov::cli {
+
+std::string OutputBatch::describe(const std::string& what, const std::string& dir) const {
+  std::string notes;
+  if (upToDate > 0) notes += fmt::format("{} up to date", upToDate);
+  if (failed > 0) notes += fmt::format("{}{} not written", notes.empty() ? "" : ", ", failed);
+  return fmt::format("wrote {} {} in {}{}", written, what, dir,
+                     notes.empty() ? "" : " (" + notes + ")");
+}
+
+void OutputProblems::add(std::string problem) {
+  const std::lock_guard lock(mutex_);
+  problems_.push_back(std::move(problem));
+}
+
+std::size_t OutputProblems::report() const {
+  const std::lock_guard lock(mutex_);
+  for (const std::string& problem : problems_)
+    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+  return problems_.size();
+}
+
+}  // namespace camcov::cli
