@@ -85,7 +85,7 @@ TEST_P(AdversarialScene, ValidateStateAndInspectHandleItOrRejectIt) {
 }
 
 TEST_P(AdversarialScene, RunsStayFiniteAndInsideTheBoundary) {
-  for (const std::string method : {"paper", "local"}) {
+  for (const std::string method : {"paper", "local", "camcov"}) {
     SCOPED_TRACE(method);
     const fs::path out = freshDir("run-" + method);
     expectHandledOrRejected("run", "--method " + method + kRunOptions + " --out " + out.string());

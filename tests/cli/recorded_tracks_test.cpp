@@ -76,7 +76,7 @@ TEST(RecordedTracks, NoMethodSeesTheFuture) {
   other["targets"][0]["track"]["samples"][2] = {3, 0, -4};
   const fs::path turned = dir / "turned.json";
   std::ofstream(turned) << other.dump(2);
-  for (const std::string method : {"paper", "local", "nearest-unseen"}) {
+  for (const std::string method : {"paper", "local", "camcov", "nearest-unseen"}) {
     const nlohmann::json a = run(kScene, method, dir / ("a-" + method));
     const nlohmann::json b = run(turned, method, dir / ("b-" + method));
     const auto& ta = a["series"]["time"];

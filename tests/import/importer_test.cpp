@@ -246,7 +246,7 @@ TEST(ImportSharedTracks, EveryRecordingImportsAndRunsWithEveryMethod) {
   for (const auto& [arguments, name] : recordings) {
     const fs::path scene = dir / (name + ".json");
     importScene(arguments + " --from 2 --to 8", scene);
-    for (const std::string method : {"paper", "local", "nearest-unseen"}) {
+    for (const std::string method : {"paper", "local", "camcov", "nearest-unseen"}) {
       const auto r = runCamcov("run " + scene.string() + " --method " + method +
                                " --duration 6 --set global.K=50 --out " + (dir / "runs").string());
       ASSERT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.err;

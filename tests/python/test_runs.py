@@ -20,7 +20,7 @@ def cli_run(cli, scene_file, method, seed, out, duration):
     return pathlib.Path(out)
 
 
-@pytest.mark.parametrize("method", ["paper", "local", "nearest-unseen"])
+@pytest.mark.parametrize("method", ["paper", "local", "camcov", "nearest-unseen"])
 def test_a_run_is_the_clis_to_the_byte(cli, tiny, tmp_path, method):
     scene_file = tiny("tiny_dynamic")
     run = camcov.run(scene_file, method=method, seed=2, params=SHORT)
