@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "control/travel_time.h"
+
 namespace camcov::control {
 
 namespace {
@@ -38,8 +40,8 @@ geometry::Pose along(std::span<const geometry::Pose> path, double u) {
 
 double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
                       double maxAngularVelocity) {
-  const double turn = std::abs(geometry::wrapAngle(path.back().yaw - path.front().yaw));
-  return std::max(pathLength(path) / maxVelocity, turn / maxAngularVelocity);
+  return travelTime(pathLength(path), geometry::wrapAngle(path.back().yaw - path.front().yaw),
+                    maxVelocity, maxAngularVelocity);
 }
 
 double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, double horizon,

@@ -21,8 +21,8 @@ struct TeamMove {
   std::span<const double> travel;
 };
 
-// How long a path takes at the camera's limits: the longer of running its length at v_max
-// and turning from its first yaw to its last at γ̇_max (section V-B's estimate, along the path).
+// How long a path takes at the camera's limits: section V-B's estimate (travel_time.h) with the
+// path's length and the turn from its first yaw to its last.
 double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
                       double maxAngularVelocity);
 

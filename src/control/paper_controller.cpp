@@ -96,8 +96,8 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   const std::size_t m = candidate.size();
   double reward = sampled;
   planners::TeamImprovement(model_, validity_, ours.refine).refineAll(candidate, reward);
-  // What the team is committed to, with the cameras that follow no plan improved the same way:
-  // where local optimization would take them if nothing were replanned.
+  // What the team is committed to: the cameras that follow a plan at its goal, the others
+  // where they are (improved the same way as the candidate when camcov.refine > 0).
   std::vector<geometry::Pose> kept = committedTeam(observation.cameras);
   std::uint64_t idle = 0;
   for (std::size_t j = 0; j < m; ++j) {

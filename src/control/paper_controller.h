@@ -29,8 +29,8 @@
 namespace camcov::control {
 
 // Our method (`--method camcov`, issue 19) is this loop with the choices of params.camcov
-// (docs/method.md, "Our method"): the global candidate is improved camera by camera
-// (camcov.refine) and judged by the reward the team would average over the next H seconds,
+// (docs/method.md, "Our method"): the global candidate (improved camera by camera when
+// camcov.refine > 0) is judged by the coverage the team would average over the next H seconds,
 // transit included, against the same for what it is committed to (camcov.horizon, while
 // anything moves, else camcov.staticHorizon; the first global optimization waits one step to
 // see whether anything moves); a camera goes straight to its goal where that move is valid

@@ -9,11 +9,17 @@
 
 namespace camcov::control {
 
+// Running `length` m and turning `turn` rad at once, at v_max and γ̇_max.
+inline double travelTime(double length, double turn, double maxVelocity,
+                         double maxAngularVelocity) {
+  return std::max(length / maxVelocity, std::abs(turn) / maxAngularVelocity);
+}
+
 inline double travelTime(const scene::CameraSpec& camera, const geometry::Pose& from,
                          const geometry::Pose& to) {
-  const double travel = geometry::distance(from.position(), to.position()) / camera.maxVelocity;
-  const double turn = std::abs(geometry::wrapAngle(to.yaw - from.yaw)) / camera.maxAngularVelocity;
-  return std::max(travel, turn);
+  return travelTime(geometry::distance(from.position(), to.position()),
+                    geometry::wrapAngle(to.yaw - from.yaw), camera.maxVelocity,
+                    camera.maxAngularVelocity);
 }
 
 }  // namespace camcov::control

@@ -86,6 +86,9 @@ struct Pose {
   double yaw = 0.0;
 
   constexpr Vec2 position() const { return {x, y}; }
+  // Coordinate `axis` of SE(2): 0 x, 1 y, 2 yaw (not wrapped: the caller decides), for
+  // searches that probe one axis at a time.
+  constexpr double& operator[](int axis) { return axis == 0 ? x : axis == 1 ? y : yaw; }
   constexpr bool operator==(const Pose&) const = default;
 };
 

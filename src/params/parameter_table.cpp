@@ -114,7 +114,7 @@ constexpr std::array kTable{
         0, 1e7),
     row<&P::camcov, &CamcovParams::horizon>(
         "camcov.horizon", "H", "s",
-        "our method: judge a candidate by the reward the team would average over the next H "
+        "our method: judge a candidate by the coverage the team would average over the next H "
         "seconds, transit included, while anything moves",
         1e-3, kInf),
     row<&P::camcov, &CamcovParams::staticHorizon>(
@@ -123,7 +123,7 @@ constexpr std::array kTable{
         kInf),
     row<&P::camcov, &CamcovParams::transitSamples>(
         "camcov.transitSamples", "", "",
-        "our method: points of the transit at which its reward is estimated", 0, 1000),
+        "our method: points of the transit at which its coverage is estimated", 0, 1000),
     row<&P::camcov, &CamcovParams::margin>(
         "camcov.margin", "", "",
         "our method: a candidate must beat the committed team's value by this fraction", 0, kInf),

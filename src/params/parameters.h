@@ -71,13 +71,13 @@ struct CamcovParams {
   // Pattern-search evaluations spent on improving each global candidate, camera by camera,
   // before it is judged (0: Algorithm 2's result as it is; measured not to help, so off).
   int refine = 0;
-  // Judge a candidate by the reward the team would average over the next H seconds, the
-  // transit included (estimated on straight moves at the cameras' speeds, V-B), against the
-  // same for what the team is committed to. H while anything moves, s:
+  // Judge a candidate by the coverage the team would average over the next H seconds, the
+  // transit along its paths included (timed as V-B estimates), against the same for what the
+  // team is committed to. H while anything moves, s:
   double horizon = 15.0;
   // and while nothing has moved in the last step (a static scene), s:
   double staticHorizon = 60.0;
-  // Points of the transit at which its reward is estimated.
+  // Points of the transit at which its coverage is estimated.
   int transitSamples = 4;
   // The candidate must beat the committed team's value by this fraction.
   double margin = 0.02;

@@ -12,19 +12,12 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
   GlobalResult result;
   // Line 1: with no camera placed, all of ∂T is invisible.
   model.evaluate(result.poses);
-  std::vector<visibility::Segment> invisible;
   std::vector<geometry::Pose> samples;
   std::vector<double> scores;
   VisibilitySampler sampler;
   for (std::size_t j = 0; j < cameras; ++j) {
-    invisible.clear();
-    for (const auto& s : model.segments()) {
-      if (s.visibleBy == 0) invisible.push_back(s);
-    }
     // Line 3: q1 on what is still invisible (everything seen already: anywhere on ∂T).
-    auto q1 = samplePointOnSegments(invisible, random);
-    if (!q1) q1 = samplePointOnSegments(model.segments(), random);
-    if (!q1 || !sampler.focus(model, *q1)) return std::nullopt;  // line 6
+    if (!sampler.focusOnUnseen(model, random)) return std::nullopt;  // line 6
     // Lines 5, 7–9: the K samples, drawn in order from the run's generator.
     samples.clear();
     for (int k = 0; k < samplesPerCamera; ++k) {

@@ -17,10 +17,7 @@ geometry::Pose LocalOptimizer::compassStep(reward::RewardModel& model,
     for (int axis = 0; axis < 3; ++axis) {
       for (const double sign : {1.0, -1.0}) {
         geometry::Pose probe = current;
-        (axis == 0   ? probe.x
-         : axis == 1 ? probe.y
-                     : probe.yaw) +=
-            sign * scale * (axis == 2 ? limits.maxRotation : limits.maxTranslation);
+        probe[axis] += sign * scale * (axis == 2 ? limits.maxRotation : limits.maxTranslation);
         probe.yaw = geometry::wrapAngle(probe.yaw);
         team[j] = probe;
         const auto t = model.terms(team);
@@ -54,7 +51,7 @@ geometry::Pose LocalOptimizer::gradientStep(reward::RewardModel& model,
   double gradient[3];
   for (int axis = 0; axis < 3; ++axis) {
     geometry::Pose probe = current;
-    (axis == 0 ? probe.x : axis == 1 ? probe.y : probe.yaw) += eps;
+    probe[axis] += eps;
     team[j] = probe;
     gradient[axis] = (model.reward(team) - currentReward) / eps;
   }

@@ -7,13 +7,7 @@ bool TeamImprovement::replace(std::vector<geometry::Pose>& team, std::size_t j, 
   std::vector<geometry::Pose> others = team;
   others.erase(others.begin() + static_cast<std::ptrdiff_t>(j));
   model_.evaluate(others);
-  std::vector<visibility::Segment> unseen;
-  for (const auto& s : model_.segments()) {
-    if (s.visibleBy == 0) unseen.push_back(s);
-  }
-  auto q1 = samplePointOnSegments(unseen, random);
-  if (!q1) q1 = samplePointOnSegments(model_.segments(), random);
-  if (!q1 || !sampler_.focus(model_, *q1)) return false;
+  if (!sampler_.focusOnUnseen(model_, random)) return false;
   const geometry::Pose kept = team[j];
   geometry::Pose best = kept;
   for (int k = 0; k < samples && !spent(); ++k) {
@@ -39,7 +33,7 @@ bool TeamImprovement::refine(std::vector<geometry::Pose>& team, std::size_t j, d
       for (const double sign : {1.0, -1.0}) {
         const geometry::Pose kept = team[j];
         geometry::Pose probe = kept;
-        (axis == 0 ? probe.x : axis == 1 ? probe.y : probe.yaw) += sign * (axis == 2 ? turn : step);
+        probe[axis] += sign * (axis == 2 ? turn : step);
         probe.yaw = geometry::wrapAngle(probe.yaw);
         if (!validity_.isValid(probe.position())) continue;
         team[j] = probe;

@@ -98,6 +98,16 @@ bool VisibilitySampler::focus(reward::RewardModel& model, geometry::Vec2 q1) {
   return area_.area() > 0.0;
 }
 
+bool VisibilitySampler::focusOnUnseen(reward::RewardModel& model, Random& random) {
+  unseen_.clear();
+  for (const auto& s : model.segments()) {
+    if (s.visibleBy == 0) unseen_.push_back(s);
+  }
+  auto q1 = samplePointOnSegments(unseen_, random);
+  if (!q1) q1 = samplePointOnSegments(model.segments(), random);
+  return q1 && focus(model, *q1);
+}
+
 std::optional<geometry::Pose> VisibilitySampler::sample(Random& random,
                                                         const StateValidity& validity,
                                                         double halfFov) const {

@@ -48,12 +48,16 @@ class VisibilitySampler {
 
   // Prepares the polygon of q1 at the model's current instant.
   bool focus(reward::RewardModel& model, geometry::Vec2 q1);
+  // Algorithm 2's line 3, then focus: q1 uniform on what the model's last evaluation left
+  // unseen (all of ∂T seen: anywhere on it). False if there is no q1 or its polygon is empty.
+  bool focusOnUnseen(reward::RewardModel& model, Random& random);
   std::optional<geometry::Pose> sample(Random& random, const StateValidity& validity,
                                        double halfFov) const;
   geometry::Vec2 q1() const { return q1_; }
 
  private:
   geometry::Vec2 q1_;
+  std::vector<visibility::Segment> unseen_;  // focusOnUnseen's buffer
   geometry::Ring polygon_;
   PolygonSampler area_;
 };
