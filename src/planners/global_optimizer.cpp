@@ -1,6 +1,11 @@
 #include "planners/global_optimizer.h"
 
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
 #include "planners/visibility_sampler.h"
+#include "reward/added_camera_bound.h"
 #include "util/worker_pool.h"
 
 namespace camcov::planners {
@@ -11,9 +16,11 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
                                              std::span<reward::RewardModel> helpers) {
   GlobalResult result;
   // Line 1: with no camera placed, all of ∂T is invisible.
-  model.evaluate(result.poses);
+  reward::RewardTerms placed = model.evaluate(result.poses);
   std::vector<geometry::Pose> samples;
-  std::vector<double> scores;
+  std::vector<double> bounds, scores, terms;
+  std::vector<std::size_t> order;
+  reward::AddedCameraBound bound;
   VisibilitySampler sampler;
   for (std::size_t j = 0; j < cameras; ++j) {
     // Line 3: q1 on what is still invisible (everything seen already: anywhere on ∂T).
@@ -26,26 +33,46 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
       }
     }
     if (samples.empty()) return std::nullopt;
-    // Line 10: each scored with the cameras placed before it, in one share per model.
-    scores.resize(samples.size());
+    // Line 10: each scored with the cameras placed before it, highest bound first, so that the
+    // samples that cannot beat a score already taken are never swept (added_camera_bound.h):
+    // the cheap bound orders them and ends the scoring, the tighter one skips a sample. Share s
+    // of the models takes every s-th of that order.
+    using Precision = reward::AddedCameraBound::Precision;
+    bound.prepare(model, result.poses, placed);
+    bounds.resize(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      bounds[k] = bound.of(samples[k], Precision::Coarse, terms);
+    order.resize(samples.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return bounds[a] > bounds[b]; });
+    scores.assign(samples.size(), -std::numeric_limits<double>::infinity());
     const std::size_t shares = 1 + helpers.size();
     forEachOnWorkers(shares, static_cast<unsigned>(shares), [&](std::size_t share) {
       reward::RewardModel& scorer = share == 0 ? model : helpers[share - 1];
       std::vector<geometry::Pose> team = result.poses;
       team.emplace_back();
-      for (std::size_t k = share * samples.size() / shares;
-           k < (share + 1) * samples.size() / shares; ++k) {
+      std::vector<double> shareTerms;
+      double best = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = share; i < order.size(); i += shares) {
+        const std::size_t k = order[i];
+        if (reward::AddedCameraBound::cannotBeat(bounds[k], best)) break;
+        if (reward::AddedCameraBound::cannotBeat(bound.of(samples[k], Precision::Fine, shareTerms),
+                                                 best))
+          continue;
         team.back() = samples[k];
         scores[k] = scorer.reward(team);
+        best = std::max(best, scores[k]);
       }
     });
-    // Lines 10–11: the first best.
+    // Lines 10–11: the first best (a sample left unscored scores below it).
     std::size_t best = 0;
     for (std::size_t k = 1; k < samples.size(); ++k) {
       if (scores[k] > scores[best]) best = k;
     }
-    result.poses.push_back(samples[best]);                // line 12
-    result.reward = model.evaluate(result.poses).reward;  // line 13: updates S
+    result.poses.push_back(samples[best]);  // line 12
+    placed = model.evaluate(result.poses);  // line 13: updates S
+    result.reward = placed.reward;
   }
   return result;
 }

@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numbers>
 #include <vector>
 
+#include "planners/visibility_sampler.h"
+#include "support/random_worlds.h"
 #include "support/small_worlds.h"
 
 namespace camcov::planners {
@@ -70,6 +73,63 @@ TEST(OptimizeGlobally, FailsWhenNoValidPoseExists) {
   validity.setWorld(w);
   Random random(1);
   EXPECT_FALSE(optimizeGlobally(model, validity, 1, 20, random));
+}
+
+// Algorithm 2 as the paper writes it, every sample scored: the reference for the scoring that
+// skips samples by their bound (reward/added_camera_bound.h).
+std::vector<geometry::Pose> everySampleScored(reward::RewardModel& model,
+                                              const StateValidity& validity, std::size_t cameras,
+                                              int samplesPerCamera, Random& random) {
+  std::vector<geometry::Pose> team;
+  model.evaluate(team);
+  VisibilitySampler sampler;
+  for (std::size_t j = 0; j < cameras; ++j) {
+    if (!sampler.focusOnUnseen(model, random)) return {};
+    std::vector<geometry::Pose> samples;
+    for (int k = 0; k < samplesPerCamera; ++k) {
+      if (const auto pose = sampler.sample(random, validity, model.halfFov(j)))
+        samples.push_back(*pose);
+    }
+    if (samples.empty()) return {};
+    team.emplace_back();
+    double best = -std::numeric_limits<double>::infinity();
+    geometry::Pose chosen;
+    for (const geometry::Pose& sample : samples) {
+      team.back() = sample;
+      if (const double score = model.reward(team); score > best) {
+        best = score;
+        chosen = sample;
+      }
+    }
+    team.back() = chosen;
+    model.evaluate(team);
+  }
+  return team;
+}
+
+TEST(OptimizeGlobally, SkippingSamplesByTheirBoundTakesTheSamePosesAsScoringEvery) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 worlds{seed};
+    const kinematics::World w = testing::randomWorld(worlds);
+    StateValidity validity(0.5);
+    validity.setWorld(w);
+    const auto makeModel = [&w] {
+      reward::RewardModel model(params::RewardParams{}, {0.5, 0.5, 1.2, 0.5});
+      model.setWorld(w);
+      return model;
+    };
+    reward::RewardModel reference = makeModel(), pruned = makeModel();
+    std::vector<reward::RewardModel> helpers;
+    if (seed % 2 == 0) helpers.push_back(makeModel());
+    Random a(seed), b(seed);
+    const auto expected = everySampleScored(reference, validity, 4, 150, a);
+    const auto result = optimizeGlobally(pruned, validity, 4, 150, b, helpers);
+    ASSERT_EQ(expected.empty(), !result);
+    if (result) {
+      EXPECT_EQ(result->poses, expected);
+    }
+  }
 }
 
 }  // namespace

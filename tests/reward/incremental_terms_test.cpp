@@ -13,47 +13,19 @@
 #include "reward/incremental_repulsion.h"
 #include "reward/metrics.h"
 #include "reward/reward_model.h"
-#include "support/splitmix64.h"
+#include "support/random_worlds.h"
 
 namespace camcov::reward {
 namespace {
 
 using geometry::Pose;
-using geometry::Ring;
-using geometry::Vec2;
+using testing::randomPose;
+using testing::randomWorld;
 
 // Bit for bit, with a readable failure.
 void expectSameBits(double expected, double actual, const char* what) {
   EXPECT_EQ(std::bit_cast<std::uint64_t>(expected), std::bit_cast<std::uint64_t>(actual))
       << what << ": " << expected << " made afresh, " << actual << " kept up to date";
-}
-
-// A 40 m room with quadrilateral and triangular targets and obstacles, some touching (a shared
-// edge: pieces seen by two targets), one target with a repeated vertex (an edge of no length).
-kinematics::World randomWorld(testing::SplitMix64& random) {
-  kinematics::World w;
-  w.boundary = {{-20, -20}, {20, -20}, {20, 20}, {-20, 20}};
-  for (int i = 0; i < 8; ++i) {
-    const Vec2 c{random.uniform(-15, 15), random.uniform(-15, 15)};
-    const double r = random.uniform(0.5, 2.5);
-    Ring ring;
-    const int n = i % 3 == 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) {
-      const double a = (k + random.uniform(0.2, 0.8)) * 2 * std::numbers::pi / n;
-      ring.push_back(c + r * geometry::unitVector(a));
-    }
-    (i % 4 == 3 ? w.obstacles : w.targets).push_back(ring);
-  }
-  // Two squares sharing a side, and a target with a repeated vertex.
-  w.targets.push_back({{1, 16}, {3, 16}, {3, 18}, {1, 18}});
-  w.targets.push_back({{3, 16}, {5, 16}, {5, 18}, {3, 18}});
-  w.targets.push_back({{-16, 16}, {-14, 16}, {-14, 16}, {-14, 18}});
-  return w;
-}
-
-Pose randomPose(testing::SplitMix64& random) {
-  return {random.uniform(-19, 19), random.uniform(-19, 19),
-          random.uniform(-std::numbers::pi, std::numbers::pi)};
 }
 
 // One of the optimizers' calls: a probe of one camera (ε away, or anywhere), the camera put
@@ -195,7 +167,7 @@ TEST(Metrics, RunsJoinTouchingPiecesAndStopAtGapsAndEdgeEnds) {
                                            {{3, 0}, {4, 0}, 0, 0, 2},
                                            {{4, 0}, {4, 4}, 0, 1, 2}};
   EXPECT_EQ(visibleLength(s), 2.0 + 1.0 + 4.0);
-  const Vec2 p0{0, -1}, p1{3.5, -1};
+  const geometry::Vec2 p0{0, -1}, p1{3.5, -1};
   const std::vector<Pose> team{{p0.x, p0.y, 0}, {p1.x, p1.y, 0}};
   const double camera0 = subtendedAngle({0, 0}, {2, 0}, p0);
   const double camera1 = subtendedAngle({1, 0}, {2, 0}, p1) + subtendedAngle({3, 0}, {4, 0}, p1) +

@@ -1,0 +1,76 @@
+#pragma once
+// An upper bound, without a sweep, of the reward eq. (8) of a team with one camera added:
+// what lets Algorithm 2 skip the sweeps of samples that cannot be the best (issue 23). Scoring
+// the K samples of one camera is most of the paper method's time on a large crowd, and most
+// samples score well below the best.
+//
+// The added camera q, with half-angle θ_q, at the team's instant:
+//  - coverage, eq. (3): q adds at most what the team leaves unseen of the target edges q may
+//    see — those of targets whose box meets q's field of view, facing q (a point on an edge's
+//    solid side sees nothing of it, as the sweep decides). Occlusion is ignored.
+//  - utilization, eq. (5): q's angle sum is at most 2θ_q, and at most the sum of the angles
+//    those targets subtend at q (the runs a camera sees never overlap in angle).
+//  - repulsion, eq. (6): the team's, plus q's terms with the team and (Fine) the objects, all
+//    ≥ 0.
+// So bound(q) ≥ reward(team ∪ {q}), with slack for rounding (the sums are taken in another
+// order than the reward's): a sample whose bound is below a score already taken is not the
+// first best. λ1, λ2, λ3 ≥ 0 (params::validate). Cost: O(N) box tests and O(n_q) edges for the
+// n_q edges of the targets in view, against a sweep's O(n_q log n_q) and its bookkeeping.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/ring.h"
+#include "geometry/vec2.h"
+#include "reward/metrics.h"
+#include "reward/reward_model.h"
+
+namespace camcov::reward {
+
+class AddedCameraBound {
+ public:
+  // Prepares for adding a camera (index team.size()) to `team`, whose terms `teamTerms` and S
+  // (model.segments()) are those of the model's last evaluate(team).
+  void prepare(const RewardModel& model, std::span<const geometry::Pose> team,
+               const RewardTerms& teamTerms);
+  // Coarse: q's angle sum bounded by the discs that hold the targets in view, and q's own
+  // repulsion terms taken as 0 — O(1) a target. Fine: also by the angles the facing edges
+  // subtend, with q's terms against the objects — an atan2 an edge, and O(N + obstacles).
+  enum class Precision { Coarse, Fine };
+  // At least reward(team ∪ {camera}) of the prepared model and team. `terms` is a buffer (one
+  // per thread).
+  double of(const geometry::Pose& camera, Precision precision, std::vector<double>& terms) const;
+  // True when a sample bounded by `bound` cannot beat the score `best`, rounding included.
+  static bool cannotBeat(double bound, double best);
+
+ private:
+  struct Target {
+    std::uint32_t firstEdge = 0, edgeCount = 0;
+    int solidSide = 0;      // +1: interior left of each edge (CCW), −1: right, 0: degenerate
+    geometry::Vec2 center;  // of its bounding box
+    double radius = 0.0;    // of the disc about it that holds the target
+    // At least the angle the target subtends at p (so at least the sum of the angles of the
+    // runs a camera at p sees of it, which never overlap).
+    double maxAngleFrom(geometry::Vec2 p) const;
+  };
+  struct Edge {
+    geometry::Vec2 a, b;
+    double unseen = 0.0;    // its length less what the team sees of it
+    bool hasTwins = false;  // shared with another ring: the sweep keeps it whatever the side
+  };
+
+  const RewardModel* model_ = nullptr;
+  std::span<const geometry::Pose> team_;
+  double halfFov_ = 0.0;     // θ_q
+  double theta0_ = 0.0;      // θ_0, of the team's first camera (q's, in an empty team)
+  double weight_ = 0.0;      // θ_0/θ_q, its weight in utilizationOf
+  double perimeter_ = 0.0;   // length(∂T)
+  double teamSeen_ = 0.0;    // vis(S) of the team
+  double teamAngles_ = 0.0;  // Σ_j (θ_0/θ_j)·angles_j of the team
+  double teamRepulsion_ = 0.0;
+  std::vector<Target> targets_;
+  std::vector<Edge> edges_;
+  std::vector<geometry::Box> boxes_;  // objectBoxes(world), for q's repulsion terms
+};
+
+}  // namespace camcov::reward

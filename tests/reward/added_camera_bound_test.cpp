@@ -1,0 +1,141 @@
+// The bound that lets Algorithm 2 skip samples (issue 23): never below the reward it bounds,
+// whatever the pose — on an edge's line, at a vertex, inside a target, between two targets
+// that share a side, with a field of view wider than a half-turn — and equal to it where
+// nothing is occluded and the team sees nothing of what the camera does.
+#include "reward/added_camera_bound.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "reward/reward_model.h"
+#include "support/random_worlds.h"
+
+namespace camcov::reward {
+namespace {
+
+using geometry::Pose;
+using geometry::Vec2;
+using Precision = AddedCameraBound::Precision;
+
+// Poses the sampler can hardly draw and the bound must still hold at: the world's vertices,
+// points on its edges and on their lines beyond them, and inside its targets.
+std::vector<Pose> awkwardPoses(const kinematics::World& w, testing::SplitMix64& random) {
+  std::vector<Pose> poses;
+  const auto yaw = [&random] { return random.uniform(-std::numbers::pi, std::numbers::pi); };
+  for (const auto* rings : {&w.targets, &w.obstacles}) {
+    for (const geometry::Ring& ring : *rings) {
+      Vec2 sum{0, 0};
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+        sum = sum + a;
+        poses.push_back({a.x, a.y, yaw()});
+        const Vec2 mid = geometry::lerp(a, b, 0.5), beyond = geometry::lerp(a, b, 2.5);
+        poses.push_back({mid.x, mid.y, yaw()});
+        poses.push_back({beyond.x, beyond.y, yaw()});
+        // Looking along the edge, from its line.
+        const Vec2 along = b - a;
+        poses.push_back({beyond.x, beyond.y, std::atan2(-along.y, -along.x)});
+      }
+      const Vec2 centre = sum * (1.0 / static_cast<double>(ring.size()));
+      poses.push_back({centre.x, centre.y, yaw()});
+    }
+  }
+  return poses;
+}
+
+TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
+  const std::vector<double> halfFovs{std::numbers::pi / 6, 0.49 * std::numbers::pi,
+                                     0.6 * std::numbers::pi, 0.95 * std::numbers::pi};
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 random{seed};
+    const kinematics::World w = testing::randomWorld(random);
+    const double theta = halfFovs[seed % halfFovs.size()];
+    RewardModel model(params::RewardParams{}, {theta, 0.4, theta, 1.2, theta});
+    model.setWorld(w);
+    std::vector<Pose> poses = awkwardPoses(w, random);
+    for (int k = 0; k < 300; ++k)
+      poses.push_back(testing::randomPose(random));
+    AddedCameraBound bound;
+    std::vector<double> terms;
+    for (std::size_t size = 0; size < 5; ++size) {
+      std::vector<Pose> team;
+      for (std::size_t j = 0; j < size; ++j)
+        team.push_back(testing::randomPose(random));
+      const RewardTerms placed = model.evaluate(team);
+      bound.prepare(model, team, placed);
+      std::vector<Pose> added = team;
+      added.emplace_back();
+      for (const Pose& q : poses) {
+        added.back() = q;
+        const double reward = model.reward(added);
+        const double coarse = bound.of(q, Precision::Coarse, terms);
+        const double fine = bound.of(q, Precision::Fine, terms);
+        // What the optimizer relies on: a sample scoring `reward` is never skipped against a
+        // best of `reward`.
+        EXPECT_FALSE(AddedCameraBound::cannotBeat(fine, reward))
+            << "team of " << size << ", pose " << q.x << " " << q.y << " " << q.yaw << ": bound "
+            << fine << " below reward " << reward;
+        EXPECT_LE(fine, coarse + 1e-12) << "the fine bound is the tighter";
+        if (HasFailure()) return;
+      }
+    }
+  }
+}
+
+// A 2 × 2 m square about the origin, seen face on from (0, −10): only its near side faces the
+// camera, so the fine bound is the reward itself.
+TEST(AddedCameraBound, EqualsTheRewardWhereNothingIsOccluded) {
+  kinematics::World w;
+  w.boundary = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
+  w.targets.push_back({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  const double theta = std::numbers::pi / 6;
+  RewardModel model(params::RewardParams{}, theta);
+  model.setWorld(w);
+  AddedCameraBound bound;
+  std::vector<double> terms;
+  const std::vector<Pose> none;
+  bound.prepare(model, none, model.evaluate(none));
+  const Pose q{0, -10, std::numbers::pi / 2};
+  // Coverage 2/8 (the near side), utilization ∠ = 2·atan(1/9) over 2θ.
+  const double expected = 1.0 * 0.25 + 0.2 * (2 * std::atan(1.0 / 9.0)) / (2 * theta);
+  EXPECT_NEAR(bound.of(q, Precision::Fine, terms), expected, 1e-12);
+  EXPECT_NEAR(model.reward(std::span(&q, 1)), expected, 1e-12);
+  // Looking away: nothing to see, the bound is 0 as the reward.
+  const Pose away{0, -10, -std::numbers::pi / 2};
+  EXPECT_EQ(bound.of(away, Precision::Coarse, terms), 0.0);
+
+  // With a first camera seeing that side already, a second one there adds no coverage.
+  const std::vector<Pose> one{q};
+  const RewardTerms placed = model.evaluate(one);
+  bound.prepare(model, one, placed);
+  const Pose twin{0.5, -10, std::numbers::pi / 2};
+  const std::vector<Pose> two{q, twin};
+  EXPECT_NEAR(bound.of(twin, Precision::Fine, terms), model.reward(two), 1e-12);
+}
+
+// The coarse bound takes the disc about the target for its angle: a little above the fine one,
+// and above 2·asin(r/d), what the disc itself subtends.
+TEST(AddedCameraBound, CoarseBoundTakesTheTargetsDisc) {
+  kinematics::World w;
+  w.boundary = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
+  w.targets.push_back({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  const double theta = std::numbers::pi / 6;
+  RewardModel model(params::RewardParams{}, theta);
+  model.setWorld(w);
+  AddedCameraBound bound;
+  std::vector<double> terms;
+  const std::vector<Pose> none;
+  bound.prepare(model, none, model.evaluate(none));
+  const Pose q{0, -10, std::numbers::pi / 2};
+  const double disc = 2 * std::asin(std::sqrt(2.0) / 10.0);
+  const double coarse = bound.of(q, Precision::Coarse, terms);
+  EXPECT_GT(coarse, 0.25 + 0.2 * disc / (2 * theta));
+  EXPECT_LT(coarse, 0.25 + 0.2 * 1.01 * disc / (2 * theta));
+}
+
+}  // namespace
+}  // namespace camcov::reward
