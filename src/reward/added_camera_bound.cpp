@@ -36,11 +36,14 @@ struct ViewCone {
 
 // p lies clearly on the solid side of the edge a → b (the interior on side `solidSide`, +1
 // left): the sweep sees nothing of it from there. Points within rounding of the edge's line
-// are kept.
+// are kept: p's distance to the line must pass 1e-9·(|b − a| + |p − a|), taken squared (and
+// the sum's square bounded by twice the sum of squares, which only keeps more edges).
 bool facesAway(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p, int solidSide) {
-  const double side = geometry::cross(b - a, p - a) * solidSide;
-  const double length = geometry::distance(a, b);
-  return side > 1e-9 * length * (length + geometry::distance(a, p));
+  const geometry::Vec2 edge = b - a, toP = p - a;
+  const double side = geometry::cross(edge, toP) * solidSide;
+  if (!(side > 0.0)) return false;
+  const double edge2 = geometry::dot(edge, edge);
+  return side * side > 2e-18 * edge2 * (edge2 + geometry::dot(toP, toP));
 }
 
 }  // namespace

@@ -23,9 +23,10 @@ void forEachRun(std::span<const Interval> sorted, EdgeOf edgeOf, F&& f) {
   }
 }
 
-bool byEdge(const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
+// A closure, not a function, so that the sorts below inline it.
+constexpr auto byEdge = [](const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
   return a.edge != b.edge ? a.edge < b.edge : a.lo < b.lo;
-}
+};
 
 // Sorts a sweep's intervals by edge and along it. The sweep reports them counter-clockwise
 // around the camera, which along a counter-clockwise ring is mostly by falling edge and
