@@ -78,9 +78,11 @@ double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
   return std::sqrt(best);
 }
 
-Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
-  if (distanceToBoundary(ring, p) <= tolerance) return Containment::OnBoundary;
-  // Crossing number with the half-open rule, so a ray through a vertex counts once.
+namespace {
+
+// Crossing number with the half-open rule, so a ray through a vertex counts once. For p off
+// the boundary.
+bool strictlyInside(std::span<const Vec2> ring, Vec2 p) {
   bool inside = false;
   for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
     const Vec2 a = ring[i], b = ring[j];
@@ -89,13 +91,20 @@ Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
       if (p.x < xCross) inside = !inside;
     }
   }
-  return inside ? Containment::Inside : Containment::Outside;
+  return inside;
+}
+
+}  // namespace
+
+Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
+  if (distanceToBoundary(ring, p) <= tolerance) return Containment::OnBoundary;
+  return strictlyInside(ring, p) ? Containment::Inside : Containment::Outside;
 }
 
 double distanceToPolygon(std::span<const Vec2> ring, Vec2 p) {
   const double d = distanceToBoundary(ring, p);
   if (d == 0.0) return 0.0;
-  return locate(ring, p, 0.0) == Containment::Inside ? 0.0 : d;
+  return strictlyInside(ring, p) ? 0.0 : d;
 }
 
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {

@@ -108,6 +108,11 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
   }
   for (Edge& edge : edges_)
     edge.unseen = std::max(edge.unseen, 0.0);
+  for (Target& t : targets_) {
+    t.unseen = 0.0;
+    for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e)
+      t.unseen += edges_[e].unseen;
+  }
 }
 
 double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
@@ -118,6 +123,11 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
   double gain = 0.0, angles = 0.0;
   for (const Target& t : targets_) {
     if (view.misses(t.center, t.radius)) continue;
+    const double disc = t.maxAngleFrom(p);
+    if (!fine && t.unseen == 0.0) {  // nothing to add to coverage: no edge to look at
+      angles += disc;
+      continue;
+    }
     double edgeAngles = 0.0;
     for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e) {
       const Edge& edge = edges_[e];
@@ -125,7 +135,6 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
       gain += edge.unseen;
       if (fine) edgeAngles += subtendedAngle(edge.a, edge.b, p);
     }
-    const double disc = t.maxAngleFrom(p);
     angles += fine ? std::min(disc, edgeAngles) : disc;
   }
   const double coverage = coverageOf(teamSeen_ + gain, perimeter_);

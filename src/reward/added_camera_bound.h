@@ -49,6 +49,7 @@ class AddedCameraBound {
     int solidSide = 0;      // +1: interior left of each edge (CCW), −1: right, 0: degenerate
     geometry::Vec2 center;  // of its bounding box
     double radius = 0.0;    // of the disc about it that holds the target
+    double unseen = 0.0;    // Σ of its edges' unseen lengths
     // At least the angle the target subtends at p (so at least the sum of the angles of the
     // runs a camera at p sees of it, which never overlap).
     double maxAngleFrom(geometry::Vec2 p) const;

@@ -70,8 +70,10 @@ void PolarEdges::start(const Occluders& occluders, Vec2 viewpoint, const FieldOf
     if (narrowFov_) {
       rayRight_ = fovPoints_[0] - p_;
       rayLeft_ = fovPoints_[1] - p_;
-      rayRightMargin_ = kBeyondRayMargin * geometry::norm(rayRight_);
-      rayLeftMargin_ = kBeyondRayMargin * geometry::norm(rayLeft_);
+      rayRightNorm_ = geometry::norm(rayRight_);
+      rayLeftNorm_ = geometry::norm(rayLeft_);
+      rayRightMargin_ = kBeyondRayMargin * rayRightNorm_;
+      rayLeftMargin_ = kBeyondRayMargin * rayLeftNorm_;
     }
   }
 }
@@ -184,8 +186,21 @@ bool PolarEdges::boxBeyondARay(const geometry::Box& box) const {
   return right || left;
 }
 
+bool PolarEdges::boxWellInView(const geometry::Box& box) const {
+  if (!narrowFov_) return false;
+  // Every point x of the box lies within r = (w + h)/2 of its centre c, so cross(ray, x − p) ≥
+  // cross(ray, c − p) − |ray|·r and |x − p|₁ ≤ |c − p|₁ + 2r: past the margin with c, past it
+  // with every corner.
+  const Vec2 c{0.5 * (box.min.x + box.max.x), 0.5 * (box.min.y + box.max.y)};
+  const double r = 0.5 * ((box.max.x - box.min.x) + (box.max.y - box.min.y));
+  const Vec2 d = c - p_;
+  const double l1 = std::abs(d.x) + std::abs(d.y) + 2.0 * r;
+  return geometry::cross(rayRight_, d) - rayRightNorm_ * r > 2.0 * rayRightMargin_ * l1 &&
+         geometry::cross(d, rayLeft_) - rayLeftNorm_ * r > 2.0 * rayLeftMargin_ * l1;
+}
+
 bool PolarEdges::boxOutOfView(const geometry::Box& box) const {
-  return cullWidth_ != 0 && (boxBeyondARay(box) || boxArcOutOfView(box));
+  return cullWidth_ != 0 && !boxWellInView(box) && (boxBeyondARay(box) || boxArcOutOfView(box));
 }
 
 bool PolarEdges::boxArcOutOfView(const geometry::Box& box) const {
