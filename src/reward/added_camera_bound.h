@@ -6,15 +6,16 @@
 //
 // The added camera q, with half-angle θ_q, at the team's instant:
 //  - coverage, eq. (3): q adds at most what the team leaves unseen of the target edges q may
-//    see — those of targets whose box meets q's field of view, facing q (a point on an edge's
-//    solid side sees nothing of it, as the sweep decides). Occlusion is ignored.
+//    see — those of targets whose disc (about their box's centre) meets q's field of view,
+//    facing q (a point on an edge's solid side sees nothing of it, as the sweep decides).
+//    Occlusion is ignored.
 //  - utilization, eq. (5): q's angle sum is at most 2θ_q, and at most the sum of the angles
 //    those targets subtend at q (the runs a camera sees never overlap in angle).
 //  - repulsion, eq. (6): the team's, plus q's terms with the team and (Fine) the objects, all
 //    ≥ 0.
 // So bound(q) ≥ reward(team ∪ {q}), with slack for rounding (the sums are taken in another
 // order than the reward's): a sample whose bound is below a score already taken is not the
-// first best. λ1, λ2, λ3 ≥ 0 (params::validate). Cost: O(N) box tests and O(n_q) edges for the
+// first best. λ1, λ2, λ3 ≥ 0 (params::validate). Cost: O(N) disc tests and O(n_q) edges for the
 // n_q edges of the targets in view, against a sweep's O(n_q log n_q) and its bookkeeping.
 #include <cstdint>
 #include <span>

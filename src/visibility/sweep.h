@@ -60,7 +60,7 @@ class Sweep {
   // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into
   // `out` (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
-  // Each camera slot j keeps its last two sweeps: a camera whose arrangement
+  // Each camera slot j keeps its last six sweeps: a camera whose arrangement
   // (Occluders::buildId()), pose and θ_j are bit for bit those of a kept sweep is not swept
   // again, so a call where one camera moved costs one sweep and the union, O(n log n + k log k)
   // for k seen intervals (the optimizers move one camera at a time; issue 23).
@@ -80,8 +80,8 @@ class Sweep {
                                        const geometry::Pose& camera, double halfFov);
 
   const CullingCounts& counts() const;
-  // Keeps the sweeps `other` keeps (replacing this one's), for a workspace that takes up
-  // another's instant: a query they answer is not swept again.
+  // Keeps the latest sweep of each of `other`'s camera slots (replacing this one's), for a
+  // workspace that takes up another's instant: a query they answer is not swept again.
   void keepSweepsOf(const Sweep& other);
 
   // The omnidirectional visibility polygon of `point` (Algorithm 2, line 6; the motion
