@@ -86,55 +86,58 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
   }
 }
 
-// A 2 × 2 m square about the origin, seen face on from (0, −10): only its near side faces the
-// camera, so the fine bound is the reward itself.
-TEST(AddedCameraBound, EqualsTheRewardWhereNothingIsOccluded) {
-  kinematics::World w;
-  w.boundary = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
-  w.targets.push_back({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
-  const double theta = std::numbers::pi / 6;
-  RewardModel model(params::RewardParams{}, theta);
-  model.setWorld(w);
+// A 2 × 2 m square about the origin in a 100 m room, cameras with θ = 30°, and the bound
+// prepared for a first camera.
+struct LoneSquare {
+  static constexpr double kTheta = std::numbers::pi / 6;
+  static kinematics::World world() {
+    kinematics::World w;
+    w.boundary = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
+    w.targets.push_back({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+    return w;
+  }
+  LoneSquare() {
+    model.setWorld(world());
+    bound.prepare(model, none, model.evaluate(none));
+  }
+
+  RewardModel model{params::RewardParams{}, kTheta};
   AddedCameraBound bound;
   std::vector<double> terms;
   const std::vector<Pose> none;
-  bound.prepare(model, none, model.evaluate(none));
-  const Pose q{0, -10, std::numbers::pi / 2};
+  const Pose faceOn{0, -10, std::numbers::pi / 2};  // (0, −10), looking at it
+};
+
+// Seen face on from (0, −10), only the square's near side faces the camera, so the fine bound
+// is the reward itself.
+TEST(AddedCameraBound, EqualsTheRewardWhereNothingIsOccluded) {
+  LoneSquare s;
+  const Pose q = s.faceOn;
   // Coverage 2/8 (the near side), utilization ∠ = 2·atan(1/9) over 2θ.
-  const double expected = 1.0 * 0.25 + 0.2 * (2 * std::atan(1.0 / 9.0)) / (2 * theta);
-  EXPECT_NEAR(bound.of(q, Precision::Fine, terms), expected, 1e-12);
-  EXPECT_NEAR(model.reward(std::span(&q, 1)), expected, 1e-12);
+  const double expected = 1.0 * 0.25 + 0.2 * (2 * std::atan(1.0 / 9.0)) / (2 * s.kTheta);
+  EXPECT_NEAR(s.bound.of(q, Precision::Fine, s.terms), expected, 1e-12);
+  EXPECT_NEAR(s.model.reward(std::span(&q, 1)), expected, 1e-12);
   // Looking away: nothing to see, the bound is 0 as the reward.
   const Pose away{0, -10, -std::numbers::pi / 2};
-  EXPECT_EQ(bound.of(away, Precision::Coarse, terms), 0.0);
+  EXPECT_EQ(s.bound.of(away, Precision::Coarse, s.terms), 0.0);
 
   // With a first camera seeing that side already, a second one there adds no coverage.
   const std::vector<Pose> one{q};
-  const RewardTerms placed = model.evaluate(one);
-  bound.prepare(model, one, placed);
+  const RewardTerms placed = s.model.evaluate(one);
+  s.bound.prepare(s.model, one, placed);
   const Pose twin{0.5, -10, std::numbers::pi / 2};
   const std::vector<Pose> two{q, twin};
-  EXPECT_NEAR(bound.of(twin, Precision::Fine, terms), model.reward(two), 1e-12);
+  EXPECT_NEAR(s.bound.of(twin, Precision::Fine, s.terms), s.model.reward(two), 1e-12);
 }
 
-// The coarse bound takes the disc about the target for its angle: a little above the fine one,
-// and above 2·asin(r/d), what the disc itself subtends.
+// The coarse bound takes the disc about the target for its angle: a little above what the
+// disc itself subtends, 2·asin(r/d).
 TEST(AddedCameraBound, CoarseBoundTakesTheTargetsDisc) {
-  kinematics::World w;
-  w.boundary = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
-  w.targets.push_back({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
-  const double theta = std::numbers::pi / 6;
-  RewardModel model(params::RewardParams{}, theta);
-  model.setWorld(w);
-  AddedCameraBound bound;
-  std::vector<double> terms;
-  const std::vector<Pose> none;
-  bound.prepare(model, none, model.evaluate(none));
-  const Pose q{0, -10, std::numbers::pi / 2};
+  LoneSquare s;
   const double disc = 2 * std::asin(std::sqrt(2.0) / 10.0);
-  const double coarse = bound.of(q, Precision::Coarse, terms);
-  EXPECT_GT(coarse, 0.25 + 0.2 * disc / (2 * theta));
-  EXPECT_LT(coarse, 0.25 + 0.2 * 1.01 * disc / (2 * theta));
+  const double coarse = s.bound.of(s.faceOn, Precision::Coarse, s.terms);
+  EXPECT_GT(coarse, 0.25 + 0.2 * disc / (2 * s.kTheta));
+  EXPECT_LT(coarse, 0.25 + 0.2 * 1.01 * disc / (2 * s.kTheta));
 }
 
 }  // namespace
