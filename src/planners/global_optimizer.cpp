@@ -1,6 +1,7 @@
 #include "planners/global_optimizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <numeric>
 
@@ -35,8 +36,10 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
     if (samples.empty()) return std::nullopt;
     // Line 10: each scored with the cameras placed before it, highest bound first, so that the
     // samples that cannot beat a score already taken are never swept (added_camera_bound.h):
-    // the cheap bound orders them and ends the scoring, the tighter one skips a sample. Share s
-    // of the models takes every s-th of that order.
+    // the cheap bound orders them and ends the scoring, the tighter one skips a sample. The
+    // shares of the models take the next sample of that order in turn and share the best
+    // score: which samples go unswept then depends on their timing, the first best does not
+    // (neither it nor any sample scoring as much can be skipped).
     using Precision = reward::AddedCameraBound::Precision;
     bound.prepare(model, result.poses, placed);
     bounds.resize(samples.size());
@@ -47,22 +50,26 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return bounds[a] > bounds[b]; });
     scores.assign(samples.size(), -std::numeric_limits<double>::infinity());
+    std::atomic<std::size_t> next{0};
+    std::atomic<double> bestScore{-std::numeric_limits<double>::infinity()};
     const std::size_t shares = 1 + helpers.size();
     forEachOnWorkers(shares, static_cast<unsigned>(shares), [&](std::size_t share) {
       reward::RewardModel& scorer = share == 0 ? model : helpers[share - 1];
       std::vector<geometry::Pose> team = result.poses;
       team.emplace_back();
       std::vector<double> shareTerms;
-      double best = -std::numeric_limits<double>::infinity();
-      for (std::size_t i = share; i < order.size(); i += shares) {
+      for (std::size_t i = next++; i < order.size(); i = next++) {
         const std::size_t k = order[i];
+        double best = bestScore.load(std::memory_order_relaxed);
         if (reward::AddedCameraBound::cannotBeat(bounds[k], best)) break;
         if (reward::AddedCameraBound::cannotBeat(bound.of(samples[k], Precision::Fine, shareTerms),
                                                  best))
           continue;
         team.back() = samples[k];
         scores[k] = scorer.reward(team);
-        best = std::max(best, scores[k]);
+        while (scores[k] > best &&
+               !bestScore.compare_exchange_weak(best, scores[k], std::memory_order_relaxed)) {
+        }
       }
     });
     // Lines 10–11: the first best (a sample left unscored scores below it).
