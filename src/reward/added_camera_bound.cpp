@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "visibility/occluders.h"
@@ -149,7 +150,9 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
   }
   for (const geometry::Pose& other : team_)
     repulsion += pairTerm(other.position(), p, params.d2);
-  return combine(params, coverage, utilization, repulsion);
+  const double bound = combine(params, coverage, utilization, repulsion);
+  // No bound at all rather than NaN, which would neither order the samples nor skip one.
+  return std::isnan(bound) ? std::numeric_limits<double>::infinity() : bound;
 }
 
 bool AddedCameraBound::cannotBeat(double bound, double best) {
