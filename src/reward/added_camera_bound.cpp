@@ -62,8 +62,8 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
                                const RewardTerms& teamTerms) {
   model_ = &model;
   team_ = team;
-  const kinematics::World& world = model.world();
   const visibility::Occluders& occluders = model.occluders();
+  if (occluders.buildId() != build_) takeInstant(model);
 
   halfFov_ = model.halfFov(team.size());
   theta0_ = team.empty() ? halfFov_ : model.halfFov(0);
@@ -71,13 +71,33 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
   // utilizationOf's sum, from its mean: Σ_j (θ_0/θ_j)·angles_j = utilization · 2θ_0 · M.
   teamAngles_ = teamTerms.utilization * (2.0 * theta0_) * static_cast<double>(team.size());
   teamRepulsion_ = teamTerms.repulsion;
-  perimeter_ = targetPerimeter(world);
-  boxes_ = objectBoxes(world);
 
+  for (Edge& edge : edges_)
+    edge.unseen = edge.length;
+  teamSeen_ = 0.0;
+  for (const visibility::Segment& s : model.segments()) {
+    if (s.visibleBy == 0) continue;
+    const double seen = visibility::length(s);
+    edges_[occluders.targetEdgeOffset(s.target) + s.edge].unseen -= seen;
+    teamSeen_ += seen;
+  }
+  for (Target& t : targets_) {
+    t.unseen = 0.0;
+    for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e) {
+      edges_[e].unseen = std::max(edges_[e].unseen, 0.0);
+      t.unseen += edges_[e].unseen;
+    }
+  }
+}
+
+void AddedCameraBound::takeInstant(const RewardModel& model) {
+  const kinematics::World& world = model.world();
+  const visibility::Occluders& occluders = model.occluders();
+  build_ = occluders.buildId();
   targets_.resize(occluders.targetCount());
   for (std::uint32_t i = 0; i < occluders.targetCount(); ++i) {
     Target& t = targets_[i];
-    const geometry::Box box = geometry::boundingBox(world.targets[i]);
+    const geometry::Box& box = model.objectBoxes()[i];
     t.firstEdge = occluders.targetEdgeOffset(i);
     t.edgeCount = occluders.targetEdgeOffset(i + 1) - t.firstEdge;
     t.center = (box.min + box.max) * 0.5;
@@ -93,26 +113,12 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
     Edge& edge = edges_[e];
     edge.a = occluders.targetEdgeStart(e);
     edge.b = occluders.targetEdgeEnd(e);
-    edge.unseen = geometry::distance(edge.a, edge.b);
+    edge.length = geometry::distance(edge.a, edge.b);
     edge.hasTwins = false;
   }
   for (std::uint32_t piece = 0; piece < occluders.pieceCount(); ++piece) {
     const std::uint32_t e = occluders.globalEdge(piece);
     if (e != visibility::Occluders::kNoEdge && occluders.hasTwins(piece)) edges_[e].hasTwins = true;
-  }
-  teamSeen_ = 0.0;
-  for (const visibility::Segment& s : model.segments()) {
-    if (s.visibleBy == 0) continue;
-    const double seen = visibility::length(s);
-    edges_[occluders.targetEdgeOffset(s.target) + s.edge].unseen -= seen;
-    teamSeen_ += seen;
-  }
-  for (Edge& edge : edges_)
-    edge.unseen = std::max(edge.unseen, 0.0);
-  for (Target& t : targets_) {
-    t.unseen = 0.0;
-    for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e)
-      t.unseen += edges_[e].unseen;
   }
 }
 
@@ -138,14 +144,15 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
     }
     angles += fine ? std::min(disc, edgeAngles) : disc;
   }
-  const double coverage = coverageOf(teamSeen_ + gain, perimeter_);
+  const double coverage = coverageOf(teamSeen_ + gain, model_->perimeter());
   const double cameraAngles = weight_ * std::min(2.0 * halfFov_, angles);
   const double utilization =
       (teamAngles_ + cameraAngles) / (2.0 * theta0_) / static_cast<double>(team_.size() + 1);
   const params::RewardParams& params = model_->params();
   double repulsion = teamRepulsion_;
   if (fine) {
-    for (const double term : objectTerms(model_->world(), boxes_, p, params.d2, terms))
+    for (const double term :
+         objectTerms(model_->world(), model_->objectBoxes(), p, params.d2, terms))
       repulsion += term;
   }
   for (const geometry::Pose& other : team_)

@@ -57,22 +57,25 @@ class AddedCameraBound {
   };
   struct Edge {
     geometry::Vec2 a, b;
+    double length = 0.0;
     double unseen = 0.0;    // its length less what the team sees of it
     bool hasTwins = false;  // shared with another ring: the sweep keeps it whatever the side
   };
 
+  // The targets' and edges' geometry at the model's instant, kept while it stays the same.
+  void takeInstant(const RewardModel& model);
+
+  std::uint64_t build_ = 0;  // Occluders::buildId() of targets_ and edges_; 0: none
   const RewardModel* model_ = nullptr;
   std::span<const geometry::Pose> team_;
   double halfFov_ = 0.0;     // θ_q
   double theta0_ = 0.0;      // θ_0, of the team's first camera (q's, in an empty team)
   double weight_ = 0.0;      // θ_0/θ_q, its weight in utilizationOf
-  double perimeter_ = 0.0;   // length(∂T)
   double teamSeen_ = 0.0;    // vis(S) of the team
   double teamAngles_ = 0.0;  // Σ_j (θ_0/θ_j)·angles_j of the team
   double teamRepulsion_ = 0.0;
   std::vector<Target> targets_;
   std::vector<Edge> edges_;
-  std::vector<geometry::Box> boxes_;  // objectBoxes(world), for q's repulsion terms
 };
 
 }  // namespace camcov::reward

@@ -13,7 +13,7 @@ RewardModel::RewardModel(const params::RewardParams& params, double halfFov)
 void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
   perimeter_ = targetPerimeter(world_);
-  objectBoxes_ = objectBoxes(world_);
+  objectBoxes_ = reward::objectBoxes(world_);
   // A new arrangement, unless this model alone holds its last one: then its buffers are reused.
   if (!occluders_ || occluders_.use_count() > 1)
     occluders_ = std::make_shared<visibility::Occluders>();

@@ -34,6 +34,9 @@ class RewardModel {
   const kinematics::World& world() const { return world_; }
   const visibility::Occluders& occluders() const { return *occluders_; }
   double halfFov(std::size_t camera) const { return halfFovs_[camera]; }
+  // length(∂T) at this instant, and the bounding box of every target, then of every obstacle.
+  double perimeter() const { return perimeter_; }
+  std::span<const geometry::Box> objectBoxes() const { return objectBoxes_; }
   const params::RewardParams& params() const { return params_; }
 
   // All terms for the camera set (camera j has θ_j; at most as many as there are θs); S is kept
