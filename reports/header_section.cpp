@@ -67,12 +67,20 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   }
 
   std::string out = "<header class=\"report-header\">\n<h1>camcov benchmark report</h1>\n";
+  // What ran, said from the batch itself: its methods by their own descriptions.
+  std::string ran;
+  const std::vector<std::string> methods = orderedMethods(m.methods);
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    ran += fmt::format("{}<b>{}</b> ({})",
+                       i == 0                    ? ""
+                       : i + 1 == methods.size() ? " and "
+                                                 : ", ",
+                       escapeXml(methods[i]), escapeXml(methodStyle(methods[i]).label));
+  }
   out += fmt::format(
-      "<p class=\"lede\">Hönig &amp; Ayanian, <i>Dynamic Multi-Target Coverage with Robotic "
-      "Cameras</i>: the paper's method (global optimization, task assignment, motion planning "
-      "and local optimization) against local optimization only, on {} scenes with {} seeds "
-      "each.</p>\n",
-      m.scenes.size(), m.seeds);
+      "<p class=\"lede\">{} on {} scenes with {} seeds each{}.</p>\n", ran, m.scenes.size(),
+      m.seeds,
+      methods.size() > 1 ? fmt::format(", each compared with {}", escapeXml(s.reference)) : "");
   // Against the reference, then the others pairwise (section "Methods against each other").
   for (const auto* tallies : {&s.tallies, &s.pairTallies}) {
     for (const records::Tally& t : *tallies) {

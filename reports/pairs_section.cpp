@@ -29,7 +29,8 @@ std::vector<Pair> comparedPairs(const ReportData& data) {
 }
 
 std::string tallyText(const records::Tally& t) {
-  return fmt::format("{} / {} / {}", t.wins, t.ties, t.losses);
+  return fmt::format("{} / {} / {}{}", t.wins, t.ties, t.losses,
+                     t.undecided > 0 ? fmt::format(" ({} undecided)", t.undecided) : "");
 }
 
 }  // namespace
@@ -55,22 +56,12 @@ std::string pairsSection(const ReportData& data) {
       bool any = false;
       for (std::size_t i = 0; i < pairs.size(); ++i) {
         const auto it = byKey.find({scene.name, pairs[i].method, pairs[i].against});
-        if (it == byKey.end() || it->second->winner.empty()) {
-          cells +=
-              "<td class=\"num\">—</td><td class=\"num\">—</td><td>" + winnerBadge("") + "</td>";
-          continue;
-        }
-        const records::Comparison& c = *it->second;
+        const records::Comparison* c = it == byKey.end() ? nullptr : it->second;
+        cells += comparisonCells(c);
+        if (c == nullptr || c->winner.empty()) continue;
         any = true;
-        for (records::Tally* t : {&tallies[{group, i}], &totals[i]}) {
-          t->wins += c.winner == c.method;
-          t->ties += c.winner == "tie";
-          t->losses += c.winner == pairs[i].against;
-        }
-        cells += fmt::format(
-            "<td class=\"num\">{:+.3f}</td><td class=\"num\" title=\"{}\">{}</td><td>{}</td>",
-            c.meanDifference, c.exact ? "exact permutation test" : "normal approximation",
-            pValueText(c.pValue), winnerBadge(c.winner));
+        for (records::Tally* t : {&tallies[{group, i}], &totals[i]})
+          records::count(*t, *c, pairs[i].against);
       }
       if (any)
         rows += fmt::format("<tr><th scope=\"row\">{}</th>{}</tr>\n", escapeXml(scene.name), cells);
@@ -106,14 +97,15 @@ std::string pairsSection(const ReportData& data) {
       "<section id=\"pairs\">\n<h2>Methods against each other</h2>\n<p>Every pair of methods "
       "other than the reference ({}), tested as in the summary: Δ is the first method's mean "
       "average coverage minus the second's, p the two-sided Mann-Whitney U test of their runs, "
-      "the winner the better mean when p &lt; {}, else a tie. Tallies are wins / ties / losses "
-      "of the first method.</p>\n<div class=\"table-wrap\"><table class=\"pair-totals\">"
+      "the winner the better mean when p &lt; {} and the means differ by at least {}, else a tie; "
+      "undecided where the seeds are too few for any p to reach it. Tallies are wins / ties / "
+      "losses of the first method.</p>\n<div class=\"table-wrap\"><table class=\"pair-totals\">"
       "<thead><tr><th scope=\"col\">Pair</th>{}<th scope=\"col\">All scenes</th></tr></thead>\n"
       "<tbody>\n{}</tbody></table></div>\n<div class=\"table-wrap\"><table class=\"pairs\">"
       "<thead><tr><th scope=\"col\" rowspan=\"2\">Scene</th>{}</tr>\n<tr>{}</tr></thead>\n{}"
       "</table></div>\n</section>\n",
-      escapeXml(data.summary.reference), records::kSignificance, tallyHead, tallyRows, head,
-      subhead, bodies);
+      escapeXml(data.summary.reference), records::kSignificance, records::kPracticalDifference,
+      tallyHead, tallyRows, head, subhead, bodies);
 }
 
 }  // namespace camcov::reports

@@ -70,7 +70,7 @@ const records::RunsComparison* versusReference(const Verdicts& verdicts, std::si
 struct Overall {
   int scenes = 0;
   double meanCoverage = 0.0;
-  int wins = 0, ties = 0, losses = 0;
+  int wins = 0, ties = 0, losses = 0, undecided = 0;
 };
 
 Overall overall(const SettingsData& data, const Verdicts& verdicts, std::size_t i,
@@ -83,9 +83,10 @@ Overall overall(const SettingsData& data, const Verdicts& verdicts, std::size_t 
     sum += mean(runs->averageCoverage);
     ++o.scenes;
     if (const auto c = versusReference(verdicts, i, scene, method)) {
-      (c->verdict == records::Verdict::Better  ? o.wins
-       : c->verdict == records::Verdict::Worse ? o.losses
-                                               : o.ties)++;
+      (c->verdict == records::Verdict::Better      ? o.wins
+       : c->verdict == records::Verdict::Worse     ? o.losses
+       : c->verdict == records::Verdict::Undecided ? o.undecided
+                                                   : o.ties)++;
     }
   }
   if (o.scenes > 0) o.meanCoverage = sum / o.scenes;
@@ -282,11 +283,14 @@ std::string overallSection(const SettingsData& data, const Verdicts& verdicts) {
       }
       rows += fmt::format(
           "<td class=\"num\" data-setting=\"{}\" data-mean=\"{}\" data-wins=\"{}\" "
-          "data-ties=\"{}\" data-losses=\"{}\">{}<br><span class=\"muted\">{}</span></td>",
-          escapeXml(data.settings[i].name), o.meanCoverage, o.wins, o.ties, o.losses,
+          "data-ties=\"{}\" data-losses=\"{}\" data-undecided=\"{}\">{}<br><span "
+          "class=\"muted\">{}</span></td>",
+          escapeXml(data.settings[i].name), o.meanCoverage, o.wins, o.ties, o.losses, o.undecided,
           fixed(o.meanCoverage, 3),
-          i == data.reference ? fmt::format("{} scenes", o.scenes)
-                              : fmt::format("{} / {} / {}", o.wins, o.ties, o.losses));
+          i == data.reference
+              ? fmt::format("{} scenes", o.scenes)
+              : fmt::format("{} / {} / {}{}", o.wins, o.ties, o.losses,
+                            o.undecided > 0 ? fmt::format(" ({} undecided)", o.undecided) : ""));
     }
     rows += "</tr>\n";
   }
@@ -312,9 +316,10 @@ std::string sceneCell(const SettingsData& data, const Verdicts& verdicts, std::s
                           fixed(mean(runs->averageUtilization), 3));
   if (runs->failed > 0) title += fmt::format(", {} failed", runs->failed);
   if (const auto c = versusReference(verdicts, i, scene, method)) {
-    verdict = c->verdict == records::Verdict::Better  ? "better"
-              : c->verdict == records::Verdict::Worse ? "worse"
-                                                      : "tie";
+    verdict = c->verdict == records::Verdict::Better      ? "better"
+              : c->verdict == records::Verdict::Worse     ? "worse"
+              : c->verdict == records::Verdict::Undecided ? "undecided"
+                                                          : "tie";
     title += fmt::format("; Δ {:+.3f} against the reference, p = {:.3g} ({})", c->meanDifference,
                          c->pValue, c->exact ? "exact" : "normal approximation");
     if (c->verdict == records::Verdict::Better) {

@@ -45,18 +45,11 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
 
 // A method's row ends with its comparison against the reference: Δ, p, the winner; the
 // reference's own row says what it is.
-std::string comparisonCells(const records::MethodSummary& m, const records::BatchSummary& s) {
+std::string comparisonOf(const records::MethodSummary& m, const records::BatchSummary& s) {
   if (m.method == s.reference) {
     return "<td class=\"num muted\" colspan=\"3\">reference</td>";
   }
-  const records::Comparison* c = s.comparison(m.scene, m.method);
-  if (c == nullptr || c->winner.empty()) {
-    return "<td class=\"num\">—</td><td class=\"num\">—</td><td>" + winnerBadge("") + "</td>";
-  }
-  return fmt::format("<td class=\"num\">{}</td><td class=\"num\" title=\"{}\">{}</td><td>{}</td>",
-                     fmt::format("{:+.3f}", c->meanDifference),
-                     c->exact ? "exact permutation test" : "normal approximation",
-                     pValueText(c->pValue), winnerBadge(c->winner));
+  return comparisonCells(s.comparison(m.scene, m.method));
 }
 
 std::string sceneBody(const SceneData& scene, const records::BatchSummary& summary,
@@ -97,7 +90,7 @@ std::string sceneBody(const SceneData& scene, const records::BatchSummary& summa
     }
     out += methodRow(m, rows.size() > 1 && &m == bestCoverage,
                      rows.size() > 1 && &m == bestUtilization);
-    out += comparisonCells(m, summary) + "</tr>\n";
+    out += comparisonOf(m, summary) + "</tr>\n";
   }
   return out + "</tbody>\n";
 }
@@ -123,10 +116,7 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
     for (const auto* m : rows) {
       const records::Comparison* c = data.summary.comparison(m->scene, m->method);
       if (c == nullptr || c->winner.empty()) continue;
-      records::Tally& t = tallies[m->method];
-      t.wins += c->winner == m->method;
-      t.ties += c->winner == "tie";
-      t.losses += c->winner == data.summary.reference;
+      records::count(tallies[m->method], *c, data.summary.reference);
     }
     bodies += sceneBody(scene, data.summary, rows, i);
   }
@@ -134,9 +124,10 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
   for (const auto& method : orderedMethods(data.manifest.methods)) {
     const auto it = tallies.find(method);
     if (it == tallies.end()) continue;
-    verdicts.push_back(fmt::format("{} against {}: wins {}, ties {}, losses {}", escapeXml(method),
-                                   escapeXml(data.summary.reference), it->second.wins,
-                                   it->second.ties, it->second.losses));
+    verdicts.push_back(fmt::format(
+        "{} against {}: wins {}, ties {}, losses {}{}", escapeXml(method),
+        escapeXml(data.summary.reference), it->second.wins, it->second.ties, it->second.losses,
+        it->second.undecided > 0 ? fmt::format(", undecided {}", it->second.undecided) : ""));
   }
   if (scenes == 0) return {};
   const auto sortable = [](std::string_view key, std::string_view label) {

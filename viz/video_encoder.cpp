@@ -130,7 +130,7 @@ struct VideoEncoder::Impl {
     check(avcodec_parameters_from_context(stream->codecpar, codec.get()), "stream parameters");
     stream->time_base = codec->time_base;  // a wish: the muxer may pick a finer one
     stream->avg_frame_rate = codec->framerate;
-    records::createParentFolder(file);
+    records::prepareOutputFile(file);
     const int opened = avio_open(&format->pb, partial.c_str(), AVIO_FLAG_WRITE);
     if (opened < 0) throw InputError(file.string() + ": cannot create: " + avError(opened));
     AVDictionary* options = nullptr;

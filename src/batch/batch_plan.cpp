@@ -1,5 +1,7 @@
 #include "batch/batch_plan.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
@@ -8,6 +10,7 @@
 #include "params/parameter_table.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
+#include "util/code_identity.h"
 #include "util/input_error.h"
 #include "util/natural_order.h"
 
@@ -50,6 +53,13 @@ const control::Method* broughtMethod(const std::string& name,
   return nullptr;
 }
 
+// What makes a method's results: this build's code for the methods compiled into it, the
+// fingerprint a brought method carries otherwise.
+std::string identityOf(const control::Method* brought) {
+  if (brought != nullptr && !brought->identity.empty()) return brought->identity;
+  return std::string("c++ ") + codeIdentity();
+}
+
 }  // namespace
 
 Shard parseShard(const std::string& text) {
@@ -64,17 +74,36 @@ Shard parseShard(const std::string& text) {
 }
 
 BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
-  if (r.methods.empty()) throw InputError("--methods: name at least one method");
+  if (r.methods.empty()) throw InputError("--methods: name at least one method, e.g. paper,local");
   std::vector<const control::Method*> brought;  // per name in r.methods; nullptr: the table's
-  for (const auto& m : r.methods)
-    brought.push_back(broughtMethod(m, r.extraMethods));
-  if (r.seeds == 0) throw InputError("--seeds must be at least 1");
+  for (std::size_t m = 0; m < r.methods.size(); ++m) {
+    // Two jobs of one name would race for one results file.
+    if (std::find(r.methods.begin(), r.methods.begin() + m, r.methods[m]) !=
+        r.methods.begin() + m) {
+      throw InputError("--methods: " + r.methods[m] + " is named twice");
+    }
+    brought.push_back(broughtMethod(r.methods[m], r.extraMethods));
+  }
+  if (r.seeds == 0 || r.seeds > kMaxSeeds) {
+    throw InputError("--seeds " + std::to_string(r.seeds) + ": expected 1 to " +
+                     std::to_string(kMaxSeeds));
+  }
   BatchPlan plan;
-  plan.manifest = {toolVersion, r.parameters, r.methods, r.seeds, {}, r.command};
+  plan.manifest = {toolVersion, r.parameters, r.methods, {}, r.seeds, {}, r.command};
+  for (std::size_t m = 0; m < r.methods.size(); ++m)
+    plan.manifest.methodIdentities[r.methods[m]] = identityOf(brought[m]);
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
     plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash});
   }
+  const std::uint64_t total = plan.manifest.scenes.size() * r.methods.size() * r.seeds;
+  if (total > kMaxJobs) {
+    throw InputError(fmt::format(
+        "{} scenes x {} methods x {} seeds = {} jobs: at most {} fit in one batch; split it "
+        "with --shard or fewer --seeds",
+        plan.manifest.scenes.size(), r.methods.size(), r.seeds, total, kMaxJobs));
+  }
+  plan.jobs.reserve(total / r.shard.count + 1);
   std::size_t i = 0;
   for (const auto& entry : plan.manifest.scenes) {
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
@@ -92,7 +121,23 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   return plan;
 }
 
-void prepareFolder(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+std::vector<std::string> methodsMadeByOtherCode(const records::BatchManifest& previous,
+                                                const records::BatchManifest& now) {
+  std::vector<std::string> changed;
+  for (const std::string& method : now.methods) {
+    const auto was = previous.methodIdentities.find(method);
+    if (was != previous.methodIdentities.end()) {
+      if (was->second != now.methodIdentities.at(method)) changed.push_back(method);
+    } else if (previous.methodIdentities.empty() ||
+               std::find(previous.methods.begin(), previous.methods.end(), method) !=
+                   previous.methods.end()) {
+      changed.push_back(method);  // ran before identities were recorded: unknown code
+    }
+  }
+  return changed;
+}
+
+void prepareFolder(const records::BatchFolder& folder, records::BatchManifest& manifest,
                    bool force) {
   if (const auto previous = folder.readManifest()) {
     if (params::toJson(previous->parameters) != params::toJson(manifest.parameters) && !force) {
@@ -100,6 +145,24 @@ void prepareFolder(const records::BatchFolder& folder, const records::BatchManif
                        " holds results made with other parameters; use another --out, "
                        "or --force to run those jobs again with the new ones");
     }
+    const std::vector<std::string> changed = methodsMadeByOtherCode(*previous, manifest);
+    if (!changed.empty() && !force) {
+      std::string list;
+      for (const std::string& m : changed) {
+        const auto was = previous->methodIdentities.find(m);
+        list += fmt::format("{}{} ({} then, {} now)", list.empty() ? "" : "; ", m,
+                            was == previous->methodIdentities.end() ? "unrecorded" : was->second,
+                            manifest.methodIdentities.at(m));
+      }
+      throw InputError(folder.root().string() + " holds results of methods whose code has " +
+                       "changed since: " + list +
+                       "; use another --out, or --force to run their jobs again");
+    }
+    for (const std::string& m : changed)
+      folder.removeJobsOf(m);
+    // The folder keeps saying which code made the results of methods this batch leaves alone.
+    for (const auto& [method, identity] : previous->methodIdentities)
+      manifest.methodIdentities.emplace(method, identity);
   }
   folder.removeStaleTemporaries();
   folder.writeManifest(manifest);

@@ -12,6 +12,11 @@
 
 namespace camcov::batch {
 
+// Limits that keep a batch's plan within memory: seeds per scene and method, and jobs in all
+// (a million jobs are days of runs; their plan is about a gigabyte).
+inline constexpr std::uint64_t kMaxSeeds = 100000;
+inline constexpr std::uint64_t kMaxJobs = 1000000;
+
 // Part `index` (0-based) of `count`: the jobs i with i mod count == index.
 struct Shard {
   std::size_t index = 0;
@@ -38,13 +43,20 @@ struct BatchPlan {
   std::size_t totalJobs = 0;   // of all shards
 };
 
-// InputError for unknown methods, no seeds, missing or invalid scene files.
+// InputError for no, unknown or repeated methods, seeds outside 1..kMaxSeeds, more than
+// kMaxJobs jobs, missing or invalid scene files.
 BatchPlan planBatch(const BatchRequest& request, const std::string& toolVersion);
 
+// The methods of `now` whose results in a folder of `previous` were made by other code (or by
+// code whose identity was not recorded).
+std::vector<std::string> methodsMadeByOtherCode(const records::BatchManifest& previous,
+                                                const records::BatchManifest& now);
+
 // Gets `folder` ready for `plan`: refuses (InputError) a folder whose results were made with
-// other parameters unless `force`, removes what a killed run left half-written, and writes
-// the manifest.
-void prepareFolder(const records::BatchFolder& folder, const records::BatchManifest& manifest,
+// other parameters or by other code of a method unless `force` (which removes that method's
+// results, to run them again), removes what a killed run left half-written, and writes the
+// manifest (keeping the identities of methods the folder holds and this batch leaves alone).
+void prepareFolder(const records::BatchFolder& folder, records::BatchManifest& manifest,
                    bool force);
 
 }  // namespace camcov::batch

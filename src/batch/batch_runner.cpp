@@ -1,9 +1,12 @@
 #include "batch/batch_runner.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <time.h>
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <exception>
 #include <mutex>
 
@@ -20,22 +23,52 @@ double threadCpuSeconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+std::string utcMinute(std::int64_t seconds, const char* format) {
+  const std::time_t t = seconds;
+  std::tm tm{};
+  ::gmtime_r(&t, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, format, &tm);
+  return text;
+}
+
 }  // namespace
+
+std::string describeResumption(const Resumption& r, const std::string& folder) {
+  if (r.alreadyDone == 0) return "";
+  const std::string from = utcMinute(r.earliest, "%F %H:%M");
+  const std::string to = utcMinute(r.latest, "%F %H:%M");
+  // "2026-11-26 14:02 to 14:10": the second date only when it is another day.
+  const std::string when =
+      from == to ? from
+                 : from + " to " + (from.substr(0, 10) == to.substr(0, 10) ? to.substr(11) : to);
+  return fmt::format("{} of {} jobs already done in {} (written {} UTC); running the other {}",
+                     r.alreadyDone, r.total, folder, when, r.total - r.alreadyDone);
+}
 
 BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder& folder,
                   unsigned workers, BatchObserver& observer) {
   BatchRun batch;
   batch.outcomes.resize(jobs.size());
   std::vector<std::size_t> pending;
+  Resumption resumption{0, jobs.size(), 0, 0};
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const BatchJob& job = jobs[i];
     if (auto done = folder.finishedJob(job.stem, job.spec.parameters, job.sceneHash)) {
       batch.outcomes[i] = std::move(*done);
+      struct stat s {};
+      if (::stat(folder.runFile(job.stem).c_str(), &s) == 0) {
+        const std::int64_t written = s.st_mtime;
+        resumption.earliest =
+            resumption.alreadyDone == 0 ? written : std::min(resumption.earliest, written);
+        resumption.latest = std::max(resumption.latest, written);
+      }
+      ++resumption.alreadyDone;
     } else {
       pending.push_back(i);
     }
   }
-  observer.resuming(jobs.size() - pending.size(), jobs.size());
+  observer.resuming(resumption);
   std::mutex mutex;
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const BatchJob& job = jobs[pending[k]];

@@ -3,6 +3,7 @@
 // results file atomically the moment it finishes, so a killed batch loses only the jobs in
 // flight; a job that throws is recorded as failed and the others go on.
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,13 +26,23 @@ struct BatchRun {
   std::map<std::string, records::JobTiming> timings;  // of the jobs run now, by stem
 };
 
+// Before any job runs: how many of the batch's jobs were found finished in the folder, and
+// when their results were written (seconds since the epoch, of the files).
+struct Resumption {
+  std::size_t alreadyDone = 0;
+  std::size_t total = 0;
+  std::int64_t earliest = 0, latest = 0;  // 0 when nothing was reused
+};
+// "12 of 40 jobs already done in OUT (written 2026-11-26 14:02 to 14:10 UTC); running the
+// other 28", or "" when nothing is reused: the line every caller prints.
+std::string describeResumption(const Resumption& r, const std::string& folder);
+
 // What a running batch tells its caller (the CLI draws a progress line, Python may report
 // to a notebook). Calls never overlap: `finished` is called under the batch's lock.
 class BatchObserver {
  public:
   virtual ~BatchObserver() = default;
-  // Before any job runs: `alreadyDone` of `total` jobs were found finished in the folder.
-  virtual void resuming(std::size_t alreadyDone, std::size_t total) = 0;
+  virtual void resuming(const Resumption& resumption) = 0;
   virtual void finished(const BatchJob& job, const records::JobOutcome& outcome) = 0;
 };
 

@@ -9,7 +9,8 @@
 
 namespace camcov::batch {
 
-// InputError if an input is no batch folder or was made with other parameters than the first.
+// InputError if an input is no batch folder, holds a damaged run, or was made with other
+// parameters or by other code of a method than the first; then nothing has been written.
 // `target` may be one of the inputs. Returns the combined manifest (also written).
 records::BatchManifest mergeFolders(const std::vector<std::string>& inputs,
                                     const records::BatchFolder& target,

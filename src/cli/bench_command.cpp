@@ -13,9 +13,11 @@
 #include "camcov/version.h"
 #include "cli/bench_outputs.h"
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/parameter_options.h"
 #include "cli/progress.h"
 #include "control/methods.h"
+#include "records/atomic_file.h"
 
 namespace camcov::cli {
 namespace {
@@ -58,12 +60,9 @@ class ProgressLine final : public batch::BatchObserver {
   ~ProgressLine() override {
     if (progress_) progress_->close();
   }
-  void resuming(std::size_t alreadyDone, std::size_t total) override {
-    if (alreadyDone > 0) {
-      std::cerr << fmt::format("{} of {} jobs already done in {}; running the other {}\n",
-                               alreadyDone, total, folder_, total - alreadyDone);
-    }
-    progress_.emplace(total, alreadyDone);
+  void resuming(const batch::Resumption& r) override {
+    if (r.alreadyDone > 0) std::cerr << batch::describeResumption(r, folder_) << "\n";
+    progress_.emplace(r.total, r.alreadyDone);
   }
   void finished(const batch::BatchJob& job, const records::JobOutcome& outcome) override {
     progress_->finished(outcome.failed ? fmt::format("{}: FAILED: {}", job.stem, outcome.error)
@@ -86,10 +85,14 @@ int bench(const BenchOptions& o) {
                               o.argv,
                               {}};
   if (o.duration >= 0.0) request.parameters.sim.duration = o.duration;
+  batch::BatchPlan plan = batch::planBatch(request, kVersion);
   o.outputs.referenceAmong(request.methods);  // and a bad --reference too
-  const batch::BatchPlan plan = batch::planBatch(request, kVersion);
   const records::BatchFolder folder(o.out);
-  batch::prepareFolder(folder, plan.manifest, o.force);
+  {
+    records::NewFolderGuard created(folder.root());  // kept once the manifest is written
+    batch::prepareFolder(folder, plan.manifest, o.force);
+    created.keep();
+  }
 
   const batch::Shard& shard = request.shard;
   const unsigned workers = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -126,13 +129,17 @@ Registration addBenchCommand(CLI::App& app) {
   cmd->add_option("--scenes", o->scenes, "scene folders or files")->capture_default_str();
   cmd->add_option("--methods", o->methods, "comma-separated names of methods")
       ->capture_default_str();
-  cmd->add_option("--seeds", o->seeds, "seeds 1..N per scene and method")->capture_default_str();
+  cmd->add_option("--seeds", o->seeds, "seeds 1..N per scene and method")
+      ->check(within(1, batch::kMaxSeeds))
+      ->capture_default_str();
   cmd->add_option("--duration", o->duration, "simulated seconds per run (default: sim.duration)")
-      ->check(CLI::Range(0.0, 1e6));
-  cmd->add_option("--jobs,-j", o->jobs, "worker threads (default: all cores)");
+      ->check(within(0.0, 1e6));
+  cmd->add_option("--jobs,-j", o->jobs, "worker threads (default: all cores)")
+      ->check(within(0, 1024));
   cmd->add_option("--out,-o", o->out, "results folder")->capture_default_str();
   cmd->add_option("--shard", o->shard, "run only part K of N of the jobs (K/N, 1-based)");
-  cmd->add_flag("--force", o->force, "run again jobs made with other parameters");
+  cmd->add_flag("--force", o->force,
+                "run again jobs made with other parameters or by other code of a method");
   o->outputs.addTo(*cmd);
   o->parameters.addTo(*cmd);
   return {cmd, [o] {

@@ -9,6 +9,7 @@
 #include "cli/bench_explorers.h"
 #include "cli/bench_optima.h"
 #include "cli/bench_videos.h"
+#include "cli/number_options.h"
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
@@ -32,7 +33,7 @@ void BenchOutputOptions::addTo(CLI::App& cmd) {
   cmd.add_option("--optimum-budget", optimumBudget,
                  "reward evaluations of the offline optimum (camcov optimum) searched for each "
                  "scene that holds still, for the report to set final coverage against; 0: none")
-      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40))
+      ->check(within(0, 0x1p40))
       ->capture_default_str();
 }
 
@@ -63,7 +64,7 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
     header += fmt::format(" {:>15}", method);
   for (const auto& method : methods) {
     if (method != summary.reference)
-      header += fmt::format("  {:<18}", method + " vs " + summary.reference);
+      header += fmt::format("  {:<20}", method + " vs " + summary.reference);
   }
   std::cout << header << "\n";
   for (const auto& scene : summary.scenes) {
@@ -78,19 +79,28 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
     for (const auto& method : methods) {
       if (method == summary.reference) continue;
       const records::Comparison* c = summary.comparison(scene, method);
-      line += fmt::format("  {:<18}", c == nullptr || c->winner.empty()
-                                          ? std::string("-")
-                                          : fmt::format("{} (p {:.3g})", c->winner, c->pValue));
+      line += fmt::format("  {:<20}", c == nullptr ? std::string("-") : records::verdictText(*c));
     }
     std::cout << line << "\n";
   }
   // Against the reference, then the others pairwise.
+  int undecided = 0, seedsNeeded = 0;
   for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
     for (const auto& t : *tallies) {
-      std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}\n", t.method,
+      std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}{}\n", t.method,
                                t.against.empty() ? summary.reference : t.against, t.wins, t.ties,
-                               t.losses);
+                               t.losses,
+                               t.undecided > 0 ? fmt::format(", undecided {}", t.undecided) : "");
+      undecided += t.undecided;
     }
+  }
+  for (const auto& c : summary.comparisons)
+    seedsNeeded = std::max(seedsNeeded, c.seedsNeeded);
+  if (undecided > 0) {
+    std::cout << fmt::format(
+        "note: {} comparisons are undecided: with so few seeds no difference can reach p < {}; "
+        "run at least {} seeds per method (--seeds {})\n",
+        undecided, records::kSignificance, seedsNeeded, seedsNeeded);
   }
   std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
 }

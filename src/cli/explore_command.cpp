@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "reports/explorer/explorer_page.h"
 #include "util/input_error.h"
+#include "util/protected_files.h"
 
 namespace camcov::cli {
 namespace {
@@ -23,6 +24,8 @@ int explore(const ExploreOptions& o) {
   if (std::filesystem::path(o.out).extension() != ".html") {
     throw InputError(o.out + ": the explorer is an HTML page; name it *.html");
   }
+  for (const std::string& run : o.runs)
+    ProtectedFiles::protect(run);  // the page never replaces a run it shows
   reports::explorer::writeExplorer({o.runs.begin(), o.runs.end()}, o.out, o.scene);
   std::cout << fmt::format("wrote {}\n", o.out);
   return 0;

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "import/ethucy_reader.h"
 #include "import/lastrow_reader.h"
 #include "import/scene_builder.h"
@@ -56,8 +57,6 @@ void resolveCommonOptions(ImportOptions& o) {
 
 int importLastRow(ImportOptions o) {
   resolveCommonOptions(o);
-  if (o.pitch.size() != 2 || o.pitch[0] <= 0.0 || o.pitch[1] <= 0.0)
-    throw InputError("--pitch L,W: two positive lengths in metres, e.g. 105,68");
   const std::map<std::string, import::BallAs> balls{{"none", import::BallAs::None},
                                                     {"target", import::BallAs::Target},
                                                     {"obstacle", import::BallAs::Obstacle}};
@@ -77,36 +76,38 @@ int importEthUcy(ImportOptions o) {
 void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
   cmd.add_option("--out,-o", o.out, "scene file to write (.json)")->required();
   cmd.add_option("--from", o.scene.from, "start of the window, s from the recording's start")
+      ->check(within(0.0, 1e9))
       ->capture_default_str();
   cmd.add_option("--to", o.scene.to,
-                 "end of the window, s from the recording's start (default: the end)");
+                 "end of the window, s from the recording's start (default: the end)")
+      ->check(within(0.0, 1e9, false));
   cmd.add_option("--busiest", o.scene.busiest,
                  "instead of --from/--to: the window of this many seconds with the most people "
                  "present on average")
-      ->check(CLI::PositiveNumber);
+      ->check(within(0.0, 1e6, false));
   cmd.add_option("--cameras", o.scene.cameras, "cameras, spread along the boundary facing in")
-      ->check(CLI::Range(1, 64))
+      ->check(within(1, 64))
       ->capture_default_str();
   cmd.add_option("--cameras-from", o.camerasFrom,
                  "camera poses instead: JSON list [{\"x\":..,\"y\":..,\"yaw_deg\":..}]")
       ->check(CLI::ExistingFile);
   cmd.add_option("--camera-speed", o.scene.cameraSpeed, "v_max of every camera, m/s")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e3, false))
       ->capture_default_str();
   cmd.add_option("--camera-turn", o.scene.cameraTurnRate,
                  "angular speed limit of every camera, rad/s")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e3, false))
       ->capture_default_str();
   cmd.add_option("--fov", o.scene.cameraHalfFovDeg, "half-angle field of view θ, degrees")
-      ->check(CLI::Range(0.1, 179.9))
+      ->check(within(0.1, 179.9))
       ->capture_default_str();
   cmd.add_option("--max-gap", o.scene.maxGap,
                  "a track that vanishes for longer comes back as a new target, s")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e6, false))
       ->capture_default_str();
   cmd.add_option("--margin", o.scene.margin,
                  "boundary beyond the tracks and walls (the pitch's run-off), m")
-      ->check(CLI::NonNegativeNumber)
+      ->check(within(0.0, 1e4))
       ->capture_default_str();
   cmd.add_option("--description", o.scene.description, "the scene's description");
 }
@@ -128,12 +129,13 @@ Registration addImportCommand(CLI::App& app) {
       ->capture_default_str();
   l->add_option("--pitch", lastrow->pitch, "pitch length,width in m (x and y run 0-100 across it)")
       ->delimiter(',')
-      ->expected(2);
+      ->expected(2)
+      ->check(within(1.0, 1e4));
   l->add_option("--rate", lastrow->rate, "frames per second of the file")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e4, false))
       ->capture_default_str();
   l->add_option("--radius", lastrow->scene.personRadius, "player disc radius, m")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e2, false))
       ->capture_default_str();
   lastrow->scene.margin = 5.0;
   addSceneOptions(*l, *lastrow);
@@ -148,13 +150,13 @@ Registration addImportCommand(CLI::App& app) {
        "--fps", ethucy->fps,
        "video frames per second of the recording (eth_univ 15, eth_hotel and ucy_zara01 25)")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(within(0.0, 1e4, false));
   e->add_option("--radius", ethucy->scene.personRadius, "pedestrian disc radius, m")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e2, false))
       ->capture_default_str();
   e->add_option("--wall-thickness", ethucy->scene.wallThickness,
                 "walls of map.xml as obstacles this thick, m")
-      ->check(CLI::PositiveNumber)
+      ->check(within(0.0, 1e2, false))
       ->capture_default_str();
   addSceneOptions(*e, *ethucy);
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/parameter_options.h"
 #include "kinematics/kinematics.h"
 #include "records/atomic_file.h"
@@ -126,7 +127,7 @@ Registration addInspectCommand(CLI::App& app) {
       "one camera's sweep drawn for debugging");
   auto o = std::make_shared<InspectOptions>();
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
-  cmd->add_option("--time,-t", o->time, "time t in seconds")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--time,-t", o->time, "time t in seconds")->check(within(0.0, 1e9));
   cmd->add_option("--cameras", o->camerasFile,
                   "JSON list of poses [{\"x\":..,\"y\":..,\"yaw_deg\":..}] (default: the scene's "
                   "initial cameras)");

@@ -6,6 +6,7 @@
 
 #include "camcov/version.h"
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "util/input_error.h"
 
 namespace camcov::cli {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
       cli::addReportCommand(app),   cli::addExploreCommand(app), cli::addImportCommand(app),
       cli::addGenerateCommand(app), cli::addOptimumCommand(app),
   };
+  cli::guardNumericOptions(app);
   cli::setInvocation(argc, argv);
   try {
     app.parse(argc, argv);

@@ -7,6 +7,7 @@
 #include "batch/merge.h"
 #include "cli/bench_outputs.h"
 #include "cli/command.h"
+#include "records/atomic_file.h"
 
 namespace camcov::cli {
 namespace {
@@ -20,9 +21,12 @@ struct MergeOptions {
 int merge(const MergeOptions& o) {
   o.outputs.check();  // a bad --videos or --explorer fails before anything is copied
   const records::BatchFolder target(o.out);
+  records::NewFolderGuard created(target.root());
   const records::BatchManifest manifest = batch::mergeFolders(o.inputs, target, invocation());
-  return writeBenchOutputs(target, manifest, target.allJobs(), o.outputs,
-                           std::max(1u, std::thread::hardware_concurrency()));
+  const int status = writeBenchOutputs(target, manifest, target.allJobs(), o.outputs,
+                                       std::max(1u, std::thread::hardware_concurrency()));
+  created.keep();
+  return status;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "batch/scene_optimum.h"
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/parameter_options.h"
 #include "records/atomic_file.h"
 #include "records/optimum_file.h"
@@ -60,11 +61,11 @@ Registration addOptimumCommand(CLI::App& app) {
   cmd->add_option("--budget", o->budget,
                   "reward evaluations to spend (rounds of Algorithm 2 with K samples per camera, "
                   "each improved camera by camera until it stops improving)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->check(within(1, 0x1p40))
       ->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "random seed of the search")->capture_default_str();
   cmd->add_option("--time", o->time, "the instant to optimize, s")
-      ->check(CLI::Range(0.0, 1e6))
+      ->check(within(0.0, 1e6))
       ->capture_default_str();
   cmd->add_option("--out,-o", o->out, "write the result here (JSON)");
   cmd->add_option("--poses", o->poses,

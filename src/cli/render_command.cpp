@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
 #include "viz/frame.h"
@@ -55,15 +56,15 @@ Registration addRenderCommand(CLI::App& app) {
       "render", "Draw one frame of a scene at time t: visibility, views, paths (PNG or SVG)");
   auto o = std::make_shared<RenderOptions>();
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
-  cmd->add_option("--time,-t", o->time, "time t in seconds")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--time,-t", o->time, "time t in seconds")->check(within(0.0, 1e9));
   cmd->add_option("--cameras", o->camerasFile,
                   "JSON list of poses [{\"x\":..,\"y\":..,\"yaw_deg\":..}] (default: the scene's "
                   "initial cameras)");
   cmd->add_option("--width", o->width, "frame width, px")
-      ->check(CLI::Range(16, 8192))
+      ->check(within(16, 8192))
       ->capture_default_str();
   cmd->add_option("--height", o->height, "frame height, px")
-      ->check(CLI::Range(16, 8192))
+      ->check(within(16, 8192))
       ->capture_default_str();
   cmd->add_option("--out,-o", o->out, "image file: .png or .svg")->required();
   return {cmd, [o] { return render(*o); }};

@@ -7,6 +7,7 @@
 
 #include "batch/run_job.h"
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/parameter_options.h"
 #include "control/methods.h"
 #include "records/run_files.h"
@@ -63,12 +64,12 @@ Registration addRunCommand(CLI::App& app) {
   cmd->add_option("--method,-m", o->method, "one of: " + names)->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "random seed of the run")->capture_default_str();
   cmd->add_option("--duration", o->duration, "simulated seconds (default: sim.duration, 30 s)")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(within(0.0, 1e6));
   cmd->add_option("--out,-o", o->out, "folder for the results files")->capture_default_str();
   cmd->add_option("--video", o->video, "also write the run's video (MP4, 1280x720)");
   cmd->add_option("--threads,-t", o->threads,
                   "threads for the run's own work (the same results with any number)")
-      ->check(CLI::Range(1u, 256u))
+      ->check(within(1, 256))
       ->capture_default_str();
   o->parameters.addTo(*cmd);
   return {cmd, [o] { return run(*o); }};

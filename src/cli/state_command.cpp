@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "geometry/vec2.h"
 #include "kinematics/kinematics.h"
 #include "scene/scene_loader.h"
@@ -36,7 +37,7 @@ Registration addStateCommand(CLI::App& app) {
   auto file = std::make_shared<std::string>();
   auto time = std::make_shared<double>(0.0);
   cmd->add_option("file", *file, "scene file (JSON)")->required();
-  cmd->add_option("--time,-t", *time, "time t in seconds")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--time,-t", *time, "time t in seconds")->check(within(0.0, 1e9));
   return {cmd, [file, time] {
             const scene::Scene s = scene::loadScene(*file);
             const kinematics::Kinematics kin(s);

@@ -7,8 +7,10 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "records/run_files.h"
 #include "util/input_error.h"
+#include "util/protected_files.h"
 #include "viz/run_replay.h"
 #include "viz/video_encoder.h"
 
@@ -30,6 +32,7 @@ int video(const VideoOptions& o) {
     throw InputError(
         fmt::format("--width {} --height {}: H.264 (yuv420p) needs even sizes", o.width, o.height));
   }
+  ProtectedFiles::protect(o.results);  // the video never replaces the run it shows
   const records::RunRecord run = records::loadRunFile(o.results);
   const viz::RunScene scene = viz::loadRunScene(run.metadata, o.scene);
   if (scene.changed) {
@@ -57,12 +60,12 @@ Registration addVideoCommand(CLI::App& app) {
   cmd->add_option("--fps", o->fps,
                   "frames per second (default: one frame per recorded step, 10 for dt = 0.1 s); "
                   "steps are held or skipped to match")
-      ->check(CLI::Range(1, 240));
+      ->check(within(1, 240));
   cmd->add_option("--width", o->width, "frame width, px (even)")
-      ->check(CLI::Range(16, 8192))
+      ->check(within(16, 8192))
       ->capture_default_str();
   cmd->add_option("--height", o->height, "frame height, px (even)")
-      ->check(CLI::Range(16, 8192))
+      ->check(within(16, 8192))
       ->capture_default_str();
   cmd->add_option("--scene", o->scene,
                   "scene file, if it is no longer where the run's metadata says");

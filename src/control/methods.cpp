@@ -22,7 +22,7 @@ std::vector<Method>& table() {
       {"local", "local optimization", "#1f77b4", Role::baseline,
        [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
            -> std::unique_ptr<Controller> { return std::make_unique<LocalController>(s, p); }},
-      {"camcov", "ours (paper's loop: judged over a horizon, compass search)", "#9467bd",
+      {"camcov", "camcov (paper's loop: judged over a horizon, compass search)", "#9467bd",
        Role::method,
        [](const scene::Scene& s, const params::Parameters& p,
           std::uint64_t seed) -> std::unique_ptr<Controller> {

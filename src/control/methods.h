@@ -39,6 +39,10 @@ struct Method {
   std::string color;        // CSS colour in every figure (the paper's Fig. 4 colours)
   Role role = Role::method;
   MakeController make;
+  // What makes its results, for a batch's resume: empty for a method compiled into this build
+  // (its identity is the build's code, util/code_identity.h); a fingerprint of the code for a
+  // method brought from elsewhere (Python's).
+  std::string identity = {};
 };
 
 // Every method: the built-in rows in order, then registered ones in registration order.

@@ -95,7 +95,11 @@ void readMap(const std::string& file, Recording& recording) {
       const auto attrs = attributes(tag.substr(n), where);
       const auto number = [&](const char* key) {
         for (const auto& [k, v] : attrs)
-          if (k == key) return parseNumber(v, where, fmt::format("<{}> {}", name, key));
+          if (k == key) {
+            const bool length = std::string_view(key) == "radius";
+            return parseNumber(v, where, fmt::format("<{}> {}", name, key),
+                               length ? kLength : kPosition);
+          }
         throw InputError(fmt::format("{}<{}> has no {}", where.prefix(), name, key));
       };
       if (name == "Line") {
@@ -141,9 +145,11 @@ Recording readEthUcy(const std::string& folder, double fps) {
                                    where.prefix(), f.size()));
     }
     const char* names[] = {"frame", "id", "x", "z", "y", "vx", "vz", "vy"};
+    const Limits limits[] = {kFrameNumber, kFrameNumber, kPosition,  kPosition,
+                             kPosition,    kAnyNumber,   kAnyNumber, kAnyNumber};
     double v[8];
     for (int k = 0; k < 8; ++k)
-      v[k] = parseNumber(f[static_cast<std::size_t>(k)], where, names[k]);
+      v[k] = parseNumber(f[static_cast<std::size_t>(k)], where, names[k], limits[k]);
     if (v[1] != std::floor(v[1]))
       throw InputError(fmt::format("{}id {} is not a whole number", where.prefix(), v[1]));
     rows.push_back({v[0], fmt::format("{}", static_cast<long long>(v[1])), {v[2], v[4]}, i + 1});

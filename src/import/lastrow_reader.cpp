@@ -10,6 +10,7 @@
 #include "import/text_fields.h"
 #include "import/track_collector.h"
 #include "util/input_error.h"
+#include "util/person_numbers.h"
 
 namespace camcov::import {
 
@@ -62,16 +63,22 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) 
     if (lines[i].empty()) continue;
     const Where where{file, i + 1};
     const std::vector<std::string> f = splitCsv(lines[i], where);
-    if (f.size() < header.size()) {
+    if (f.size() != header.size()) {
       throw InputError(
           fmt::format("{}{} fields, the header has {}", where.prefix(), f.size(), header.size()));
     }
     const std::string id = f[static_cast<std::size_t>(player)];
-    if (id.empty()) throw InputError(where.prefix() + "column player is empty");
-    const double t = parseNumber(f[static_cast<std::size_t>(frame)], where, "column frame") / rate;
+    if (!parseCount(id)) {
+      throw InputError(fmt::format("{}column player: \"{}\" is not an id (a whole number)",
+                                   where.prefix(), printable(id)));
+    }
+    const double t =
+        parseNumber(f[static_cast<std::size_t>(frame)], where, "column frame", kFrameNumber) / rate;
     const geometry::Vec2 p{
-        parseNumber(f[static_cast<std::size_t>(x)], where, "column x") * pitch.length / 100.0,
-        parseNumber(f[static_cast<std::size_t>(y)], where, "column y") * pitch.width / 100.0};
+        parseNumber(f[static_cast<std::size_t>(x)], where, "column x", kPosition) * pitch.length /
+            100.0,
+        parseNumber(f[static_cast<std::size_t>(y)], where, "column y", kPosition) * pitch.width /
+            100.0};
     const bool ball = team < 0 || f[static_cast<std::size_t>(team)].empty();
     std::string hex;
     if (!ball && colour >= 0) {

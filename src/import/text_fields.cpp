@@ -5,9 +5,11 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
+#include "util/person_numbers.h"
 
 namespace camcov::import {
 
@@ -15,21 +17,33 @@ std::string Where::prefix() const {
   return line == 0 ? file + ": " : fmt::format("{}:{}: ", file, line);
 }
 
-double parseNumber(std::string_view text, const Where& where, std::string_view what) {
+double parseNumber(std::string_view text, const Where& where, std::string_view what,
+                   Limits limits) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
     text.remove_prefix(1);
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
     text.remove_suffix(1);
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-    throw InputError(fmt::format("{}{}: \"{}\" is not a number", where.prefix(), what, text));
-  }
-  if (!std::isfinite(value)) {
+  const auto value = parseFiniteNumber(text);
+  if (!value) {
     throw InputError(
-        fmt::format("{}{}: \"{}\" is not a finite number", where.prefix(), what, text));
+        fmt::format("{}{}: \"{}\" is not a finite number", where.prefix(), what, printable(text)));
   }
-  return value;
+  if (!withinRange(*value, limits.lo, limits.hi)) {
+    throw InputError(fmt::format("{}{}: {} is outside {}", where.prefix(), what,
+                                 readableNumber(*value), rangeText(limits.lo, limits.hi)));
+  }
+  return *value;
+}
+
+std::string printable(std::string_view text) {
+  constexpr std::size_t kShown = 40;
+  std::string out;
+  for (const char c : text.substr(0, kShown)) {
+    const auto u = static_cast<unsigned char>(c);
+    out += (u < 0x20 || u == 0x7f) ? fmt::format("\\x{:02x}", u) : std::string(1, c);
+  }
+  if (text.size() > kShown) out += "…";
+  return out;
 }
 
 std::vector<std::string> splitCsv(std::string_view line, const Where& where) {
@@ -73,14 +87,12 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
 }
 
 std::vector<std::string> readLines(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file + ": cannot open the file");
+  std::istringstream in(readInputFile(file));
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     lines.push_back(std::move(line));
   }
-  if (in.bad()) throw InputError(file + ": cannot read the file");
   return lines;
 }
 

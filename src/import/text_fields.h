@@ -13,8 +13,25 @@ struct Where {
   std::string prefix() const;  // "FILE:LINE: " or "FILE: "
 };
 
-// A finite number, or InputError naming `what` ("column x") and the text.
-double parseNumber(std::string_view text, const Where& where, std::string_view what);
+// What a track file's number may be. Positions are bounded so that a scene built around them
+// (with its margin, ≤ 1e4 m) stays within the scene format's ±1e9 m; times so that a window
+// of the recording is a simulated duration.
+struct Limits {
+  double lo, hi;
+};
+inline constexpr Limits kAnyNumber{-1e300, 1e300};
+inline constexpr Limits kPosition{-1e6, 1e6};       // m
+inline constexpr Limits kFrameNumber{-1e12, 1e12};  // frames, before dividing by the rate
+inline constexpr Limits kLength{0.0, 1e6};          // m
+
+// A finite number within `limits`, or InputError naming the place, `what` ("column x"), the
+// text and the range.
+double parseNumber(std::string_view text, const Where& where, std::string_view what,
+                   Limits limits = kAnyNumber);
+
+// `text` fit to quote in a message: control bytes as \xNN, at most 40 characters shown (a
+// binary file's bytes never reach the terminal raw).
+std::string printable(std::string_view text);
 
 // The fields of one CSV line (RFC 4180: commas, fields in double quotes may hold commas and
 // doubled quotes). InputError for an unterminated quote.

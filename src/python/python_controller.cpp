@@ -1,5 +1,7 @@
 #include "python/python_controller.h"
 
+#include <pybind11/eval.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -83,18 +85,73 @@ void PythonController::takeEvents(std::vector<control::ControlEvent>& out) {
   events_.clear();
 }
 
+namespace {
+
+// What makes a Python method's results, as a batch records it: a hash of the whole source file
+// that defines the factory (its helpers and constants change results too), or of the
+// factory's own source where it has no file (a notebook cell), or of its bytecode where there
+// is no source at all, and the version its author may set as the factory's `version`.
+constexpr const char* kFingerprint = R"py(
+def fingerprint(factory):
+    import functools, hashlib, inspect, marshal, os
+    f = inspect.unwrap(factory)
+    while isinstance(f, functools.partial):
+        f = f.func
+    if not (inspect.isfunction(f) or inspect.ismethod(f) or inspect.isclass(f)):
+        f = type(f)  # a callable object: its class holds the code
+    digest = hashlib.sha256()
+    try:
+        path = inspect.getsourcefile(f)
+    except TypeError:
+        path = None
+    if path and os.path.isfile(path):
+        with open(path, "rb") as source:
+            digest.update(source.read())
+    else:
+        try:
+            digest.update(inspect.getsource(f).encode())
+        except (OSError, TypeError):
+            code = getattr(f, "__code__", None)
+            digest.update(marshal.dumps(code) if code is not None else f.__qualname__.encode())
+    version = getattr(factory, "version", None)
+    return "python " + digest.hexdigest()[:16] + ("" if version is None else f" version {version}")
+)py";
+
+std::string fingerprintOf(const py::object& factory) {
+  static const py::object fingerprint = [] {
+    py::dict scope;
+    py::exec(kFingerprint, scope);
+    return py::object(scope["fingerprint"]);
+  }();
+  return py::str(fingerprint(factory));
+}
+
+// The factory's attribute `name` as text, or `otherwise`.
+std::string attributeOr(const py::object& factory, const char* name, std::string otherwise) {
+  const py::object value = py::getattr(factory, name, py::none());
+  return value.is_none() ? otherwise : std::string(py::str(value));
+}
+
+}  // namespace
+
 control::Method pythonMethod(const std::string& name, py::object factory) {
   if (!control::isMethodName(name))
     throw InputError("method name '" + name + "': use lowercase letters, digits and '-'");
   if (control::findMethod(name) != nullptr)
     throw InputError("method name '" + name + "' is a built-in method's");
+  const std::string description = attributeOr(factory, "description", name + " (Python)");
+  const std::string color = attributeOr(factory, "color", "");
+  const std::string identity = fingerprintOf(factory);
   // Copies of the method share the factory; the last one lets it go with the GIL.
   const std::shared_ptr<py::object> shared(new py::object(std::move(factory)), [](py::object* f) {
     py::gil_scoped_acquire gil;
     delete f;
   });
   return {
-      name, name + " (Python)", "", control::Role::method,
+      name,
+      description,
+      color,
+      control::Role::method,
       [shared](const scene::Scene& s, const params::Parameters& p,
                std::uint64_t seed) -> std::unique_ptr<control::Controller> {
         py::gil_scoped_acquire gil;
@@ -104,7 +161,8 @@ control::Method pythonMethod(const std::string& name, py::object factory) {
         } catch (const py::error_already_set& e) {
           throw std::runtime_error(std::string("Python controller factory: ") + e.what());
         }
-      }};
+      },
+      identity};
 }
 
 }  // namespace camcov::python

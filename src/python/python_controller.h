@@ -53,7 +53,9 @@ class PythonController final : public control::Controller {
 
 // A method whose controllers `factory(scene, params, seed)` makes (a camcov.Scene, the run's
 // parameters as camcov.parameters() gives them, and its seed; returning a callable as above),
-// for camcov.bench. InputError for a bad name.
+// for camcov.bench. The factory may carry `description` and `color` (for legends and tables,
+// like a C++ method's) and `version`; the method's identity is a fingerprint of its code and
+// that version (a resume with changed code is refused). InputError for a bad name.
 control::Method pythonMethod(const std::string& name, py::object factory);
 
 }  // namespace camcov::python

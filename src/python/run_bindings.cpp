@@ -28,11 +28,21 @@ records::RunRecord runWithoutGil(const batch::JobSpec& job) {
   return batch::runJob(job);
 }
 
-// A batch's progress: nothing on the way (a notebook has no progress line), failures at the end.
+// A batch's progress: nothing on the way (a notebook has no progress line) but what was
+// reused from the folder, as the CLI says it, on sys.stderr.
 class Quiet final : public batch::BatchObserver {
  public:
-  void resuming(std::size_t, std::size_t) override {}
+  explicit Quiet(std::string folder) : folder_(std::move(folder)) {}
+  void resuming(const batch::Resumption& r) override {
+    if (r.alreadyDone == 0) return;
+    const py::gil_scoped_acquire gil;
+    py::module_::import("sys").attr("stderr").attr("write")(batch::describeResumption(r, folder_) +
+                                                            "\n");
+  }
   void finished(const batch::BatchJob&, const records::JobOutcome&) override {}
+
+ private:
+  std::string folder_;
 };
 
 void bindObservation(py::module_& m) {
@@ -147,16 +157,20 @@ void bindRuns(py::module_& m) {
         outputs.reference = reference;
         outputs.check();
         outputs.referenceAmong(names);
-        batch::BatchRequest request{scenes, names,      seeds,  parametersFrom(params),
-                                    {},     {"python"}, brought};
-        const batch::BatchPlan plan = batch::planBatch(request, kVersion);
+        // What ran it, for batch.json and the report: the script and its arguments.
+        std::vector<std::string> command{"python"};
+        for (const auto& arg : py::module_::import("sys").attr("argv"))
+          command.push_back(py::str(arg));
+        batch::BatchRequest request{scenes, names,   seeds,  parametersFrom(params),
+                                    {},     command, brought};
+        batch::BatchPlan plan = batch::planBatch(request, kVersion);
         const records::BatchFolder folder(out);
         {
           py::gil_scoped_release free;
           batch::prepareFolder(folder, plan.manifest, force);
           const unsigned workers =
               jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
-          Quiet quiet;
+          Quiet quiet(out);
           const batch::BatchRun run = batch::runBatch(plan.jobs, folder, workers, quiet);
           cli::writeBenchOutputs(folder, plan.manifest, run.outcomes, outputs, workers);
         }

@@ -1,6 +1,7 @@
 #include "records/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "util/input_error.h"
+#include "util/protected_files.h"
 
 namespace camcov::records {
 
@@ -25,7 +27,19 @@ constexpr std::string_view kTemporaryMarker = ".tmp-";
 
 }  // namespace
 
-void createParentFolder(const std::filesystem::path& file) {
+void prepareOutputFile(const std::filesystem::path& file) {
+  struct stat s {};
+  if (::stat(file.c_str(), &s) == 0) {
+    if (S_ISDIR(s.st_mode)) throw InputError(file.string() + ": is a folder; name a file to write");
+    if (!S_ISREG(s.st_mode)) {
+      throw InputError(file.string() +
+                       ": is not a regular file (a FIFO, device or socket); camcov writes only "
+                       "regular files");
+    }
+    if (ProtectedFiles::isProtected(file)) {
+      throw InputError(file.string() + ": is an input of this command; write the output elsewhere");
+    }
+  }
   if (!file.has_parent_path()) return;
   std::error_code ec;
   std::filesystem::create_directories(file.parent_path(), ec);
@@ -34,7 +48,7 @@ void createParentFolder(const std::filesystem::path& file) {
 }
 
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
-  createParentFolder(file);
+  prepareOutputFile(file);
   const std::filesystem::path temporary =
       file.string() + std::string(kTemporaryMarker) + std::to_string(::getpid());
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -69,6 +83,15 @@ void copyFileAtomically(const std::filesystem::path& from, const std::filesystem
   std::ostringstream content;
   content << in.rdbuf();
   writeFileAtomically(to, content.str());
+}
+
+NewFolderGuard::NewFolderGuard(std::filesystem::path folder)
+    : folder_(std::move(folder)), new_(!std::filesystem::exists(folder_)) {}
+
+NewFolderGuard::~NewFolderGuard() {
+  if (!new_) return;
+  std::error_code ec;
+  std::filesystem::remove_all(folder_, ec);
 }
 
 bool isTemporaryFile(const std::filesystem::path& file) {

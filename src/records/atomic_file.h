@@ -7,17 +7,37 @@
 
 namespace camcov::records {
 
-// Creates the folder `file` goes in, and its parents, if missing. InputError if it cannot
-// (e.g. a parent is a file). Files written other than through writeFileAtomically (videos)
-// use it too, so every output of the tool gets its folder the same way.
-void createParentFolder(const std::filesystem::path& file);
+// Gets `file` ready to be written: InputError if it is a folder, anything but a regular file
+// (a FIFO, a device such as /dev/null, a socket: renaming over one would replace it), or a
+// file this process read as its input (util/protected_files.h); else creates the folder it
+// goes in, and its parents, if missing (InputError if it cannot, e.g. a parent is a file).
+// Files written other than through writeFileAtomically (videos) call it too, so every output
+// of the tool is checked the same way.
+void prepareOutputFile(const std::filesystem::path& file);
 
-// Throws InputError if the folder cannot be created or written (a bad --out), and
-// std::runtime_error for failures while writing (e.g. the disk is full).
+// Throws InputError if the target is refused (prepareOutputFile) or the folder cannot be
+// created or written (a bad --out), and std::runtime_error for failures while writing (e.g.
+// the disk is full).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
 
 // The same for a copy of `from` (InputError if it cannot be read).
 void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// A command that fails leaves behind no folder it created: constructed before the command
+// writes into `folder`, it removes the folder on destruction unless the folder existed before
+// or keep() was called (once the command has succeeded, or has written what must stay).
+class NewFolderGuard {
+ public:
+  explicit NewFolderGuard(std::filesystem::path folder);
+  ~NewFolderGuard();
+  NewFolderGuard(const NewFolderGuard&) = delete;
+  NewFolderGuard& operator=(const NewFolderGuard&) = delete;
+  void keep() { new_ = false; }
+
+ private:
+  std::filesystem::path folder_;
+  bool new_;
+};
 
 // Is this a temporary file that writeFileAtomically left behind when it was killed?
 bool isTemporaryFile(const std::filesystem::path& file);

@@ -41,6 +41,7 @@ nlohmann::json manifestToJson(const BatchManifest& m) {
           {"toolVersion", m.toolVersion},
           {"parameters", params::toJson(m.parameters)},
           {"methods", m.methods},
+          {"methodIdentities", m.methodIdentities},
           {"seeds", m.seeds},
           {"scenes", scenes},
           {"command", m.command}};
@@ -54,6 +55,7 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
     m.toolVersion = j.at("toolVersion").get<std::string>();
     m.parameters = params::fromJson(j.at("parameters"), source);
     m.methods = j.at("methods").get<std::vector<std::string>>();
+    m.methodIdentities = j.value("methodIdentities", std::map<std::string, std::string>{});
     m.seeds = j.at("seeds").get<std::uint64_t>();
     for (const auto& s : j.at("scenes")) {
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),
@@ -116,6 +118,29 @@ void BatchFolder::writeFailure(const std::string& stem, const JobOutcome& o) con
 void BatchFolder::removeFailure(const std::string& stem) const {
   std::error_code ec;
   fs::remove(errorFile(stem), ec);
+}
+
+void BatchFolder::removeJobsOf(const std::string& method) const {
+  // By what each file says it holds: a file name cannot tell "a-b" of method "b" from
+  // scene "a" of method "b-…".
+  std::error_code ec;
+  std::vector<fs::path> doomed;
+  for (const auto& entry : fs::directory_iterator(runsDir(), ec)) {
+    if (entry.path().extension() != ".json") continue;
+    std::optional<nlohmann::json> j;
+    try {
+      j = readJson(entry.path());
+    } catch (const InputError&) {
+      continue;  // not ours to judge: a damaged file is run again by its own job
+    }
+    if (j && j->is_object() && j->value("method", "") == method) {
+      doomed.push_back(entry.path());
+      if (entry.path().stem().extension() != ".error")
+        doomed.push_back(fs::path(entry.path()).replace_extension(".csv"));
+    }
+  }
+  for (const auto& file : doomed)
+    fs::remove(file, ec);
 }
 
 std::vector<JobOutcome> BatchFolder::allJobs() const {

@@ -31,6 +31,10 @@ struct BatchManifest {
   std::string toolVersion;
   params::Parameters parameters;
   std::vector<std::string> methods;
+  // Per method, what made its results ("c++ <code identity>", "python <fingerprint>"): a
+  // resume with other code is refused like one with other parameters. Empty in folders
+  // written before methods had identities.
+  std::map<std::string, std::string> methodIdentities;
   std::uint64_t seeds = 0;  // seeds 1..seeds
   std::vector<SceneEntry> scenes;
   std::vector<std::string> command;  // argv, for the report's header
@@ -69,6 +73,9 @@ class BatchFolder {
                                         std::uint64_t sceneHash) const;
   void writeFailure(const std::string& stem, const JobOutcome& outcome) const;
   void removeFailure(const std::string& stem) const;
+  // Removes the results and failures of every job of `method` (the files named
+  // <scene>-<method>-seed<N>.*), so a method whose code changed is run again whole.
+  void removeJobsOf(const std::string& method) const;
   // Every run and failure found in runs/ (for merging).
   std::vector<JobOutcome> allJobs() const;
 

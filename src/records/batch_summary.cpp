@@ -21,6 +21,40 @@ nlohmann::json describeJson(const Description& d) {
           {"q1", d.q1},       {"median", d.median}, {"q3", d.q3}, {"max", d.max}};
 }
 
+nlohmann::json comparisonJson(const Comparison& c) {
+  nlohmann::json j = {
+      {"scene", c.scene},
+      {"method", c.method},
+      {"winner", c.winner},
+      {"pValue", c.pValue},
+      {"exactTest", c.exact},
+      {"meanCoverageDifference", c.meanDifference},
+      {"a12", c.a12},
+      {"meanCoverageDifferenceCI",
+       {finiteOrNull(c.meanDifferenceCI.low), finiteOrNull(c.meanDifferenceCI.high)}}};
+  if (c.seedsNeeded > 0) j["seedsNeeded"] = c.seedsNeeded;
+  return j;
+}
+
+Comparison comparisonFrom(const nlohmann::json& c) {
+  Comparison out;
+  out.scene = c.at("scene").get<std::string>();
+  out.method = c.at("method").get<std::string>();
+  out.winner = c.at("winner").get<std::string>();
+  out.pValue = c.at("pValue").get<double>();
+  out.exact = c.at("exactTest").get<bool>();
+  out.meanDifference = c.at("meanCoverageDifference").get<double>();
+  // Summaries written before effect sizes and intervals have neither.
+  out.a12 = c.value("a12", 0.5);
+  if (const auto ci = c.find("meanCoverageDifferenceCI"); ci != c.end()) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    out.meanDifferenceCI = {ci->at(0).is_null() ? nan : ci->at(0).get<double>(),
+                            ci->at(1).is_null() ? nan : ci->at(1).get<double>()};
+  }
+  out.seedsNeeded = c.value("seedsNeeded", 0);
+  return out;
+}
+
 Description describedFrom(const nlohmann::json& j) {
   return {j.at("count").get<int>(),  j.at("mean").get<double>(), j.at("sd").get<double>(),
           j.at("min").get<double>(), j.at("q1").get<double>(),   j.at("median").get<double>(),
@@ -104,27 +138,23 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
   const auto compare = [](const std::string& scene, const std::string& method,
                           const std::string& against, const std::vector<double>& runs,
                           const std::vector<double>* others, Tally& tally) {
-    Comparison c{scene, method, "", 1.0, false, 0.0};
+    Comparison c;
+    c.scene = scene;
+    c.method = method;
     if (others == nullptr || others->empty() || runs.empty()) return c;
     const RunsComparison r = compareRuns(runs, *others);
     c.pValue = r.pValue;
     c.exact = r.exact;
     c.meanDifference = r.meanDifference;
+    c.a12 = r.a12;
+    c.meanDifferenceCI = r.meanDifferenceCI;
+    c.seedsNeeded = r.seedsNeeded;
     tally.method = method;
-    switch (r.verdict) {
-      case Verdict::Tie:
-        c.winner = "tie";
-        ++tally.ties;
-        break;
-      case Verdict::Better:
-        c.winner = method;
-        ++tally.wins;
-        break;
-      case Verdict::Worse:
-        c.winner = against;
-        ++tally.losses;
-        break;
-    }
+    c.winner = r.verdict == Verdict::Undecided ? "undecided"
+               : r.verdict == Verdict::Tie     ? "tie"
+               : r.verdict == Verdict::Better  ? method
+                                               : against;
+    count(tally, c, against);
     return c;
   };
   // The batch's order: a method's position in `order`, else after, by name.
@@ -175,15 +205,42 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
   return summary;
 }
 
+int seedsToReachSignificance() {
+  int n = 1;
+  while (smallestPValue(n, n) >= kSignificance)
+    ++n;
+  return n;
+}
+
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference) {
   const MannWhitney test = mannWhitneyU(runs, reference);
   RunsComparison c;
   c.pValue = test.pValue;
   c.exact = test.exact;
   c.meanDifference = describe(runs).mean - describe(reference).mean;
-  if (c.pValue < kSignificance && c.meanDifference != 0.0)
+  c.a12 = varghaDelaneyA12(runs, reference);
+  c.meanDifferenceCI = welchInterval(runs, reference);
+  const int n1 = static_cast<int>(runs.size()), n2 = static_cast<int>(reference.size());
+  if (smallestPValue(n1, n2) >= kSignificance) {
+    c.verdict = Verdict::Undecided;
+    c.seedsNeeded = seedsToReachSignificance();
+  } else if (c.pValue < kSignificance && std::abs(c.meanDifference) >= kPracticalDifference) {
     c.verdict = c.meanDifference > 0.0 ? Verdict::Better : Verdict::Worse;
+  }
   return c;
+}
+
+void count(Tally& tally, const Comparison& c, const std::string& against) {
+  tally.wins += c.winner == c.method;
+  tally.ties += c.winner == "tie";
+  tally.losses += c.winner == against;
+  tally.undecided += c.winner == "undecided";
+}
+
+std::string verdictText(const Comparison& c) {
+  if (c.winner.empty()) return "-";
+  if (c.seedsNeeded > 0) return fmt::format("{} ({} seeds)", c.winner, c.seedsNeeded);
+  return fmt::format("{} (p {:.3g})", c.winner, c.pValue);
 }
 
 const Comparison* BatchSummary::comparison(const std::string& scene,
@@ -223,28 +280,21 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
   j["reference"] = summary.reference;
   j["comparisons"] = nlohmann::json::array();
   for (const auto& c : summary.comparisons) {
-    j["comparisons"].push_back({{"scene", c.scene},
-                                {"method", c.method},
-                                {"winner", c.winner},
-                                {"pValue", c.pValue},
-                                {"exactTest", c.exact},
-                                {"meanCoverageDifference", c.meanDifference}});
+    j["comparisons"].push_back(comparisonJson(c));
   }
   j["totals"] = nlohmann::json::array();
   for (const auto& t : summary.tallies) {
-    j["totals"].push_back(
-        {{"method", t.method}, {"wins", t.wins}, {"ties", t.ties}, {"losses", t.losses}});
+    j["totals"].push_back({{"method", t.method},
+                           {"wins", t.wins},
+                           {"ties", t.ties},
+                           {"losses", t.losses},
+                           {"undecided", t.undecided}});
   }
   j["pairs"] = nlohmann::json::array();
   for (const auto& p : summary.pairs) {
-    const Comparison& c = p.comparison;
-    j["pairs"].push_back({{"scene", c.scene},
-                          {"method", c.method},
-                          {"against", p.against},
-                          {"winner", c.winner},
-                          {"pValue", c.pValue},
-                          {"exactTest", c.exact},
-                          {"meanCoverageDifference", c.meanDifference}});
+    nlohmann::json pair = comparisonJson(p.comparison);
+    pair["against"] = p.against;
+    j["pairs"].push_back(std::move(pair));
   }
   j["pairTotals"] = nlohmann::json::array();
   for (const auto& t : summary.pairTallies) {
@@ -252,7 +302,8 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                                {"against", t.against},
                                {"wins", t.wins},
                                {"ties", t.ties},
-                               {"losses", t.losses}});
+                               {"losses", t.losses},
+                               {"undecided", t.undecided}});
   }
   j["failures"] = nlohmann::json::array();
   for (const auto& f : summary.failures) {
@@ -270,21 +321,23 @@ std::string summaryToCsv(const BatchSummary& summary) {
       "mean_camera_collision_time,runs_with_collision,mean_avoidable_contact_time,"
       "mean_unavoidable_contact_time,runs_with_avoidable_contact,runs_with_unavoidable_contact,"
       "min_object_distance,min_camera_distance,median_seed,best_seed,compared_with,winner,p_"
-      "value\n";
+      "value,a12,mean_difference_ci_low,mean_difference_ci_high\n";
   for (const auto& m : summary.methods) {
-    // The reference's own row compares with nothing: its last three cells are empty.
+    // The reference's own row compares with nothing: its last six cells are empty.
     const Comparison* c = summary.comparison(m.scene, m.method);
     const auto& cv = m.coverage;
     const auto& ut = m.utilization;
     csv += fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},"
-        "{},{}\n",
+        "{},{},{},{},{}\n",
         m.scene, m.method, m.runs, m.failed, cv.mean, cv.sd, cv.min, cv.q1, cv.median, cv.q3,
         cv.max, ut.mean, ut.sd, ut.min, ut.q1, ut.median, ut.q3, ut.max, m.meanObjectCollisionTime,
         m.meanCameraCollisionTime, m.runsWithCollision, m.meanAvoidableContactTime,
         m.meanUnavoidableContactTime, m.runsWithAvoidableContact, m.runsWithUnavoidableContact,
         m.minObjectDistance, m.minCameraDistance, m.medianSeed, m.bestSeed,
-        c ? summary.reference : "", c ? c->winner : "", c ? fmt::format("{}", c->pValue) : "");
+        c ? summary.reference : "", c ? c->winner : "", c ? fmt::format("{}", c->pValue) : "",
+        c ? fmt::format("{}", c->a12) : "", c ? fmt::format("{}", c->meanDifferenceCI.low) : "",
+        c ? fmt::format("{}", c->meanDifferenceCI.high) : "");
   }
   return csv;
 }
@@ -319,28 +372,20 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
     }
     s.scenes = j.at("scenes").get<std::vector<std::string>>();
     s.reference = j.at("reference").get<std::string>();
-    for (const auto& c : j.at("comparisons")) {
-      s.comparisons.push_back({c.at("scene").get<std::string>(), c.at("method").get<std::string>(),
-                               c.at("winner").get<std::string>(), c.at("pValue").get<double>(),
-                               c.at("exactTest").get<bool>(),
-                               c.at("meanCoverageDifference").get<double>()});
-    }
+    for (const auto& c : j.at("comparisons"))
+      s.comparisons.push_back(comparisonFrom(c));
     for (const auto& t : j.at("totals")) {
       s.tallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
-                           t.at("ties").get<int>(), t.at("losses").get<int>(), ""});
+                           t.at("ties").get<int>(), t.at("losses").get<int>(), "",
+                           t.value("undecided", 0)});
     }
     // Summaries written before issue 19 have no pairs.
-    for (const auto& c : j.value("pairs", nlohmann::json::array())) {
-      s.pairs.push_back(
-          {c.at("against").get<std::string>(),
-           {c.at("scene").get<std::string>(), c.at("method").get<std::string>(),
-            c.at("winner").get<std::string>(), c.at("pValue").get<double>(),
-            c.at("exactTest").get<bool>(), c.at("meanCoverageDifference").get<double>()}});
-    }
+    for (const auto& c : j.value("pairs", nlohmann::json::array()))
+      s.pairs.push_back({c.at("against").get<std::string>(), comparisonFrom(c)});
     for (const auto& t : j.value("pairTotals", nlohmann::json::array())) {
       s.pairTallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
                                t.at("ties").get<int>(), t.at("losses").get<int>(),
-                               t.at("against").get<std::string>()});
+                               t.at("against").get<std::string>(), t.value("undecided", 0)});
     }
     for (const auto& f : j.at("failures")) {
       s.failures.push_back({f.at("scene").get<std::string>(),

@@ -52,38 +52,61 @@ struct MethodSummary {
   std::uint64_t bestSeed = 0;
 };
 
-inline constexpr double kSignificance = 0.05;
+// The verdict rule (docs/statistics.md), the one every table of camcov uses: on one scene,
+// one method's runs against another's, by their average coverage.
+//   undecided  the seed counts cannot reach α: even runs all above all others would give
+//              p ≥ α (3 seeds against 3: p ≥ 0.1); the verdict says how many seeds would do
+//   better / worse  the two-sided Mann-Whitney U test gives p < α AND the means differ by at
+//              least kPracticalDifference
+//   tie        otherwise: no evidence, or a difference too small to matter
+inline constexpr double kSignificance = 0.05;  // α
+// Average coverage is a fraction of the targets' boundary: a difference below 0.2 % of it is
+// below what any reader would act on (two methods at 0.99994 and 0.99995 tie), and below the
+// smallest significant difference on the published benchmark (0.004, 20 seeds).
+inline constexpr double kPracticalDifference = 0.002;
 
-// One method against another (the reference, or for pairs the other) on one scene: the
-// two-sided Mann-Whitney U test of their runs' average coverage.
-struct Comparison {
-  std::string scene;
-  std::string method;
-  std::string winner;  // the method, the other, "tie" (p >= α), or "" when either is missing
-  double pValue = 1.0;
-  bool exact = false;
-  double meanDifference = 0.0;  // mean coverage of the method minus the reference's
-};
-
-// One sample of runs' average coverage against a reference sample: the two-sided Mann-Whitney
-// U test and the verdict the summary and the report of settings both use. A difference counts
-// when p < kSignificance and the means differ; otherwise it is a tie.
-enum class Verdict { Better, Tie, Worse };
+enum class Verdict { Better, Tie, Worse, Undecided };
 struct RunsComparison {
   Verdict verdict = Verdict::Tie;
   double pValue = 1.0;
   bool exact = false;
   double meanDifference = 0.0;  // mean of the runs minus the reference's
+  double a12 = 0.5;             // Vargha–Delaney: P(a run above a reference run)
+  Interval meanDifferenceCI;    // 95 %, Welch; NaN with fewer than 2 runs on a side
+  int seedsNeeded = 0;          // undecided only: seeds per method that could reach α
 };
 // Both samples must be non-empty.
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
+
+// One method against another (the reference, or for pairs the other) on one scene.
+struct Comparison {
+  std::string scene;
+  std::string method;
+  // The method, the other, "tie", "undecided", or "" when either is missing.
+  std::string winner;
+  double pValue = 1.0;
+  bool exact = false;
+  double meanDifference = 0.0;  // mean coverage of the method minus the other's
+  double a12 = 0.5;
+  Interval meanDifferenceCI;
+  int seedsNeeded = 0;
+};
+
+// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided (4 seeds)",
+// or "-" when there was no comparison.
+std::string verdictText(const Comparison& c);
 
 // How one method fared against the reference (or `against`) over the scenes where both ran.
 struct Tally {
   std::string method;
   int wins = 0, ties = 0, losses = 0;
   std::string against;  // pairs only; the reference's tallies leave it empty
+  int undecided = 0;    // scenes with too few seeds to tell
 };
+
+// Counts comparison `c` of `c.method` against `against` in `tally`: a win, tie, loss or
+// undecided (nothing when `c` compared nothing).
+void count(Tally& tally, const Comparison& c, const std::string& against);
 
 // A comparison of two methods other than the reference, and its tally (BatchSummary::pairs).
 struct PairComparison {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
@@ -208,11 +209,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
 }
 
 RunRecord loadRunFile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open results file");
+  const std::string text = readWholeFile(file);
   nlohmann::json j;
   try {
-    in >> j;
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(file.string() + ": invalid JSON: " + e.what());
   }

@@ -1,7 +1,10 @@
 #include "records/statistics.h"
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -119,6 +122,31 @@ MannWhitney mannWhitneyU(std::span<const double> a, std::span<const double> b) {
   const double z = std::max(observed - 0.5, 0.0) / std::sqrt(variance);
   result.pValue = std::min(1.0, std::erfc(z / std::sqrt(2.0)));
   return result;
+}
+
+double smallestPValue(int n1, int n2) {
+  if (n1 == 0 || n2 == 0) return 1.0;
+  return std::min(1.0, 2.0 / binomial(n1 + n2, n1));
+}
+
+double varghaDelaneyA12(std::span<const double> a, std::span<const double> b) {
+  if (a.empty() || b.empty()) return 0.5;
+  return mannWhitneyU(a, b).u / (static_cast<double>(a.size()) * static_cast<double>(b.size()));
+}
+
+Interval welchInterval(std::span<const double> a, std::span<const double> b, double confidence) {
+  const Description da = describe(a), db = describe(b);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (da.count < 2 || db.count < 2) return {nan, nan};
+  const double difference = da.mean - db.mean;
+  const double va = da.sd * da.sd / da.count, vb = db.sd * db.sd / db.count;
+  const double se = std::sqrt(va + vb);
+  if (!(se > 0.0)) return {difference, difference};  // both samples constant
+  // Welch–Satterthwaite degrees of freedom.
+  const double df =
+      (va + vb) * (va + vb) / (va * va / (da.count - 1.0) + vb * vb / (db.count - 1.0));
+  const double t = boost::math::quantile(boost::math::students_t(df), 0.5 + 0.5 * confidence);
+  return {difference - t * se, difference + t * se};
 }
 
 }  // namespace camcov::records

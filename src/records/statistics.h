@@ -33,4 +33,22 @@ struct MannWhitney {
 MannWhitney mannWhitneyU(std::span<const double> a, std::span<const double> b);
 inline constexpr double kExactLimit = 200000;
 
+// The smallest two-sided p-value the U test can give for samples of n1 and n2 values, 2 /
+// C(n1 + n2, n1) (every value of one above every value of the other): with 3 seeds against
+// 3 it is 0.1, so no difference can be significant at 0.05 however large.
+double smallestPValue(int n1, int n2);
+
+// Vargha and Delaney's A₁₂ ("A critique and improvement of the CL common language effect size
+// statistics", J. Educ. Behav. Stat. 2000): the probability that a value of `a` is above one
+// of `b`, ties counting half; 0.5 is no effect, 0.71 and above (or 0.29 and below) large.
+double varghaDelaneyA12(std::span<const double> a, std::span<const double> b);
+
+// The two-sided 95 % confidence interval of mean(a) − mean(b) by Welch's t (no equal-variance
+// assumption). {NaN, NaN} when either sample has fewer than two values.
+struct Interval {
+  double low = 0.0, high = 0.0;
+};
+Interval welchInterval(std::span<const double> a, std::span<const double> b,
+                       double confidence = 0.95);
+
 }  // namespace camcov::records

@@ -17,10 +17,18 @@ constexpr int kMaxDepth = 60;
 
 }  // namespace
 
-double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling) {
+double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling, int maxSamples) {
   double best = std::min(g.f0, g.f1);
   std::vector<Interval> stack{{0.0, g.h, g.f0, g.f1, 0}};
-  while (!stack.empty()) {
+  for (int samples = 0; !stack.empty(); ++samples) {
+    if (samples == maxSamples) {
+      // Out of budget (a slope so steep that only ever finer intervals could decide): what
+      // is left can be no lower than its intervals' lower bounds, so the answer stays a
+      // lower bound of the minimum.
+      for (const Interval& i : stack)
+        best = std::min(best, 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a)));
+      return best;
+    }
     const Interval i = stack.back();
     stack.pop_back();
     const double lower = 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a));

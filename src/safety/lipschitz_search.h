@@ -18,9 +18,15 @@ struct Sampled {
 
 // The smallest value f takes on [0, h], as a value f attains within `tolerance` of the true
 // minimum. Intervals that cannot go below `ceiling` are not searched: with a finite ceiling
-// the result is exact only where it is below it.
+// the result is exact only where it is below it. The work is bounded whatever L is: where the
+// search runs out of `maxSamples`, the result is a lower bound of the minimum instead (it may
+// then be below zero for a distance).
+// The most samples one minimum search takes by default: a step of a run needs a few hundred
+// at most; an object turning at 1e9 rad/s would need about L·h / tolerance of them.
+inline constexpr int kMaxMinimumSamples = 1 << 16;
 double lipschitzMinimum(const Sampled& g, double tolerance,
-                        double ceiling = std::numeric_limits<double>::infinity());
+                        double ceiling = std::numeric_limits<double>::infinity(),
+                        int maxSamples = kMaxMinimumSamples);
 
 // The earliest τ with f(τ) < level, or −1 when f is proven ≥ level on all of [0, h]. An
 // interval still undecided at width h / 2^depth counts as below, as in timeBelow, so the

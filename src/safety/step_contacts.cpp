@@ -133,7 +133,7 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
   for (Pair& p : pairs) {
     double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
     if (lowerBound(p.distance) < best - kDistanceTolerance)
-      best = std::min(best, lipschitzMinimum(follow(p), kDistanceTolerance, best));
+      best = std::min(best, std::max(0.0, lipschitzMinimum(follow(p), kDistanceTolerance, best)));
   }
 
   // Contacts: only pairs that may come below δ take part.

@@ -14,9 +14,11 @@ inline constexpr std::size_t kMaxCameras = 64;
 
 // Bounds on magnitudes: far beyond any camera scene, and small enough that nothing computed
 // from them overflows (areas and orientation tests multiply coordinates; placing an object
-// multiplies speeds by times up to 1e9 s).
+// multiplies speeds by times up to 1e9 s) and that a run's work stays bounded (the continuous-
+// time distances search a step more finely the faster things move: 1e4 m/s costs a run about
+// twice the time of a walking pace).
 inline constexpr double kMaxCoordinate = 1e9;  // m, |x| and |y| of every WKT coordinate
-inline constexpr double kMaxSpeed = 1e9;       // m/s and rad/s, every velocity, either sign
+inline constexpr double kMaxSpeed = 1e4;       // m/s and rad/s, every velocity, either sign
 
 // Zero-length edges, zero area, self-intersections. Empty string for a simple polygon.
 std::string describeRingDefect(const geometry::Ring& ring);

@@ -6,6 +6,7 @@
 
 #include "batch/batch_plan.h"
 #include "batch/merge.h"
+#include "control/methods.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
 #include "util/input_error.h"
@@ -29,9 +30,9 @@ BatchRequest tinyRequest(std::uint64_t seeds = 2) {
 // Remembers what the batch told it.
 class Recorder final : public BatchObserver {
  public:
-  void resuming(std::size_t done, std::size_t total) override {
-    alreadyDone = done;
-    this->total = total;
+  void resuming(const Resumption& r) override {
+    alreadyDone = r.alreadyDone;
+    total = r.total;
   }
   void finished(const BatchJob& job, const records::JobOutcome&) override {
     ran.push_back(job.stem);
@@ -112,13 +113,76 @@ TEST(PrepareFolder, RefusesResultsOfOtherParametersUnlessForced) {
   EXPECT_NO_THROW(prepareFolder(folder, plan.manifest, true));
 }
 
+// A method brought for one batch (as Python brings its controllers), of a given code identity.
+control::Method brought(const std::string& identity) {
+  const control::Method& local = control::requireMethod("local");
+  return {"brought", "a brought method", "#000000", control::Role::method, local.make, identity};
+}
+
+TEST(PrepareFolder, ResultsOfAMethodWhoseCodeChangedAreRefusedOrWithForceRunAgain) {
+  const testing::ScratchDir dir;
+  const records::BatchFolder folder(dir / "out");
+  const std::vector<control::Method> before{brought("python 1111")};
+  BatchRequest r = tinyRequest(1);
+  r.methods = {"local", "brought"};
+  r.extraMethods = before;
+  BatchPlan plan = planBatch(r, "test");
+  EXPECT_EQ(plan.manifest.methodIdentities.at("brought"), "python 1111");
+  EXPECT_EQ(plan.manifest.methodIdentities.at("local").rfind("c++ ", 0), 0u);
+  prepareFolder(folder, plan.manifest, false);
+  Recorder first;
+  runBatch(plan.jobs, folder, 2, first);
+  ASSERT_EQ(first.ran.size(), 4u);
+
+  const std::vector<control::Method> after{brought("python 2222")};
+  r.extraMethods = after;
+  BatchPlan changed = planBatch(r, "test");
+  try {
+    prepareFolder(folder, changed.manifest, false);
+    FAIL() << "resumed results of other code";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("brought (python 1111 then, python 2222 now)"),
+              std::string::npos)
+        << e.what();
+  }
+  prepareFolder(folder, changed.manifest, true);
+  Recorder second;
+  runBatch(changed.jobs, folder, 2, second);
+  EXPECT_EQ(second.alreadyDone, 2u) << "local's results stay";
+  for (const std::string& stem : second.ran)
+    EXPECT_NE(stem.find("-brought-"), std::string::npos) << stem << " ran again";
+  EXPECT_EQ(second.ran.size(), 2u);
+  EXPECT_EQ(folder.readManifest()->methodIdentities.at("brought"), "python 2222");
+
+  // A batch of local alone keeps saying which code made brought's results.
+  r.methods = {"local"};
+  BatchPlan alone = planBatch(r, "test");
+  prepareFolder(folder, alone.manifest, false);
+  EXPECT_EQ(folder.readManifest()->methodIdentities.at("brought"), "python 2222");
+}
+
+TEST(PlanBatch, MethodsNamedTwiceOrNotAtAllAndTooManyJobsAreRefused) {
+  BatchRequest r = tinyRequest(1);
+  r.methods = {"paper", "paper"};
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+  r.methods = {};
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+  r.methods = {"paper"};
+  r.seeds = kMaxSeeds + 1;
+  EXPECT_THROW(planBatch(r, "test"), InputError);
+  r.seeds = kMaxSeeds;
+  r.methods = {"paper", "local", "camcov"};
+  r.scenes.push_back(r.scenes.front());  // 2 x 2 scenes x 3 methods x 100,000 seeds
+  EXPECT_THROW(planBatch(r, "test"), InputError) << "more than a million jobs";
+}
+
 TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
   const testing::ScratchDir dir;
   std::vector<std::string> shards;
   for (std::size_t k = 1; k <= 2; ++k) {
     BatchRequest r = tinyRequest(1);
     r.shard = {k - 1, 2};
-    const BatchPlan plan = planBatch(r, "test");
+    BatchPlan plan = planBatch(r, "test");
     const records::BatchFolder folder(dir / ("shard-" + std::to_string(k)));
     prepareFolder(folder, plan.manifest, false);
     Recorder quiet;
@@ -135,9 +199,40 @@ TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
   BatchRequest other = tinyRequest(1);
   other.parameters.global.K = 21;
   const records::BatchFolder odd(dir / "odd");
-  prepareFolder(odd, planBatch(other, "test").manifest, false);
+  BatchPlan oddPlan = planBatch(other, "test");
+  prepareFolder(odd, oddPlan.manifest, false);
   EXPECT_THROW(mergeFolders({shards[0], odd.root().string()}, merged, {}), InputError);
   EXPECT_THROW(mergeFolders({(dir / "nothing").string()}, merged, {}), InputError);
+
+  // Shards built from other code of a method.
+  records::BatchManifest rebuilt = *records::BatchFolder(shards[1]).readManifest();
+  rebuilt.methodIdentities["paper"] = "c++ 0123456789abcdef";
+  records::BatchFolder(shards[1]).writeManifest(rebuilt);
+  try {
+    mergeFolders(shards, records::BatchFolder(dir / "mixed"), {});
+    FAIL() << "merged results of other code";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("other code"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MergeFolders, ADamagedRunIsNamedInItsSourceAndNothingIsCopied) {
+  const testing::ScratchDir dir;
+  BatchPlan plan = planBatch(tinyRequest(1), "test");
+  const records::BatchFolder source(dir / "source");
+  prepareFolder(source, plan.manifest, false);
+  Recorder quiet;
+  runBatch(plan.jobs, source, 1, quiet);
+  const fs::path damaged = source.runFile(plan.jobs.back().stem);
+  fs::resize_file(damaged, fs::file_size(damaged) / 2);  // a truncated copy
+  const records::BatchFolder target(dir / "target");
+  try {
+    mergeFolders({source.root().string()}, target, {});
+    FAIL() << "merged a truncated run";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(damaged.string()), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(target.runsDir())) << "nothing copied";
 }
 
 }  // namespace

@@ -28,7 +28,9 @@ TEST(LipschitzSearch, FindsTheMinimumOfRandomWavesAsADenseGridDoes) {
              a[2] * std::sin(w[2] * t + p[2]) + 2.0;
     };
     const double h = 0.1;
-    const double m = lipschitzMinimum(of(f, h, lipschitz), 1e-7);
+    // A smooth minimum to 1e-7 takes more samples than a run's default budget.
+    const double m = lipschitzMinimum(of(f, h, lipschitz), 1e-7,
+                                      std::numeric_limits<double>::infinity(), 1 << 24);
     double grid = std::numeric_limits<double>::infinity();
     constexpr int kSamples = 200000;
     for (int i = 0; i <= kSamples; ++i)
@@ -37,6 +39,20 @@ TEST(LipschitzSearch, FindsTheMinimumOfRandomWavesAsADenseGridDoes) {
     EXPECT_LE(m, grid + 1e-7) << "trial " << trial;
     EXPECT_GE(m, grid - lipschitz * h / kSamples / 2 - 1e-12) << "trial " << trial;
   }
+}
+
+TEST(LipschitzSearch, ASearchOutOfSamplesStopsWithALowerBoundOfTheMinimum) {
+  // A distance swinging at 1e9 rad/s: proving its minimum to 1e-6 would take ~1e14 samples.
+  int samples = 0;
+  const auto f = [&samples](double t) {
+    ++samples;
+    return 3.0 + 2.0 * std::sin(1e9 * t);
+  };
+  const double m =
+      lipschitzMinimum(of(f, 0.1, 2e9), 1e-6, std::numeric_limits<double>::infinity(), 1000);
+  EXPECT_LE(samples, 1000 + 2);  // the budget, and the two ends sampled by of()
+  EXPECT_LE(m, 1.0) << "never above the true minimum, 1";
+  EXPECT_TRUE(std::isfinite(m));
 }
 
 TEST(LipschitzSearch, FirstInstantBelowALevelIsFoundFromTheLeft) {

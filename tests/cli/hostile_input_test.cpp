@@ -1,0 +1,188 @@
+// Hostile input against the executable: every numeric option of every command refuses what
+// is not a finite number in its range, nothing is written for it, outputs never replace
+// special files or the command's own input, absurd batches are refused before they grow, and
+// every scene the validator accepts runs to its end.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <regex>
+#include <sstream>
+
+#include "support/run_camcov.h"
+#include "support/scratch.h"
+#include "support/test_paths.h"
+
+namespace camcov::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct NumericOption {
+  std::string name;  // "--seeds"
+  int values = 1;    // how many it takes, comma-separated ("FLOAT x 2")
+};
+
+// The numeric options `camcov <command> --help` lists, so an option added later is tested too.
+std::vector<NumericOption> numericOptions(const std::string& command) {
+  const CommandResult help = runCamcov(command + " --help");
+  EXPECT_EQ(help.exitCode, 0) << command;
+  std::vector<NumericOption> options;
+  const std::regex line(R"(^\s+(?:-\w+,)?(--[a-z-]+)\s+(?:FLOAT|INT|UINT)\S*(?:\s+x\s+(\d+))?)");
+  std::istringstream text(help.out);
+  for (std::string l; std::getline(text, l);) {
+    std::smatch m;
+    if (std::regex_search(l, m, line))
+      options.push_back({m[1], m[2].matched ? std::stoi(m[2]) : 1});
+  }
+  return options;
+}
+
+bool isEmptyFolder(const fs::path& dir) {
+  return fs::is_directory(dir) && fs::directory_iterator(dir) == fs::directory_iterator();
+}
+
+TEST(HostileInput, EveryNumericOptionRefusesNanAndInfinitiesAndWritesNothing) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  const std::string tracks = (testDataDir() / "tracks").string();
+  const fs::path out = dir / "out";
+  // Each command with valid arguments but for the one numeric option under test.
+  const std::vector<std::pair<std::string, std::string>> commands{
+      {"validate", scene},
+      {"state", scene},
+      {"inspect", scene},
+      {"run", scene + " -o " + (out / "runs").string()},
+      {"render", scene + " -o " + (out / "x.png").string()},
+      {"video", scene + " -o " + (out / "x.mp4").string()},
+      {"bench", "--scenes " + scene + " -o " + (out / "b").string()},
+      {"merge", tracks + " -o " + (out / "m").string()},
+      {"report", tracks + " -o " + (out / "r.html").string()},
+      {"explore", scene + " -o " + (out / "x.html").string()},
+      {"import lastrow", tracks + "/lastrow_extract.csv -o " + (out / "x.json").string()},
+      {"import ethucy", tracks + "/ethucy_extract --fps 25 -o " + (out / "x.json").string()},
+      {"generate", "-o " + (out / "x.json").string()},
+      {"optimum", scene + " -o " + (out / "x.json").string()},
+  };
+  int tried = 0;
+  for (const auto& [command, arguments] : commands) {
+    const auto options = numericOptions(command);
+    for (const NumericOption& option : options) {
+      for (const std::string value : {"nan", "inf", "-inf", "1e400", "12abc"}) {
+        std::string values = value;
+        for (int k = 1; k < option.values; ++k)
+          values += "," + value;
+        fs::create_directories(out);
+        const std::string line = command + " " + arguments + " " + option.name + "=" + values;
+        const CommandResult r = runCamcov(line);
+        EXPECT_EQ(r.exitCode, 2) << line << "\n" << r.err;
+        EXPECT_NE(r.err.find(option.name), std::string::npos) << line << "\n" << r.err;
+        EXPECT_TRUE(isEmptyFolder(out)) << line << " wrote something";
+        fs::remove_all(out);
+        ++tried;
+      }
+    }
+  }
+  EXPECT_GT(tried, 150) << "the help texts still list the numeric options";
+}
+
+TEST(HostileInput, CountsRefuseNegativeAndOversizedValuesBeforeTheyGrow) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  for (const std::string seeds : {"-1", "0", "99999999999", "18446744073709551616", "1.5"}) {
+    const CommandResult r =
+        runCamcov("bench --scenes " + scene + " --seeds " + seeds + " -o " + (dir / "b").string());
+    EXPECT_EQ(r.exitCode, 2) << seeds << "\n" << r.err;
+    EXPECT_NE(r.err.find("--seeds"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "b"));
+  }
+  const CommandResult seed = runCamcov("run " + scene + " --seed=-1 -o " + (dir / "r").string());
+  EXPECT_EQ(seed.exitCode, 2) << seed.err;
+}
+
+TEST(HostileInput, BenchMethodsListedEmptyOrTwiceAreRefusedLeavingNoFolder) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  for (const std::string methods : {",", "\"\"", "paper,paper", "paper,,paper"}) {
+    const CommandResult r = runCamcov("bench --scenes " + scene + " --methods " + methods +
+                                      " --seeds 1 -o " + (dir / "b").string());
+    EXPECT_EQ(r.exitCode, 2) << methods << "\n" << r.err;
+    EXPECT_NE(r.err.find("--methods"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "b")) << methods;
+  }
+}
+
+TEST(HostileInput, OutputsNeverReplaceFifosDevicesFoldersOrTheCommandsInput) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  const fs::path fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  std::vector<fs::path> specials{fifo};
+  // A null device of our own (as root): if the check failed, only this node would be lost.
+  const fs::path device = dir / "null";
+  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) specials.push_back(device);
+  const std::string csv = (dir / "tracks.csv").string();
+  fs::copy_file(testDataDir() / "tracks" / "lastrow_extract.csv", csv);
+  const std::string before = readFile(csv);
+  for (const fs::path& special : specials) {
+    for (const std::string& line :
+         {"import lastrow " + csv + " -o " + special.string(), "generate -o " + special.string(),
+          "optimum " + scene + " --budget 10 -o " + special.string()}) {
+      const CommandResult r = runCamcov(line);
+      EXPECT_EQ(r.exitCode, 2) << line << "\n" << r.err;
+      EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+      struct stat s {};
+      ASSERT_EQ(::stat(special.c_str(), &s), 0);
+      EXPECT_FALSE(S_ISREG(s.st_mode)) << special << " was replaced by " << line;
+    }
+  }
+  const CommandResult folder = runCamcov("generate -o " + dir.path().string());
+  EXPECT_EQ(folder.exitCode, 2) << folder.err;
+  EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
+  // The input named again as the output, also by another spelling of its path.
+  for (const std::string& output : {csv, (dir / "." / "tracks.csv").string()}) {
+    const CommandResult self = runCamcov("import lastrow " + csv + " -o " + output);
+    EXPECT_EQ(self.exitCode, 2) << self.err;
+    EXPECT_NE(self.err.find("is an input of this command"), std::string::npos) << self.err;
+    EXPECT_EQ(readFile(csv), before);
+  }
+}
+
+TEST(HostileInput, TrackCoordinatesBeyondTheirLimitAreRefusedAtTheirLine) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "e");
+  {
+    std::ofstream obsmat(dir / "e" / "obsmat.txt");
+    obsmat << "1 1 0 0 1 0 0 0\n11 1 1e200 0 1 0 0 0\n";
+  }
+  const CommandResult r = runCamcov("import ethucy " + (dir / "e").string() + " --fps 25 -o " +
+                                    (dir / "x.json").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("obsmat.txt:2: x: 1e+200 is outside [-1e+06, 1e+06]"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.json"));
+}
+
+TEST(HostileInput, SceneAtTheSpeedLimitsRunsToItsEndAndBeyondThemIsRefused) {
+  const ScratchDir dir;
+  const auto write = [&](const std::string& name, const std::string& speed) {
+    std::ofstream(dir / name)
+        << R"js({"boundary": "POLYGON((0 0,20 0,20 20,0 20))", "cameraFoV": 30,
+      "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((5 5,15 5,15 15))",
+                   "velocity": )js"
+        << speed << R"js(, "angularVelocity": )js" << speed << R"js(}],
+      "cameras": [{"pos": "POINT(1 1)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
+    return (dir / name).string();
+  };
+  const CommandResult fast = runCamcov("run " + write("fast.json", "1e4") +
+                                       " --method paper --duration 2 -o " + (dir / "r").string());
+  EXPECT_EQ(fast.exitCode, 0) << fast.err;
+  const CommandResult beyond =
+      runCamcov("run " + write("beyond.json", "1e9") + " -o " + (dir / "r").string());
+  EXPECT_EQ(beyond.exitCode, 2) << beyond.err;
+  EXPECT_NE(beyond.err.find("exceeds 10000"), std::string::npos) << beyond.err;
+}
+
+}  // namespace
+}  // namespace camcov::testing
