@@ -48,13 +48,7 @@ int inspect(const InspectOptions& o) {
     for (const auto& c : s.cameras)
       cameras.push_back(c.initial);
   } else {
-    cameras = scene::loadCameraPoses(o.camerasFile);
-    if (cameras.size() > s.cameras.size()) {
-      throw InputError(
-          fmt::format("{}: {} poses, but the scene has {} cameras (pose j is camera j, "
-                      "with its field of view)",
-                      o.camerasFile, cameras.size(), s.cameras.size()));
-    }
+    cameras = scene::loadCameraPosesFor(o.camerasFile, s);
   }
   if (!o.debugSvg.empty()) {
     if (o.camera >= cameras.size()) {

@@ -34,7 +34,7 @@ int render(const RenderOptions& o) {
     for (const auto& c : s.cameras)
       cameras.push_back(c.initial);
   } else {
-    cameras = scene::loadCameraPoses(o.camerasFile);
+    cameras = scene::loadCameraPosesFor(o.camerasFile, s);
   }
   viz::FrameBuilder builder(s);
   viz::Frame frame;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <vector>
 
 namespace camcov::geometry {
 
@@ -143,13 +145,35 @@ double distanceBetweenPolygons(std::span<const Vec2> a, std::span<const Vec2> b)
 
 EdgePair findSelfIntersection(std::span<const Vec2> ring) {
   const std::size_t n = ring.size();
+  const auto edgeEnd = [&](std::size_t i) { return ring[(i + 1) % n]; };
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    const Vec2 a = ring[i], b = edgeEnd(i), c = ring[(i + 2) % n];
     // Adjacent edges share b; they only collide if the second folds back over the first.
-    if (orient(a, b, c) == 0.0 && dot(a - b, c - b) > 0.0) return {i, (i + 1) % n};
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through the closing vertex
-      if (segmentsIntersect(a, b, ring[j], ring[(j + 1) % n])) return {i, j};
+    if (orient(a, b, c) == 0.0 && dot(a - b, c - b) > 0.0)
+      return {std::min(i, (i + 1) % n), std::max(i, (i + 1) % n)};
+  }
+  // Sweep and prune: edges by the left end of their box; an edge meets only those that start
+  // before it ends in x, and of those only the ones it overlaps in y.
+  struct Span {
+    double minX, maxX, minY, maxY;
+    std::size_t edge;
+  };
+  std::vector<Span> spans(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = edgeEnd(i);
+    spans[i] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), i};
+  }
+  std::sort(spans.begin(), spans.end(), [](const Span& p, const Span& q) {
+    return std::tie(p.minX, p.edge) < std::tie(q.minX, q.edge);
+  });
+  for (std::size_t s = 0; s < n; ++s) {
+    const Span& e = spans[s];
+    for (std::size_t t = s + 1; t < n && spans[t].minX <= e.maxX; ++t) {
+      const Span& f = spans[t];
+      if (f.maxY < e.minY || f.minY > e.maxY) continue;
+      const std::size_t i = std::min(e.edge, f.edge), j = std::max(e.edge, f.edge);
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // adjacent: checked above
+      if (segmentsIntersect(ring[i], edgeEnd(i), ring[j], edgeEnd(j))) return {i, j};
     }
   }
   return {};

@@ -39,8 +39,11 @@ double distanceBetweenPolygons(std::span<const Vec2> a, std::span<const Vec2> b)
 
 // Do closed segments [a, b] and [c, d] share a point?
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
-// Index pair (i, j) of two non-adjacent edges that touch, or {npos, npos} if the ring is simple.
-// Edge i runs from ring[i] to ring[i+1]. Quadratic: meant for validation, not hot loops.
+// Index pair (i, j), i < j, of two non-adjacent edges that touch (or adjacent ones that fold
+// back over each other), or {npos, npos} if the ring is simple. Edge i runs from ring[i] to
+// ring[i+1]. The exact pairwise test on the pairs whose boxes overlap, found by sweeping the
+// edges in x: near-linear for rings whose edges are short against the ring (a 100,000-vertex
+// room in milliseconds), quadratic only when most edges overlap in x and y.
 struct EdgePair {
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   std::size_t first = npos;

@@ -66,6 +66,12 @@ void readMap(const std::string& file, Recording& recording) {
       if (at == std::string::npos) throw InputError(where.prefix() + "a comment is not closed");
       continue;
     }
+    if (text.compare(at, 9, "<![CDATA[") == 0) {  // character data: no elements inside
+      at = text.find("]]>", at);
+      if (at == std::string::npos)
+        throw InputError(where.prefix() + "a CDATA section is not closed");
+      continue;
+    }
     const std::size_t end = text.find('>', at);
     if (end == std::string::npos)
       throw InputError(where.prefix() + "a tag is not closed ('>' missing)");
@@ -117,6 +123,12 @@ void readMap(const std::string& file, Recording& recording) {
   if (!open.empty()) {
     throw InputError(
         fmt::format("{}:{}: <{}> is never closed", file, open.back().second, open.back().first));
+  }
+  // A map that draws nothing is not "no walls" said on purpose: an empty or foreign file.
+  if (recording.walls.empty() && recording.pillars.empty()) {
+    throw InputError(file +
+                     ": no <Line> walls or <Circle> pillars in it (an empty or foreign file); "
+                     "leave map.xml out for a scene without walls");
   }
 }
 

@@ -87,10 +87,17 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
 }
 
 std::vector<std::string> readLines(const std::string& file) {
-  std::istringstream in(readInputFile(file));
+  std::string text = readInputFile(file);
+  // A text file may start with UTF-8's byte order mark (spreadsheets write one): not content.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  std::istringstream in(text);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos) {
+      throw InputError(
+          fmt::format("{}:{}: a NUL byte: a binary file, not text", file, lines.size() + 1));
+    }
     lines.push_back(std::move(line));
   }
   return lines;

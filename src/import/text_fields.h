@@ -40,7 +40,8 @@ std::vector<std::string> splitCsv(std::string_view line, const Where& where);
 // The whitespace-separated fields of a line.
 std::vector<std::string_view> splitWhitespace(std::string_view line);
 
-// The whole file, InputError if it cannot be read; lines with any trailing '\r' removed.
+// The whole file, InputError if it cannot be read or holds a NUL byte; lines with any trailing
+// '\r' removed, and a leading UTF-8 byte order mark.
 std::vector<std::string> readLines(const std::string& file);
 
 }  // namespace camcov::import

@@ -10,6 +10,8 @@
 #include <type_traits>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
+#include "util/strict_json.h"
 
 namespace camcov::params {
 namespace {
@@ -217,13 +219,14 @@ Parameters fromJson(const nlohmann::json& j, const std::string& source, Paramete
 }
 
 Parameters loadParameters(const std::string& file, Parameters base) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file + ": cannot open parameter file");
+  const std::string text = readInputFile(file);
   nlohmann::json j;
   try {
-    in >> j;
-  } catch (const nlohmann::json::parse_error& e) {
+    j = parseStrictJson(text);
+  } catch (const nlohmann::json::exception& e) {
     throw InputError(file + ": invalid JSON: " + e.what());
+  } catch (const DuplicateJsonKey& e) {
+    throw InputError(file + ": " + e.what());
   }
   return fromJson(j, file, base);
 }

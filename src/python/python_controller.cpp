@@ -41,8 +41,15 @@ void PythonController::control(const control::Observation& o,
       throw py::value_error("the controller returned " + std::to_string(velocities.size()) +
                             " velocities for " + std::to_string(commands.size()) + " cameras");
     }
-    for (std::size_t j = 0; j < commands.size(); ++j)
+    for (std::size_t j = 0; j < commands.size(); ++j) {
+      // A method's bug shows as its run's error, not as a camera that silently stops.
+      if (!std::isfinite(velocities[j].x) || !std::isfinite(velocities[j].y) ||
+          !std::isfinite(velocities[j].yaw)) {
+        throw py::value_error("the controller returned a velocity that is not finite for camera " +
+                              std::to_string(j) + " at t = " + std::to_string(o.time) + " s");
+      }
       commands[j] = {{velocities[j].x, velocities[j].y}, velocities[j].yaw};
+    }
     goals_.assign(commands.size(), std::nullopt);
     if (parts > 1 && !result[py::int_(1)].is_none()) {
       const auto goals = posesFromArray(result[py::int_(1)], "controller's goals");
@@ -65,6 +72,10 @@ void PythonController::takeEventsFrom(const py::handle& events, double time, std
       throw py::value_error("controller's events: expected dicts with at least a 'kind'");
     const auto e = py::reinterpret_borrow<py::dict>(item);
     if (!e.contains("kind")) throw py::value_error("controller's events: an event without 'kind'");
+    for (const char* key : {"kind", "detail", "reason"}) {
+      if (e.contains(key) && !py::isinstance<py::str>(e[key]))
+        throw py::value_error(std::string("controller's events: '") + key + "' must be a str");
+    }
     control::ControlEvent event;
     event.time = time;
     event.kind = py::str(e["kind"]);

@@ -35,9 +35,11 @@ class Visibility {
   // with the GIL and the lock held: the scratch is the caller's until it lets the lock go.
   std::unique_lock<std::mutex> evaluate(const std::vector<geometry::Pose>& poses,
                                         std::size_t teamSize, bool withSegments) {
-    if (teamSize > cameras_) {
+    // One pose per field of view (camera j with θ_j), or none: a team of nobody.
+    if (teamSize != 0 && teamSize != cameras_) {
       throw py::value_error(std::to_string(teamSize) + " poses per team, but " +
-                            std::to_string(cameras_) + " fields of view");
+                            std::to_string(cameras_) +
+                            " fields of view: give one pose per field of view");
     }
     py::gil_scoped_release free;
     std::unique_lock lock(mutex_);

@@ -4,18 +4,29 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "geometry/ring.h"
 #include "scene/read_text.h"
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
+#include "util/strict_json.h"
 
 namespace camcov::scene {
+namespace {
+
+// Beyond ±1e6 degrees (2,778 turns) a yaw in double precision has lost its fraction of a
+// degree: such a number is a mistake, not an angle.
+constexpr double kMaxYawDegrees = 1e6;
+
+}  // namespace
 
 std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const std::string& source) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(jsonText);
+    j = parseStrictJson(jsonText);
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(source, "", std::string("invalid JSON: ") + e.what());
+  } catch (const DuplicateJsonKey& e) {
+    throw SceneError(source, "", e.what());
   }
   if (!j.is_array()) throw SceneError(source, "", "expected a list of {x, y, yaw_deg} objects");
   if (j.empty() || j.size() > kMaxCameras) {
@@ -40,6 +51,10 @@ std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const st
       if (!item[keys[k]].is_number()) throw SceneError(source, keyPath, "expected a number");
       values[k] = item[keys[k]].get<double>();
       if (!std::isfinite(values[k])) throw SceneError(source, keyPath, "number is not finite");
+      const double limit = k < 2 ? kMaxCoordinate : kMaxYawDegrees;
+      if (std::abs(values[k]) > limit) {
+        throw SceneError(source, keyPath, fmt::format("{:g} lies beyond ±{:g}", values[k], limit));
+      }
     }
     poses.push_back({values[0], values[1], geometry::wrapAngle(geometry::degToRad(values[2]))});
   }
@@ -48,6 +63,25 @@ std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const st
 
 std::vector<geometry::Pose> loadCameraPoses(const std::filesystem::path& file) {
   return parseCameraPoses(readText(file), file.string());
+}
+
+std::vector<geometry::Pose> loadCameraPosesFor(const std::filesystem::path& file,
+                                               const Scene& scene) {
+  std::vector<geometry::Pose> poses = loadCameraPoses(file);
+  if (poses.size() > scene.cameras.size()) {
+    throw SceneError(file.string(), "",
+                     fmt::format("{} poses, but the scene has {} cameras (pose j is camera j, "
+                                 "with its field of view)",
+                                 poses.size(), scene.cameras.size()));
+  }
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    if (geometry::locate(scene.boundary, poses[j].position()) == geometry::Containment::Outside) {
+      throw SceneError(
+          file.string(), fmt::format("[{}]", j),
+          fmt::format("({:g} {:g}) lies outside the scene's boundary", poses[j].x, poses[j].y));
+    }
+  }
+  return poses;
 }
 
 }  // namespace camcov::scene

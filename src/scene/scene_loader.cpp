@@ -13,6 +13,7 @@
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
 #include "scene/wkt.h"
+#include "util/strict_json.h"
 
 namespace camcov::scene {
 namespace {
@@ -304,9 +305,11 @@ CameraSpec camera(const Node& node, double sceneHalfFov) {
 Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   json document;
   try {
-    document = json::parse(jsonText);
+    document = parseStrictJson(jsonText);
   } catch (const json::exception& e) {  // parse errors, and numbers beyond double range
     throw SceneError(sourceName, "", std::string("invalid JSON: ") + e.what());
+  } catch (const DuplicateJsonKey& e) {
+    throw SceneError(sourceName, "", e.what());
   }
   const Node root(document, "", sourceName);
   root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch"});

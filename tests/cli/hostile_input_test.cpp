@@ -186,3 +186,67 @@ TEST(HostileInput, SceneAtTheSpeedLimitsRunsToItsEndAndBeyondThemIsRefused) {
 
 }  // namespace
 }  // namespace camcov::testing
+
+namespace camcov::testing {
+namespace {
+
+TEST(HostileInput, StrictFormatsRefuseDuplicateKeysNulBytesAndEmptyMapsAndTakeValidOddities) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  std::string text = readFile(scene);
+  text.insert(text.find('{') + 1, "\"cameraFoV\": 90, ");  // a second cameraFoV, first in file
+  std::ofstream(dir / "twice.json") << text;
+  const CommandResult twice = runCamcov("validate " + (dir / "twice.json").string());
+  EXPECT_EQ(twice.exitCode, 2) << twice.err;
+  EXPECT_NE((twice.out + twice.err).find("\"cameraFoV\" appears twice"), std::string::npos)
+      << twice.out << twice.err;
+
+  // Camera poses for inspect: outside the boundary, or a yaw that is no angle.
+  for (const std::string poses :
+       {R"([{"x": -50, "y": 1, "yaw_deg": 0}])", R"([{"x": 1, "y": 1, "yaw_deg": 1e300}])",
+        R"([{"x": 1, "y": 1, "x": 2, "yaw_deg": 0}])"}) {
+    std::ofstream(dir / "poses.json") << poses;
+    const CommandResult r =
+        runCamcov("inspect " + scene + " --cameras " + (dir / "poses.json").string());
+    EXPECT_EQ(r.exitCode, 2) << poses << "\n" << r.err;
+    EXPECT_NE(r.err.find("poses.json"), std::string::npos) << r.err;
+  }
+
+  const fs::path people = dir / "people";
+  fs::create_directories(people);
+  std::ofstream(people / "obsmat.txt") << "1 1 0 0 1 0 0 0\n11 1 1 0 1 0 0 0\n";
+  const auto import = [&] {
+    return runCamcov("import ethucy " + people.string() + " --fps 25 -o " +
+                     (dir / "x.json").string());
+  };
+  std::ofstream(people / "map.xml") << "";
+  EXPECT_EQ(import().exitCode, 2) << "an empty map.xml is not 'no walls'";
+  std::ofstream(people / "map.xml") << "<Trial><![CDATA[ <not a tag> ]]><!-- a > b -->"
+                                       "<Line x1=\"-9\" y1=\"-9\" x2=\"9\" y2=\"-9\" /></Trial>";
+  const CommandResult valid = import();
+  EXPECT_EQ(valid.exitCode, 0) << "comments and CDATA are XML\n" << valid.err;
+
+  const std::string csv = readFile(testDataDir() / "tracks" / "lastrow_extract.csv");
+  std::ofstream(dir / "bom.csv") << "\xEF\xBB\xBF" << csv;
+  const CommandResult bom = runCamcov("import lastrow " + (dir / "bom.csv").string() + " -o " +
+                                      (dir / "b.json").string());
+  EXPECT_EQ(bom.exitCode, 0) << "a byte order mark is not a column's name\n" << bom.err;
+  std::string binary = csv;
+  binary.insert(binary.find('\n') + 3, 1, '\0');
+  std::ofstream(dir / "nul.csv", std::ios::binary) << binary;
+  const CommandResult nul = runCamcov("import lastrow " + (dir / "nul.csv").string() + " -o " +
+                                      (dir / "n.json").string());
+  EXPECT_EQ(nul.exitCode, 2) << nul.err;
+  EXPECT_NE(nul.err.find("nul.csv:2: a NUL byte"), std::string::npos) << nul.err;
+  for (const std::string extra : {"player,frame,x,y,team,bgcolor\n1,0,3,4,attack,red,surplus\n",
+                                  "player,frame,x,y,team,bgcolor\nkeeper,0,3,4,attack,red\n"}) {
+    std::ofstream(dir / "odd.csv") << extra;
+    const CommandResult r = runCamcov("import lastrow " + (dir / "odd.csv").string() + " -o " +
+                                      (dir / "o.json").string());
+    EXPECT_EQ(r.exitCode, 2) << extra << r.err;
+    EXPECT_NE(r.err.find("odd.csv:2: "), std::string::npos) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace camcov::testing

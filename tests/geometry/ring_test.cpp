@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
 
 namespace camcov::geometry {
 namespace {
@@ -92,6 +93,44 @@ TEST(FindSelfIntersection, ReportsBowtieSpikeAndTouchingVertex) {
   // Vertex 3 touches edge 0 at its middle: not simple although no edges cross.
   const Ring touching{{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
   EXPECT_TRUE(findSelfIntersection(touching).found());
+}
+
+// The pairwise test on every pair, as findSelfIntersection was before it swept: a reference.
+bool selfIntersectsByEveryPair(const Ring& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    if (orient(a, b, c) == 0.0 && dot(a - b, c - b) > 0.0) return true;
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (segmentsIntersect(a, b, ring[j], ring[(j + 1) % n])) return true;
+    }
+  }
+  return false;
+}
+
+TEST(FindSelfIntersection, AgreesWithEveryPairOnRandomAndGridRings) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> coordinate(0, 6);  // a small grid: touching, collinear
+  std::uniform_int_distribution<int> size(3, 12);
+  int simple = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Ring ring(static_cast<std::size_t>(size(rng)));
+    for (Vec2& v : ring)
+      v = {static_cast<double>(coordinate(rng)), static_cast<double>(coordinate(rng))};
+    const EdgePair found = findSelfIntersection(ring);
+    ASSERT_EQ(found.found(), selfIntersectsByEveryPair(ring)) << "trial " << trial;
+    if (found.found()) {
+      EXPECT_LT(found.first, found.second);
+      const std::size_t n = ring.size(), i = found.first, j = found.second;
+      const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
+      EXPECT_TRUE(adjacent ||
+                  segmentsIntersect(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n]))
+          << "the pair named must touch";
+    }
+    simple += !found.found();
+  }
+  EXPECT_GT(simple, 100) << "some of the rings are simple";
 }
 
 TEST(PlaceRing, RotatesAboutOriginThenTranslates) {

@@ -109,6 +109,14 @@ def test_bad_input_raises_the_clis_errors(tiny, tmp_path):
     with pytest.raises(ValueError, match="velocities"):
         camcov.simulate(tiny("tiny_static"), lambda o: np.zeros((7, 3)), method="wrong",
                         params=SHORT)
+    cameras = len(camcov.load_scene(tiny("tiny_static")).cameras)
+    with pytest.raises(ValueError, match="not finite for camera 0 at t = 0"):
+        camcov.simulate(tiny("tiny_static"), lambda o: np.full((cameras, 3), np.inf),
+                        method="wrong", params=SHORT)
+    with pytest.raises(ValueError, match="'kind' must be a str"):
+        camcov.simulate(tiny("tiny_static"),
+                        lambda o: (np.zeros((cameras, 3)), None, [{"kind": 5}]),
+                        method="wrong", params=SHORT)
 
 
 def test_the_gil_is_let_go_while_cpp_runs(published):

@@ -1,7 +1,10 @@
 #include "scene/scene_loader.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -140,6 +143,43 @@ TEST(LoadScene, MissingFileIsAnInputErrorNamingTheFile) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos);
   }
+}
+
+// Loading is near-linear in the file's size: 100,000 keyframes or a 100,000-vertex boundary
+// load in well under a second here (README, Reliability); a quadratic step would take a
+// minute. The bound is generous for the sanitizer build and a busy machine: it catches the
+// quadratic, not a slow day.
+TEST(SceneLoader, HundredThousandKeyframesAndBoundaryVerticesLoadInLinearTime) {
+  constexpr int kCount = 100000;
+  std::string keyframes;
+  for (int k = 1; k <= kCount; ++k) {
+    keyframes += fmt::format("{}{{\"time\": {}, \"shape\": \"POLYGON((0 0,1 0,1 {},0 1))\"}}",
+                             k == 1 ? "" : ",", k, 1 + k % 2);
+  }
+  std::string boundary;
+  for (int k = 0; k < kCount; ++k) {
+    const double a = 2 * std::numbers::pi * k / kCount;
+    boundary +=
+        fmt::format("{}{:.6f} {:.6f}", k == 0 ? "" : ",", 1000 * std::cos(a), 1000 * std::sin(a));
+  }
+  const auto scene = [](const std::string& boundaryWkt, const std::string& deformation) {
+    return R"js({"boundary": "POLYGON(()js" + boundaryWkt + R"js())",
+      "targets": [{"shape": "POLYGON((0 0,1 0,1 1,0 1))", "path": "POLYGON((0 0))")js" +
+           deformation + R"js(}],
+      "cameraFoV": 45,
+      "cameras": [{"pos": "POINT(-4 -4)", "angle": 45, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
+  };
+  const auto seconds = [](const std::string& text) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene s = parseScene(text, "big.json");
+    EXPECT_FALSE(s.targets.empty());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  EXPECT_LT(seconds(scene("-5 -5,5 -5,5 5,-5 5",
+                          ", \"deformation\": {\"period\": " + std::to_string(kCount + 1) +
+                              ", \"keyframes\": [" + keyframes + "]}")),
+            30.0);
+  EXPECT_LT(seconds(scene(boundary, "")), 30.0);
 }
 
 }  // namespace
