@@ -71,11 +71,16 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   std::string ran;
   const std::vector<std::string> methods = orderedMethods(m.methods);
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    ran += fmt::format("{}<b>{}</b> ({})",
-                       i == 0                    ? ""
-                       : i + 1 == methods.size() ? " and "
-                                                 : ", ",
-                       escapeXml(methods[i]), escapeXml(methodStyle(methods[i]).label));
+    // "paper (global + local)" names itself; "local optimization" gets its name in front.
+    const std::string label(methodStyle(methods[i]).label);
+    ran += fmt::format(
+        "{}{}",
+        i == 0                    ? ""
+        : i + 1 == methods.size() ? " and "
+                                  : ", ",
+        label.rfind(methods[i], 0) == 0
+            ? "<b>" + escapeXml(methods[i]) + "</b>" + escapeXml(label.substr(methods[i].size()))
+            : fmt::format("<b>{}</b> ({})", escapeXml(methods[i]), escapeXml(label)));
   }
   out += fmt::format(
       "<p class=\"lede\">{} on {} scenes with {} seeds each{}.</p>\n", ran, m.scenes.size(),
@@ -85,13 +90,18 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   for (const auto* tallies : {&s.tallies, &s.pairTallies}) {
     for (const records::Tally& t : *tallies) {
       out += fmt::format(
-          "<p class=\"verdict\">On average coverage {} <b>wins {}</b>, ties {} and <b>loses "
-          "{}</b> of {} scenes against {} (two-sided Mann-Whitney U test over seeds, "
-          "α&nbsp;=&nbsp;{}).</p>\n",
-          escapeXml(methodStyle(t.method).label), t.wins, t.ties, t.losses,
-          t.wins + t.ties + t.losses,
-          escapeXml(methodStyle(t.against.empty() ? s.reference : t.against).label),
-          records::kSignificance);
+          "<p class=\"verdict\">On average coverage over {} scenes, {} against {}: <b>wins "
+          "{}</b>, ties {}, <b>loses {}</b>{} (the rule of docs/statistics.md: two-sided "
+          "Mann-Whitney U test over seeds, α&nbsp;=&nbsp;{}, and a difference of at least "
+          "{}).</p>\n",
+          t.wins + t.ties + t.losses + t.undecided, escapeXml(methodStyle(t.method).label),
+          escapeXml(methodStyle(t.against.empty() ? s.reference : t.against).label), t.wins, t.ties,
+          t.losses,
+          t.undecided > 0 ? fmt::format(", <b>undecided {}</b> (too few seeds to tell: {} per "
+                                        "method at least)",
+                                        t.undecided, records::seedsToReachSignificance())
+                          : std::string(),
+          records::kSignificance, records::kPracticalDifference);
     }
   }
   if (!s.tallies.empty()) {
@@ -104,6 +114,16 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
     out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", term, html);
   };
   fact("Tool", "camcov " + escapeXml(m.toolVersion));
+  // What made each method's results (a resume with other code is refused): the build's
+  // sources for C++ methods, the factory's file for Python ones.
+  std::string identities;
+  for (const std::string& method : orderedMethods(m.methods)) {
+    const auto it = m.methodIdentities.find(method);
+    identities += fmt::format(
+        "{}<b>{}</b> <code>{}</code>", identities.empty() ? "" : "; ", escapeXml(method),
+        it == m.methodIdentities.end() ? "not recorded" : escapeXml(it->second));
+  }
+  fact("Code", identities);
   fact("Command", "<code>" + escapeXml(shellCommand(m.command)) + "</code>");
   fact("Jobs", fmt::format("{} = {} scenes × {} methods × {} seeds; {} failed", jobs,
                            m.scenes.size(), m.methods.size(), m.seeds, s.failures.size()));

@@ -4,9 +4,12 @@
 // version) is labelled by its name and coloured by it: a colour no method of the table has,
 // chosen by a hash of the name, so it is the same in every report (two such methods may
 // share one in 1 of 6 cases).
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "records/batch_folder.h"
 
 namespace camcov::reports {
 
@@ -16,6 +19,20 @@ struct MethodStyle {
 };
 
 MethodStyle methodStyle(std::string_view method);
+
+// While it lives, methodStyle on this thread also knows the methods a batch brought and
+// described (records::BatchManifest::methodLooks): a report shows a Python controller by its
+// own description and colour.
+class BroughtMethodLooks {
+ public:
+  explicit BroughtMethodLooks(const std::map<std::string, records::MethodLook>& looks);
+  ~BroughtMethodLooks();
+  BroughtMethodLooks(const BroughtMethodLooks&) = delete;
+  BroughtMethodLooks& operator=(const BroughtMethodLooks&) = delete;
+
+ private:
+  const std::map<std::string, records::MethodLook>* previous_;
+};
 // In the table's order, then any other, by name.
 std::vector<std::string> orderedMethods(std::vector<std::string> methods);
 

@@ -1,5 +1,7 @@
 #include "reports/report_builder.h"
 
+#include "reports/method_style.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -34,6 +36,7 @@ std::string navigation(const ReportData& data) {
 }  // namespace
 
 std::string buildReportHtml(const ReportData& data, const BuildContext& context) {
+  const BroughtMethodLooks looks(data.manifest.methodLooks);
   std::string html = documentHead(fmt::format("camcov report: {} scenes × {} seeds",
                                               data.manifest.scenes.size(), data.manifest.seeds),
                                   data.manifest.toolVersion);

@@ -407,6 +407,7 @@ std::string perSceneSection(const SettingsData& data, const Verdicts& verdicts) 
 
 std::string buildSettingsReportHtml(const SettingsData& data, const BuildContext& context) {
   const Setting& reference = data.settings[data.reference];
+  const BroughtMethodLooks looks(reference.manifest.methodLooks);
   std::string html = documentHead(fmt::format("camcov settings: {} settings × {} scenes",
                                               data.settings.size(), data.scenes.size()),
                                   reference.manifest.toolVersion);

@@ -89,9 +89,16 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
                      std::to_string(kMaxSeeds));
   }
   BatchPlan plan;
-  plan.manifest = {toolVersion, r.parameters, r.methods, {}, r.seeds, {}, r.command};
-  for (std::size_t m = 0; m < r.methods.size(); ++m)
+  plan.manifest.toolVersion = toolVersion;
+  plan.manifest.parameters = r.parameters;
+  plan.manifest.methods = r.methods;
+  plan.manifest.seeds = r.seeds;
+  plan.manifest.command = r.command;
+  for (std::size_t m = 0; m < r.methods.size(); ++m) {
     plan.manifest.methodIdentities[r.methods[m]] = identityOf(brought[m]);
+    if (brought[m] != nullptr)
+      plan.manifest.methodLooks[r.methods[m]] = {brought[m]->description, brought[m]->color};
+  }
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
     plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash});

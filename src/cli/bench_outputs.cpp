@@ -84,7 +84,7 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
     std::cout << line << "\n";
   }
   // Against the reference, then the others pairwise.
-  int undecided = 0, seedsNeeded = 0;
+  int undecided = 0;
   for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
     for (const auto& t : *tallies) {
       std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}{}\n", t.method,
@@ -94,13 +94,12 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
       undecided += t.undecided;
     }
   }
-  for (const auto& c : summary.comparisons)
-    seedsNeeded = std::max(seedsNeeded, c.seedsNeeded);
   if (undecided > 0) {
     std::cout << fmt::format(
         "note: {} comparisons are undecided: with so few seeds no difference can reach p < {}; "
         "run at least {} seeds per method (--seeds {})\n",
-        undecided, records::kSignificance, seedsNeeded, seedsNeeded);
+        undecided, records::kSignificance, records::seedsToReachSignificance(),
+        records::seedsToReachSignificance());
   }
   std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
 }

@@ -29,6 +29,13 @@ void writeJson(const fs::path& file, const nlohmann::json& j) {
   writeFileAtomically(file, j.dump(1) + "\n");
 }
 
+nlohmann::json looksToJson(const std::map<std::string, MethodLook>& looks) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [method, look] : looks)
+    j[method] = {{"description", look.description}, {"color", look.color}};
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json manifestToJson(const BatchManifest& m) {
@@ -42,6 +49,7 @@ nlohmann::json manifestToJson(const BatchManifest& m) {
           {"parameters", params::toJson(m.parameters)},
           {"methods", m.methods},
           {"methodIdentities", m.methodIdentities},
+          {"methodLooks", looksToJson(m.methodLooks)},
           {"seeds", m.seeds},
           {"scenes", scenes},
           {"command", m.command}};
@@ -56,6 +64,9 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
     m.parameters = params::fromJson(j.at("parameters"), source);
     m.methods = j.at("methods").get<std::vector<std::string>>();
     m.methodIdentities = j.value("methodIdentities", std::map<std::string, std::string>{});
+    const nlohmann::json looks = j.value("methodLooks", nlohmann::json::object());
+    for (const auto& [method, look] : looks.items())
+      m.methodLooks[method] = {look.at("description"), look.at("color")};
     m.seeds = j.at("seeds").get<std::uint64_t>();
     for (const auto& s : j.at("scenes")) {
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),

@@ -27,6 +27,12 @@ struct SceneEntry {
   std::uint64_t hash = 0;
 };
 
+// How a method the build does not know (a Python controller) asked to be shown.
+struct MethodLook {
+  std::string description;
+  std::string color;  // CSS; empty: the reports choose one
+};
+
 struct BatchManifest {
   std::string toolVersion;
   params::Parameters parameters;
@@ -35,6 +41,8 @@ struct BatchManifest {
   // resume with other code is refused like one with other parameters. Empty in folders
   // written before methods had identities.
   std::map<std::string, std::string> methodIdentities;
+  // The brought methods' own descriptions and colours, for the reports.
+  std::map<std::string, MethodLook> methodLooks;
   std::uint64_t seeds = 0;  // seeds 1..seeds
   std::vector<SceneEntry> scenes;
   std::vector<std::string> command;  // argv, for the report's header

@@ -75,6 +75,8 @@ struct RunsComparison {
   Interval meanDifferenceCI;    // 95 %, Welch; NaN with fewer than 2 runs on a side
   int seedsNeeded = 0;          // undecided only: seeds per method that could reach α
 };
+// The fewest seeds per method with which the rule can decide anything (4 at α = 0.05).
+int seedsToReachSignificance();
 // Both samples must be non-empty.
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
 

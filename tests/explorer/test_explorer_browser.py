@@ -32,6 +32,8 @@ import time
 
 import pytest
 
+from browser import start_chromium  # tests/support/browser.py
+
 try:
     from selenium import webdriver
     from selenium.common.exceptions import (ElementClickInterceptedException,
@@ -49,10 +51,6 @@ except ImportError:  # reported by the `explorer` fixture, so that every test fa
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SCENE = REPO / "tests" / "data" / "scenes" / "tiny_dynamic.json"
-CHROMIUM = "/usr/bin/chromium"
-CHROMEDRIVER = "/usr/bin/chromedriver"
-INSTALL_HINT = ("install the Debian packages chromium chromium-driver python3-selenium "
-                "(scripts/install_deps.sh does) and run with /usr/bin/python3")
 WAIT_SECONDS = 15
 
 
@@ -128,32 +126,6 @@ def assert_shows_fraction(text, recorded, what):
 
 
 # ----------------------------------------------------------------------------- the browser
-
-def start_chromium():
-    """Headless Chromium through the Debian chromedriver (no Selenium Manager, no network)."""
-    missing = [name for name, present in (("python3-selenium", webdriver is not None),
-                                          (CHROMIUM, os.access(CHROMIUM, os.X_OK)),
-                                          (CHROMEDRIVER, os.access(CHROMEDRIVER, os.X_OK)))
-               if not present]
-    if missing:
-        pytest.fail(f"missing {', '.join(missing)}: {INSTALL_HINT}", pytrace=False)
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
-                     "--disable-dev-shm-usage", "--no-first-run", "--disable-sync",
-                     "--disable-background-networking", "--disable-component-update",
-                     "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE localhost"):
-        options.add_argument(argument)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    try:
-        driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    except WebDriverException as error:
-        pytest.fail(f"Chromium did not start through chromedriver: {error.msg}\n({INSTALL_HINT})",
-                    pytrace=False)
-    driver.set_page_load_timeout(60)
-    driver.set_script_timeout(30)
-    return driver
-
 
 class Explorer:
     """A browser tab with the explorer page, driven through the page's DOM contract.
