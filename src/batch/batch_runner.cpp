@@ -5,12 +5,14 @@
 #include <time.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <ctime>
 #include <exception>
 #include <mutex>
 
 #include "records/run_files.h"
+#include "util/interruption.h"
 #include "util/worker_pool.h"
 
 namespace camcov::batch {
@@ -70,16 +72,22 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
   }
   observer.resuming(resumption);
   std::mutex mutex;
+  std::atomic<bool> interrupted{false};  // once set, the jobs not started are left for a resume
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
+    if (interrupted) return;
     const BatchJob& job = jobs[pending[k]];
     records::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
     const auto wallStart = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     try {
+      throwIfInterrupted();
       const records::RunRecord run = runJob(job.spec);
       records::writeRunFiles(run, folder.runsDir());
       folder.removeFailure(job.stem);
       outcome.summary = run.summary;
+    } catch (const Interrupted&) {
+      interrupted = true;  // not the job's failure: it runs again on a resume
+      return;
     } catch (const std::exception& e) {
       outcome.failed = true;
       outcome.error = e.what();
@@ -102,6 +110,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
   for (const auto& [stem, t] : batch.timings)
     timings[stem] = t;
   folder.writeTimings(timings);
+  if (interrupted) throw Interrupted();
   return batch;
 }
 

@@ -48,7 +48,9 @@ class BatchObserver {
 
 // Runs on `workers` threads (at least 1) every job whose results the folder does not hold
 // yet for the same parameters and scene file (resume), writing each as it finishes, then
-// the folder's timings (those of earlier runs kept).
+// the folder's timings (those of earlier runs kept). Throws Interrupted (util/interruption.h)
+// once the jobs in flight have stopped when the caller's check asks it to, with the finished
+// jobs' files and timings written: a resume runs the rest.
 BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder& folder,
                   unsigned workers, BatchObserver& observer);
 

@@ -15,4 +15,5 @@ PYBIND11_MODULE(camcov, m) {
   camcov::python::bindScene(m);
   camcov::python::bindVisibility(m);
   camcov::python::bindRuns(m);
+  camcov::python::bindInterruption(m);
 }

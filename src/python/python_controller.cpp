@@ -5,9 +5,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "python/bindings.h"
 #include "python/numpy_arrays.h"
 #include "python/python_scene.h"
 #include "util/input_error.h"
+#include "util/interruption.h"
 
 namespace camcov::python {
 
@@ -60,7 +62,13 @@ void PythonController::control(const control::Observation& o,
       }
     }
     if (parts > 2) takeEventsFrom(result[py::int_(2)], o.time, commands.size());
-  } catch (const py::error_already_set& e) {
+  } catch (py::error_already_set& e) {
+    // Ctrl-C while the controller ran: the whole call stops, not just this run.
+    if (e.matches(PyExc_KeyboardInterrupt)) {
+      e.restore();
+      keepPythonError();
+      throw Interrupted();
+    }
     // The Python error as text: the exception object must not outlive the GIL.
     throw std::runtime_error(std::string("Python controller: ") + e.what());
   }

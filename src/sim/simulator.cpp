@@ -9,6 +9,7 @@
 #include "reward/reward_model.h"
 #include "safety/safety_filter.h"
 #include "safety/step_contacts.h"
+#include "util/interruption.h"
 
 namespace camcov::sim {
 namespace {
@@ -128,6 +129,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   summary.minObjectDistance = summary.minCameraDistance = kInf;
   reward::RewardTerms previous;
   for (int k = 0; k <= steps; ++k) {
+    throwIfInterrupted();     // a caller that can be interrupted (Python) stops within a step
     const double t = k * dt;  // not accumulated: no drift over long runs
     kinematics.worldAt(t, world);
     measure.setWorld(world);

@@ -1,0 +1,46 @@
+#pragma once
+// Stopping long work when the person who started it asks: a run checks between its steps and
+// a batch before each job, so that Ctrl-C in Python ends camcov.run, simulate and bench within
+// a step (the CLI needs none of it: SIGINT ends the process, and what it wrote is whole). The
+// caller that can be interrupted installs a check for the duration of its call.
+#include <atomic>
+#include <stdexcept>
+
+namespace camcov {
+
+class Interrupted : public std::runtime_error {
+ public:
+  Interrupted() : std::runtime_error("interrupted") {}
+};
+
+// Returns true when the work must stop. Called from any thread of the work, once a step: it
+// must be cheap, and safe to call concurrently.
+using InterruptCheck = bool (*)();
+
+namespace detail {
+inline std::atomic<InterruptCheck>& installedInterruptCheck() {
+  static std::atomic<InterruptCheck> check{nullptr};
+  return check;
+}
+}  // namespace detail
+
+// Installs `check` while it lives (the previous one after).
+class InterruptScope {
+ public:
+  explicit InterruptScope(InterruptCheck check)
+      : previous_(detail::installedInterruptCheck().exchange(check)) {}
+  ~InterruptScope() { detail::installedInterruptCheck().store(previous_); }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+ private:
+  InterruptCheck previous_;
+};
+
+// Throws Interrupted if the installed check says the work must stop.
+inline void throwIfInterrupted() {
+  const InterruptCheck check = detail::installedInterruptCheck().load(std::memory_order_relaxed);
+  if (check != nullptr && check()) throw Interrupted();
+}
+
+}  // namespace camcov
