@@ -23,6 +23,8 @@ Registration addValidateCommand(CLI::App& app) {
                 std::cout << fmt::format("ok    {}: {} target(s), {} obstacle(s), {} camera(s)\n",
                                          file, s.targets.size(), s.obstacles.size(),
                                          s.cameras.size());
+                for (const std::string& warning : s.warnings)
+                  std::cout << fmt::format("  warning: {}\n", warning);
               } catch (const InputError& e) {
                 std::cout << "error " << e.what() << "\n";
                 exitCode = 2;

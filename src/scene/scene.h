@@ -84,6 +84,9 @@ struct Scene {
   std::vector<MovingObject> obstacles;
   std::vector<CameraSpec> cameras;
   std::optional<Pitch> pitch;  // "pitch": {"length", "width"} (our extension)
+  // What the loader found wrong but allowed ("targets[3]: leaves the boundary: …"), for
+  // `camcov validate` to print.
+  std::vector<std::string> warnings;
 
   // Some object comes and goes (a recorded track): its records carry targetsPresent.
   bool hasPresenceWindows() const;

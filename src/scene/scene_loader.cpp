@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "scene/motion_containment.h"
 #include "scene/read_text.h"
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
@@ -350,6 +351,17 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   if (const PlacementDefect defect = findPlacementDefect(scene); !defect.jsonPath.empty()) {
     throw SceneError(sourceName, defect.jsonPath, defect.problem);
   }
+  // Every object that leaves the boundary at some time, at once.
+  const MotionCheck motion = checkMotion(scene);
+  if (!motion.errors.empty()) {
+    std::string others;
+    for (std::size_t k = 1; k < motion.errors.size(); ++k)
+      others += "; " + motion.errors[k].jsonPath + ": " + motion.errors[k].problem;
+    throw SceneError(sourceName, motion.errors.front().jsonPath,
+                     motion.errors.front().problem + others);
+  }
+  for (const PlacementDefect& w : motion.warnings)
+    scene.warnings.push_back(w.jsonPath + ": " + w.problem);
   return scene;
 }
 

@@ -17,6 +17,10 @@ struct BadCase {
 
 const BadCase kBadCases[] = {
     {"invalid_json", "", "invalid JSON"},
+    // Objects that leave the boundary during their motion, not at t = 0: named with a time.
+    {"waypoint_outside_boundary", "targets[0]", "at t = 20 s (reference point at (25 5))"},
+    {"rotating_bar_through_wall", "targets[0]", "it turns within 1.5 m of the boundary's edge"},
+    {"deformation_through_boundary", "targets[0]", "leaves the boundary: at t = 1.6"},
     {"empty_file", "", "invalid JSON"},
     {"huge_number", "", "number overflow"},
     {"top_level_array", "", "expected an object"},
