@@ -83,5 +83,82 @@ TEST(CliGenerate, TheScriptRemakesTheCommittedLargeScenesToTheByte) {
   EXPECT_EQ(v.exitCode, 0) << v.out << v.err;
 }
 
+// `camcov generate --family` (scene/scene_families.h): N validated scenes named by family and
+// seed, the table with `--family list`; bad input exits 2 and leaves no folder behind.
+TEST(GenerateFamilies, WritesCountScenesNamedByFamilyAndSeedThatValidateAccepts) {
+  const ScratchDir dir;
+  const fs::path out = dir / "l";
+  const auto r = runCamcov("generate --family l_rooms --count 3 --seed 5 -o " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("3 scene(s) of family l_rooms, seeds 5 to 7 (tune seeds)"),
+            std::string::npos)
+      << r.out;
+  const auto files = jsonFilesIn(out);
+  ASSERT_EQ(files.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    const std::string name = "l_rooms-" + std::to_string(5 + i) + ".json";
+    EXPECT_EQ(files[i].filename(), name);
+    const nlohmann::json scene = nlohmann::json::parse(readFile(files[i]));
+    EXPECT_EQ(scene["description"].get<std::string>().rfind(
+                  "family l_rooms seed " + std::to_string(5 + i) + ": L room", 0),
+              0u)
+        << scene["description"];
+  }
+  const auto v = runCamcov("validate " + (out / "*.json").string());
+  EXPECT_EQ(v.exitCode, 0) << v.out << v.err;
+
+  const fs::path again = dir / "again";
+  ASSERT_EQ(runCamcov("generate --family l_rooms --count 1 --seed 6 -o " + again.string()).exitCode,
+            0);
+  EXPECT_EQ(readFile(again / "l_rooms-6.json"), readFile(out / "l_rooms-6.json"));
+}
+
+TEST(GenerateFamilies, ListPrintsEveryFamilyWithItsTuneAndTestSeeds) {
+  for (const std::string option : {"--family list", "--list-families"}) {
+    SCOPED_TRACE(option);
+    const auto r = runCamcov("generate " + option);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* name : {"published_like", "l_rooms", "corridors", "deforming_targets"})
+      EXPECT_NE(r.out.find(name), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("100001-101000"), std::string::npos) << r.out;
+  }
+}
+
+TEST(GenerateFamilies, AnUnknownFamilyExitsTwoNamingTheKnownOnes) {
+  const ScratchDir dir;
+  const fs::path out = dir / "scenes";
+  const auto r = runCamcov("generate --family l_room --count 3 -o " + out.string());
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("l_room"), std::string::npos) << r.err;
+  for (const char* name : {"published_like", "l_rooms", "u_rooms", "big_teams"})
+    EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(GenerateFamilies, BadCountsAMissingOutAndOptionsOfOneSceneExitTwo) {
+  const ScratchDir dir;
+  const fs::path out = dir / "scenes";
+  for (const std::string& bad : std::vector<std::string>{
+           "--family l_rooms --count 0 -o " + out.string(),
+           "--family l_rooms --count 100001 -o " + out.string(),
+           "--family l_rooms --count -1 -o " + out.string(),
+           "--family l_rooms --count 3",  // no -o
+           "--family l_rooms --targets 3 -o " + out.string(),
+           "--family l_rooms --seed 18446744073709551615 --count 2 -o " + out.string(),
+           "--count 3 -o " + (dir / "one.json").string(),  // --count without --family
+       }) {
+    SCOPED_TRACE(bad);
+    const auto r = runCamcov("generate " + bad);
+    EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+    EXPECT_FALSE(r.err.empty());
+    EXPECT_TRUE(fs::is_empty(dir.path())) << "something was left behind";
+  }
+  const fs::path file = dir / "file";
+  std::ofstream(file) << "x";
+  const auto r = runCamcov("generate --family l_rooms -o " + file.string());
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_EQ(readFile(file), "x");
+}
+
 }  // namespace
 }  // namespace camcov::testing
