@@ -48,8 +48,8 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) 
     std::string list;
     for (const auto& m : missing)
       list += (list.empty() ? "" : ", ") + m;
-    throw InputError(
-        fmt::format("{}:1: missing column(s) {} (the header is {})", file, list, lines.front()));
+    throw InputError(fmt::format("{}:1: missing column(s) {} (the header is {})", file, list,
+                                 printable(lines.front())));
   }
   const auto player = column("player"), frame = column("frame"), x = column("x"), y = column("y"),
              team = column("team"), colour = column("bgcolor");
