@@ -35,11 +35,12 @@ class Visibility {
   // with the GIL and the lock held: the scratch is the caller's until it lets the lock go.
   std::unique_lock<std::mutex> evaluate(const std::vector<geometry::Pose>& poses,
                                         std::size_t teamSize, bool withSegments) {
-    // One pose per field of view (camera j with θ_j), or none: a team of nobody.
-    if (teamSize != 0 && teamSize != cameras_) {
+    // Pose j is camera j, with θ_j: a team may be the first cameras only (as `camcov inspect
+    // --cameras` takes fewer poses than cameras), never more poses than fields of view.
+    if (teamSize > cameras_) {
       throw py::value_error(std::to_string(teamSize) + " poses per team, but " +
                             std::to_string(cameras_) +
-                            " fields of view: give one pose per field of view");
+                            " fields of view: pose j is camera j, with θ_j");
     }
     py::gil_scoped_release free;
     std::unique_lock lock(mutex_);

@@ -64,9 +64,9 @@ def test_bad_shapes_raise_value_errors(tiny):
         visibility.terms(np.zeros((2, 2)))
     with pytest.raises(ValueError, match="fields of view"):
         visibility.terms(np.zeros((5, 3)))
-    many = camcov.Visibility(scene.world_at(0.0), [0.5, 0.5, 0.5])
-    with pytest.raises(ValueError, match="1 poses per team, but 3 fields of view"):
-        many.terms(np.zeros((1, 3)))
+    one = camcov.Visibility(scene.world_at(0.0), [0.5])
+    with pytest.raises(ValueError, match="3 poses per team, but 1 fields of view"):
+        one.terms(np.zeros((3, 3)))
     with pytest.raises(ValueError, match="half_fovs"):
         camcov.Visibility(scene.world_at(0.0), [])
 
