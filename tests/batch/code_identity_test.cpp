@@ -17,8 +17,10 @@ namespace fs = std::filesystem;
 // The identity the build script computes for the files listed, as code_identity.cpp has it.
 std::string identityOf(const fs::path& dir, const std::vector<fs::path>& files) {
   std::string list;
-  for (const auto& f : files)
-    list += (list.empty() ? "" : ";") + f.string();
+  for (const auto& f : files) {
+    if (!list.empty()) list += ';';
+    list += f.string();
+  }
   std::ofstream(dir / "list.txt") << list;
   const fs::path out = dir / "identity.cpp";
   const std::string command = std::string(CAMCOV_CMAKE) + " -DROOT=" + dir.string() +
