@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <tuple>
 
 #include "geometry/ring.h"
@@ -35,22 +36,28 @@ void meetings(Vec2 a, Vec2 b, Vec2 c, Vec2 d, std::vector<double>& out) {
 
 // The pieces of segment [a, b] (as parameter intervals) that lie `bad` with respect to
 // `ring`, judged at the middle of each piece between the places where it meets the ring's
-// edges.
+// `edges` (the indices of the edges that can meet it: those near it). A segment that meets
+// none lies on one side: `uncutBad` says which when the caller knows, else it is located.
 template <class Bad>
 std::vector<std::pair<double, double>> badPieces(Vec2 a, Vec2 b, const geometry::Ring& ring,
-                                                 const Bad& bad) {
+                                                 std::span<const std::size_t> edges,
+                                                 std::optional<bool> uncutBad, const Bad& bad) {
   std::vector<double> cuts{0.0, 1.0};
   const double minX = std::min(a.x, b.x), maxX = std::max(a.x, b.x);
   const double minY = std::min(a.y, b.y), maxY = std::max(a.y, b.y);
-  for (std::size_t i = 0; i < ring.size(); ++i) {
+  for (const std::size_t i : edges) {
     const Vec2 c = ring[i], d = ring[(i + 1) % ring.size()];
     if (std::max(c.x, d.x) < minX || std::min(c.x, d.x) > maxX || std::max(c.y, d.y) < minY ||
         std::min(c.y, d.y) > maxY)
       continue;
     meetings(a, b, c, d, cuts);
   }
-  std::sort(cuts.begin(), cuts.end());
   std::vector<std::pair<double, double>> pieces;
+  if (cuts.size() == 2 && uncutBad) {
+    if (*uncutBad) pieces.emplace_back(0.0, 1.0);
+    return pieces;
+  }
+  std::sort(cuts.begin(), cuts.end());
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (cuts[k + 1] - cuts[k] <= 0.0) continue;
     if (bad(geometry::locate(ring, a + (b - a) * (0.5 * (cuts[k] + cuts[k + 1])))))
@@ -143,25 +150,56 @@ struct Overhang {
   }
 };
 
-Overhang translationOverhang(const geometry::Ring& shape, const std::vector<Leg>& path,
-                             const geometry::Ring& boundary, double velocity) {
+// Only what lies near a leg can meet the object on it: the boundary's edges and vertices in
+// the box the object sweeps (its shape's box at both ends), found once per leg, so that a
+// large room costs a pass per leg, not one per vertex of the object.
+Overhang translationOverhang(const geometry::Ring& shape, bool shapeStartsInside,
+                             const std::vector<Leg>& path, const geometry::Ring& boundary,
+                             double velocity) {
+  const auto outside = [](Containment c) { return c == Containment::Outside; };
+  const auto inside = [](Containment c) { return c == Containment::Inside; };
+  // Whether each vertex of the object is known not to be outside where the leg starts: at
+  // t = 0 the loader has placed the object's own shape inside; a hull is located.
+  std::vector<char> startsInside(shape.size(), 1);
+  for (std::size_t v = 0; v < shape.size() && !shapeStartsInside; ++v)
+    startsInside[v] = !outside(geometry::locate(boundary, path.front().from + shape[v]));
+  std::vector<std::size_t> shapeEdges(shape.size());
+  for (std::size_t i = 0; i < shape.size(); ++i)
+    shapeEdges[i] = i;
+  const geometry::Box own = geometry::boundingBox(shape);
   Overhang out;
+  std::vector<std::size_t> near;
   for (const Leg& leg : path) {
     const Vec2 move = leg.to - leg.from;
+    const Vec2 lo{own.min.x + std::min(leg.from.x, leg.to.x),
+                  own.min.y + std::min(leg.from.y, leg.to.y)};
+    const Vec2 hi{own.max.x + std::max(leg.from.x, leg.to.x),
+                  own.max.y + std::max(leg.from.y, leg.to.y)};
+    const auto inBox = [&](Vec2 p) {
+      return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+    };
+    near.clear();
+    for (std::size_t i = 0; i < boundary.size(); ++i) {
+      const Vec2 c = boundary[i], d = boundary[(i + 1) % boundary.size()];
+      if (std::max(c.x, d.x) >= lo.x && std::min(c.x, d.x) <= hi.x && std::max(c.y, d.y) >= lo.y &&
+          std::min(c.y, d.y) <= hi.y)
+        near.push_back(i);
+    }
     for (std::size_t v = 0; v < shape.size(); ++v) {
       const Vec2 a = leg.from + shape[v], b = a + move;
-      for (const auto& piece :
-           badPieces(a, b, boundary, [](Containment c) { return c == Containment::Outside; })) {
+      const auto pieces = badPieces(a, b, boundary, near, !startsInside[v], outside);
+      for (const auto& piece : pieces) {
         const auto [depth, u] = deepest(a, b, piece, boundary);
         out.take(std::max(depth, 1e-12),
                  fmt::format("{} its vertex {} lies {:.3g} m outside the boundary",
                              at(leg, u, velocity), v, depth));
       }
+      if (!pieces.empty()) startsInside[v] = !outside(geometry::locate(boundary, b));
     }
     for (std::size_t w = 0; w < boundary.size(); ++w) {
+      if (!inBox(boundary[w])) continue;  // never within the object's reach on this leg
       const Vec2 a = boundary[w] - leg.from, b = a - move;  // in the object's frame
-      for (const auto& piece :
-           badPieces(a, b, shape, [](Containment c) { return c == Containment::Inside; })) {
+      for (const auto& piece : badPieces(a, b, shape, shapeEdges, std::nullopt, inside)) {
         const auto [depth, u] = deepest(a, b, piece, shape);
         out.take(std::max(depth, 1e-12),
                  fmt::format("{} the boundary's vertex {} ({:.6g} {:.6g}) lies {:.3g} m inside it",
@@ -262,9 +300,10 @@ MotionCheck checkMotion(const Scene& scene) {
       if (o.track || o.isStatic()) continue;  // tracks: their samples; still: at t = 0
       const geometry::Ring shape = envelope(o);
       const std::vector<Leg> path = legs(o);
-      const Overhang overhang = o.angularVelocity != 0.0
-                                    ? turningOverhang(shape, path, scene.boundary, o.velocity)
-                                    : translationOverhang(shape, path, scene.boundary, o.velocity);
+      const Overhang overhang =
+          o.angularVelocity != 0.0
+              ? turningOverhang(shape, path, scene.boundary, o.velocity)
+              : translationOverhang(shape, !o.deformation, path, scene.boundary, o.velocity);
       if (overhang.depth <= 0.0) continue;
       std::string problem = overhang.where;
       double allowed = kAllowedOverhang * radiusOf(o.shape);
