@@ -1,6 +1,5 @@
 #include "cli/number_options.h"
 
-#include <functional>
 #include <string>
 
 #include "util/person_numbers.h"

@@ -49,7 +49,7 @@ void keepPythonError() {
 
 void bindInterruption(py::module_&) {
   signalThread = std::this_thread::get_id();
-  detail::installedInterruptCheck().store(&signalRaised);
+  installInterruptCheck(&signalRaised);
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);

@@ -52,6 +52,11 @@ Comparison comparisonFrom(const nlohmann::json& c) {
                             ci->at(1).is_null() ? nan : ci->at(1).get<double>()};
   }
   out.seedsNeeded = c.value("seedsNeeded", 0);
+  // The verdict its name stands for ("": nothing compared, left as a default-made one).
+  out.verdict = out.winner == out.method                    ? Verdict::Better
+                : out.winner == "undecided"                 ? Verdict::Undecided
+                : out.winner == "tie" || out.winner.empty() ? Verdict::Tie
+                                                            : Verdict::Worse;
   return out;
 }
 
@@ -143,12 +148,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
     c.method = method;
     if (others == nullptr || others->empty() || runs.empty()) return c;
     const RunsComparison r = compareRuns(runs, *others);
-    c.pValue = r.pValue;
-    c.exact = r.exact;
-    c.meanDifference = r.meanDifference;
-    c.a12 = r.a12;
-    c.meanDifferenceCI = r.meanDifferenceCI;
-    c.seedsNeeded = r.seedsNeeded;
+    static_cast<RunsComparison&>(c) = r;
     tally.method = method;
     c.winner = r.verdict == Verdict::Undecided ? "undecided"
                : r.verdict == Verdict::Tie     ? "tie"

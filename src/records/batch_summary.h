@@ -80,18 +80,13 @@ int seedsToReachSignificance();
 // Both samples must be non-empty.
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
 
-// One method against another (the reference, or for pairs the other) on one scene.
-struct Comparison {
+// One method against another (the reference, or for pairs the other) on one scene: the test
+// of their runs, and its verdict named.
+struct Comparison : RunsComparison {
   std::string scene;
   std::string method;
   // The method, the other, "tie", "undecided", or "" when either is missing.
   std::string winner;
-  double pValue = 1.0;
-  bool exact = false;
-  double meanDifference = 0.0;  // mean coverage of the method minus the other's
-  double a12 = 0.5;
-  Interval meanDifferenceCI;
-  int seedsNeeded = 0;
 };
 
 // The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided (4 seeds)",

@@ -1,8 +1,8 @@
 #pragma once
 // Stopping long work when the person who started it asks: a run checks between its steps and
 // a batch before each job, so that Ctrl-C in Python ends camcov.run, simulate and bench within
-// a step (the CLI needs none of it: SIGINT ends the process, and what it wrote is whole). The
-// caller that can be interrupted installs a check for the duration of its call.
+// a step (the CLI needs none of it: SIGINT ends the process, and what it wrote is whole). A
+// caller that can be interrupted installs a check.
 #include <atomic>
 #include <stdexcept>
 
@@ -24,18 +24,11 @@ inline std::atomic<InterruptCheck>& installedInterruptCheck() {
 }
 }  // namespace detail
 
-// Installs `check` while it lives (the previous one after).
-class InterruptScope {
- public:
-  explicit InterruptScope(InterruptCheck check)
-      : previous_(detail::installedInterruptCheck().exchange(check)) {}
-  ~InterruptScope() { detail::installedInterruptCheck().store(previous_); }
-  InterruptScope(const InterruptScope&) = delete;
-  InterruptScope& operator=(const InterruptScope&) = delete;
-
- private:
-  InterruptCheck previous_;
-};
+// Installs `check` for the rest of the process (the Python module, when it is imported);
+// nullptr: none, as in the CLI.
+inline void installInterruptCheck(InterruptCheck check) {
+  detail::installedInterruptCheck().store(check);
+}
 
 // Throws Interrupted if the installed check says the work must stop.
 inline void throwIfInterrupted() {

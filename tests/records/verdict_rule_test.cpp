@@ -114,7 +114,9 @@ TEST(VerdictRule, SummaryCountsUndecidedScenesAndWritesTheSeedsNeeded) {
   EXPECT_EQ(summary.tallies[0].ties, 0);
   const nlohmann::json j = summaryToJson(summary);
   EXPECT_EQ(j.at("comparisons").at(0).at("seedsNeeded"), 4);
-  EXPECT_EQ(summaryFromJson(j, "test").comparisons[0].seedsNeeded, 4);
+  const Comparison back = summaryFromJson(j, "test").comparisons[0];
+  EXPECT_EQ(back.seedsNeeded, 4);
+  EXPECT_EQ(back.verdict, Verdict::Undecided) << "the verdict read back from its name";
 }
 
 TEST(VerdictRule, PublishedBenchmarkKeepsItsTwentySeedVerdicts) {
