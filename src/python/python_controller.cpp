@@ -137,12 +137,14 @@ def fingerprint(factory):
 )py";
 
 std::string fingerprintOf(const py::object& factory) {
-  static const py::object fingerprint = [] {
+  // Made once and never destroyed: a static py::object would be released after Python's
+  // interpreter has finalized, at the process's exit.
+  static const py::object* const fingerprint = [] {
     py::dict scope;
     py::exec(kFingerprint, scope);
-    return py::object(scope["fingerprint"]);
+    return new py::object(scope["fingerprint"]);
   }();
-  return py::str(fingerprint(factory));
+  return py::str((*fingerprint)(factory));
 }
 
 // The factory's attribute `name` as text, or `otherwise`.

@@ -271,7 +271,10 @@ std::string sampledExit(const MovingObject& o, const std::vector<Leg>& path,
   const Leg& last = path.back();
   const double lap = last.start + geometry::distance(last.from, last.to) / o.velocity;
   const double horizon = 2.0 * std::max({o.deformation->period, 2.0 * lap, 1e-9});
-  constexpr int kSamples = 4000;
+  // 4,000 instants, fewer for a large shape in a large room: each locates every vertex, and
+  // the whole search stays within about 1e8 edge tests.
+  const double work = static_cast<double>(o.shape.size()) * static_cast<double>(boundary.size());
+  const int kSamples = static_cast<int>(std::clamp(1e8 / std::max(work, 1.0), 64.0, 4000.0));
   geometry::Ring shape;
   for (int k = 0; k <= kSamples; ++k) {
     const double t = horizon * k / kSamples;
