@@ -125,13 +125,15 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
     keepTravel[j] = pathTravelTime(keepPaths[j], camera.maxVelocity, camera.maxAngularVelocity);
     longest = std::max(longest, goTravel[j]);
   }
-  const double horizon = moving_.value_or(true) ? ours.horizon : ours.staticHorizon;
+  // The window is H, or the whole trip where the trip is longer: both options are judged over
+  // the same time, the transit's coverage included, and a far goal is never refused for its
+  // distance alone (a cliff at H left teams that start far from everything standing still).
+  const double horizon =
+      std::max(moving_.value_or(true) ? ours.horizon : ours.staticHorizon, longest);
   const double go = averageCoverageAhead(model_, {goPaths, goTravel}, horizon, ours.transitSamples);
   const double stay =
       averageCoverageAhead(model_, {keepPaths, keepTravel}, horizon, ours.transitSamples);
-  // A goal that takes longer to reach than the horizon is not worth the trip: the transit
-  // would be all that is judged, at an instant long past when it ends.
-  const bool better = longest <= horizon && go > stay + ours.margin * std::abs(stay);
+  const bool better = go > stay + ours.margin * std::abs(stay);
   raise(observation.time, "global", -1,
         fmt::format("global reward {:.4f} ({:.4f} sampled, travel {:.1f} s); coverage over the "
                     "next {:g} s: {:.4f} vs {:.4f} kept: {}",

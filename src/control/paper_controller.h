@@ -30,12 +30,12 @@ namespace camcov::control {
 
 // Our method (`--method camcov`, issue 19) is this loop with the choices of params.camcov
 // (docs/method.md, "Our method"): the global candidate (improved camera by camera when
-// camcov.refine > 0) is judged by the coverage the team would average over the next H seconds,
-// transit included, against the same for what it is committed to (camcov.horizon, while
-// anything moves, else camcov.staticHorizon; the first global optimization waits one step to
-// see whether anything moves); a camera goes straight to its goal where that move is valid
-// (camcov.straightPaths) and on the way looks where it sees most (camcov.transitYaw). Its
-// "global" events say so.
+// camcov.refine > 0) is judged by the coverage the team would average over the next H seconds
+// (or over the whole trip where it takes longer), transit included, against the same for what
+// it is committed to (camcov.horizon, while anything moves, else camcov.staticHorizon; the
+// first global optimization waits one step to see whether anything moves); a camera goes straight
+// to its goal where that move is valid (camcov.straightPaths) and on the way looks where it sees
+// most (camcov.transitYaw). Its "global" events say so.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
 class PaperController final : public Controller {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "control/local_controller.h"
 #include "kinematics/kinematics.h"
 #include "reward/reward_model.h"
@@ -136,17 +138,27 @@ TEST(CamcovMethod, WaitsAStepToSeeMotionThenJudgesOverTheStaticHorizonAndGoesStr
   EXPECT_GT(summary.averageCoverage, sim::simulate(s, p, paper, none).averageCoverage * 0.9);
 }
 
-TEST(CamcovMethod, KeepsWhatItHasWhenTheGoalLiesBeyondTheHorizon) {
+TEST(CamcovMethod, TakesAFarBetterGoalThoughTheTripOutlastsTheHorizon) {
+  // Both cameras look away, so any goal is better; with a horizon shorter than every trip the
+  // window becomes the trip itself and the goal is taken, not refused for its distance.
   const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
   params::Parameters p = quick();
   p.sim.duration = 1.0;
-  p.camcov.staticHorizon = 1e-3;  // no goal can be reached within it
+  p.camcov.staticHorizon = 1e-3;
   PaperController controller(s, p, 1, PaperController::Variant::Camcov);
   EventLog log;
   sim::simulate(s, p, controller, log);
   ASSERT_FALSE(log.events.empty());
-  EXPECT_EQ(log.events[0].kind, "global");
-  EXPECT_EQ(log.events[0].reason, "keep") << log.events[0].detail;
+  const ControlEvent& global = log.events[0];
+  ASSERT_EQ(global.kind, "global");
+  EXPECT_EQ(global.reason, "replan") << global.detail;
+  double travel = 0.0, window = 0.0;
+  ASSERT_EQ(
+      std::sscanf(global.detail.c_str() + global.detail.find("travel"), "travel %lf", &travel), 1);
+  ASSERT_EQ(std::sscanf(global.detail.c_str() + global.detail.find("next"), "next %lf", &window),
+            1);
+  EXPECT_GT(travel, 0.0);
+  EXPECT_NEAR(window, travel, 0.05 + 1e-3 * travel) << global.detail;
 }
 
 }  // namespace
