@@ -16,6 +16,8 @@ namespace {
 
 std::string navigation(const ReportData& data) {
   std::string links =
+      data.summary.groups.size() > 1 ? "<li><a href=\"#groups\">By family or folder</a></li>" : "";
+  links +=
       "<li><a href=\"#summary\">Summary</a></li><li><a href=\"#box-plots\">Per scene (Fig. 4)"
       "</a></li><li><a href=\"#time-series\">Over time (Fig. 5)</a></li><li><a "
       "href=\"#scenes\">Scenes (Fig. 3)</a></li><li><a href=\"#parameters\">Parameters "
@@ -44,6 +46,7 @@ std::string buildReportHtml(const ReportData& data, const BuildContext& context)
   html += "<div class=\"page\">\n";
   html += headerSection(data, context);
   html += "<main>\n";
+  html += groupsSection(data);
   html += summarySection(data);
   html += pairsSection(data);
   html += optimumSection(data);

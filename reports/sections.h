@@ -12,6 +12,9 @@ namespace camcov::reports {
 std::string headerSection(const ReportData& data, const BuildContext& context);
 // 2. Per scene and method: coverage, utilization, safety; winner and p; grouped, sortable.
 std::string summarySection(const ReportData& data);
+// 2a. Per group of scenes (family or folder), when there are several: mean coverage and
+// wins/ties/losses.
+std::string groupsSection(const ReportData& data);
 // 2b. The methods other than the reference against each other (e.g. ours against the paper's).
 std::string pairsSection(const ReportData& data);
 // 2c. Scenes that hold still: each method's final coverage against the offline optimum.

@@ -9,6 +9,7 @@
 #include "control/methods.h"
 #include "params/parameter_table.h"
 #include "records/run_files.h"
+#include "scene/scene_families.h"
 #include "scene/scene_loader.h"
 #include "util/code_identity.h"
 #include "util/input_error.h"
@@ -101,7 +102,10 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   }
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
-    plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash});
+    plan.manifest.scenes.push_back(
+        {s.scene.name, file.string(), s.hash,
+         scene::familyNamedIn(s.scene.description)
+             .value_or(fs::absolute(file).lexically_normal().parent_path().filename().string())});
   }
   const std::uint64_t total = plan.manifest.scenes.size() * r.methods.size() * r.seeds;
   if (total > kMaxJobs) {

@@ -54,6 +54,43 @@ std::string BenchOutputOptions::referenceAmong(const std::vector<std::string>& m
 
 namespace {
 
+// "6/2/0" wins, ties, losses (and "+3?" undecided).
+std::string tallyText(const records::Tally& t) {
+  return fmt::format("{}/{}/{}{}", t.wins, t.ties, t.losses,
+                     t.undecided > 0 ? fmt::format("+{}?", t.undecided) : "");
+}
+
+// Per group of scenes (family or folder), when there is more than one: each method's mean
+// coverage there, and the wins/ties/losses of every comparison the totals count.
+void printGroups(const records::BatchSummary& summary, const std::vector<std::string>& methods) {
+  if (summary.groups.size() < 2) return;
+  std::vector<std::string> names;
+  for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
+    for (const auto& t : *tallies)
+      names.push_back(t.method + " vs " + (t.against.empty() ? summary.reference : t.against));
+  }
+  std::string header = fmt::format("{:<20} {:>6}", "by family or folder", "scenes");
+  for (const auto& method : methods)
+    header += fmt::format(" {:>9}", method);
+  for (const auto& name : names)
+    header += fmt::format("  {:>16}", name);
+  std::cout << header << "  (mean average coverage; wins/ties/losses)\n";
+  for (const auto& g : summary.groups) {
+    std::string line = fmt::format("{:<20} {:>6}", g.name, g.scenes.size());
+    for (const auto& method : methods) {
+      const auto it = std::find_if(g.meanCoverage.begin(), g.meanCoverage.end(),
+                                   [&](const auto& m) { return m.first == method; });
+      line += it == g.meanCoverage.end() ? fmt::format(" {:>9}", "-")
+                                         : fmt::format(" {:>9.3f}", it->second);
+    }
+    for (const auto* tallies : {&g.tallies, &g.pairTallies}) {
+      for (const auto& t : *tallies)
+        line += fmt::format("  {:>16}", tallyText(t));
+    }
+    std::cout << line << "\n";
+  }
+}
+
 // Average coverage per scene and method, then each method against the reference.
 void printSummary(const records::BatchSummary& summary, const std::vector<std::string>& methods) {
   std::map<std::pair<std::string, std::string>, const records::MethodSummary*> rows;
@@ -101,6 +138,7 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
         undecided, records::kSignificance, records::seedsToReachSignificance(),
         records::seedsToReachSignificance());
   }
+  printGroups(summary, methods);
   std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
 }
 
@@ -109,8 +147,11 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
 int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
                       const std::vector<records::JobOutcome>& outcomes,
                       const BenchOutputOptions& options, unsigned workers) {
-  const records::BatchSummary summary =
-      records::summarize(outcomes, options.referenceAmong(manifest.methods), manifest.methods);
+  std::map<std::string, std::string> groupOf;
+  for (const records::SceneEntry& scene : manifest.scenes)
+    groupOf[scene.name] = scene.group;
+  const records::BatchSummary summary = records::summarize(
+      outcomes, options.referenceAmong(manifest.methods), manifest.methods, groupOf);
   folder.writeSummary(summary);
   const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
   printSummary(summary, manifest.methods);

@@ -41,8 +41,10 @@ nlohmann::json looksToJson(const std::map<std::string, MethodLook>& looks) {
 nlohmann::json manifestToJson(const BatchManifest& m) {
   nlohmann::json scenes = nlohmann::json::array();
   for (const auto& s : m.scenes) {
-    scenes.push_back(
-        {{"name", s.name}, {"file", s.file}, {"hash", fmt::format("{:016x}", s.hash)}});
+    scenes.push_back({{"name", s.name},
+                      {"file", s.file},
+                      {"hash", fmt::format("{:016x}", s.hash)},
+                      {"group", s.group}});
   }
   return {{"format", "camcov-batch/1"},
           {"toolVersion", m.toolVersion},
@@ -70,7 +72,8 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
     m.seeds = j.at("seeds").get<std::uint64_t>();
     for (const auto& s : j.at("scenes")) {
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),
-                          std::stoull(s.at("hash").get<std::string>(), nullptr, 16)});
+                          std::stoull(s.at("hash").get<std::string>(), nullptr, 16),
+                          s.value("group", std::string())});
     }
     m.command = j.at("command").get<std::vector<std::string>>();
     return m;

@@ -25,6 +25,9 @@ struct SceneEntry {
   std::string name;
   std::string file;
   std::uint64_t hash = 0;
+  // What the summary groups it under: the family a generated scene was drawn from, else the
+  // name of the folder its file is in. Empty in folders written before scenes had groups.
+  std::string group;
 };
 
 // How a method the build does not know (a Python controller) asked to be shown.

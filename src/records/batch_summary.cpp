@@ -66,10 +66,88 @@ Description describedFrom(const nlohmann::json& j) {
           j.at("q3").get<double>(),  j.at("max").get<double>()};
 }
 
+nlohmann::json tallyJson(const Tally& t) {
+  nlohmann::json j{{"method", t.method},
+                   {"wins", t.wins},
+                   {"ties", t.ties},
+                   {"losses", t.losses},
+                   {"undecided", t.undecided}};
+  if (!t.against.empty()) j["against"] = t.against;
+  return j;
+}
+
+Tally tallyFrom(const nlohmann::json& t) {
+  return {t.at("method").get<std::string>(), t.at("wins").get<int>(),
+          t.at("ties").get<int>(),           t.at("losses").get<int>(),
+          t.value("against", std::string()), t.value("undecided", 0)};
+}
+
+// The summary's tallies again, scene group by scene group: the same comparisons, counted
+// per group, and each method's mean coverage there.
+std::vector<GroupSummary> groupScenes(const BatchSummary& summary,
+                                      const std::map<std::string, std::string>& groupOf) {
+  std::vector<GroupSummary> groups;
+  const auto groupFor = [&](const std::string& scene) -> GroupSummary* {
+    const auto it = groupOf.find(scene);
+    if (it == groupOf.end() || it->second.empty()) return nullptr;
+    for (GroupSummary& g : groups) {
+      if (g.name == it->second) return &g;
+    }
+    groups.push_back({it->second, {}, {}, {}, {}});
+    return &groups.back();
+  };
+  for (const std::string& scene : summary.scenes) {
+    if (GroupSummary* g = groupFor(scene)) g->scenes.push_back(scene);
+  }
+  // Methods, and the tallies' order, as the whole summary has them.
+  std::vector<std::string> methods;
+  for (const Tally& t : summary.tallies)
+    methods.push_back(t.method);
+  for (const MethodSummary& m : summary.methods) {
+    if (std::find(methods.begin(), methods.end(), m.method) == methods.end())
+      methods.insert(m.method == summary.reference ? methods.begin() : methods.end(), m.method);
+  }
+  for (GroupSummary& g : groups) {
+    const auto inGroup = [&](const std::string& scene) {
+      return std::find(g.scenes.begin(), g.scenes.end(), scene) != g.scenes.end();
+    };
+    for (const std::string& method : methods) {
+      double sum = 0.0;
+      int n = 0;
+      for (const MethodSummary& m : summary.methods) {
+        if (m.method == method && m.coverage.count > 0 && inGroup(m.scene)) {
+          sum += m.coverage.mean;
+          ++n;
+        }
+      }
+      if (n > 0) g.meanCoverage.emplace_back(method, sum / n);
+    }
+    for (Tally t : summary.tallies) {
+      t.wins = t.ties = t.losses = t.undecided = 0;
+      for (const Comparison& c : summary.comparisons) {
+        if (c.method == t.method && inGroup(c.scene)) count(t, c, summary.reference);
+      }
+      g.tallies.push_back(t);
+    }
+    for (Tally t : summary.pairTallies) {
+      t.wins = t.ties = t.losses = t.undecided = 0;
+      for (const PairComparison& p : summary.pairs) {
+        if (p.against == t.against && p.comparison.method == t.method &&
+            inGroup(p.comparison.scene)) {
+          count(t, p.comparison, t.against);
+        }
+      }
+      g.pairTallies.push_back(t);
+    }
+  }
+  return groups;
+}
+
 }  // namespace
 
 BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
-                       std::span<const std::string> order) {
+                       std::span<const std::string> order,
+                       const std::map<std::string, std::string>& groupOf) {
   std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
     if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
     return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
@@ -202,6 +280,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
               return std::make_pair(rank(a.against), rank(a.method)) <
                      std::make_pair(rank(b.against), rank(b.method));
             });
+  summary.groups = groupScenes(summary, groupOf);
   return summary;
 }
 
@@ -283,13 +362,8 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
     j["comparisons"].push_back(comparisonJson(c));
   }
   j["totals"] = nlohmann::json::array();
-  for (const auto& t : summary.tallies) {
-    j["totals"].push_back({{"method", t.method},
-                           {"wins", t.wins},
-                           {"ties", t.ties},
-                           {"losses", t.losses},
-                           {"undecided", t.undecided}});
-  }
+  for (const auto& t : summary.tallies)
+    j["totals"].push_back(tallyJson(t));
   j["pairs"] = nlohmann::json::array();
   for (const auto& p : summary.pairs) {
     nlohmann::json pair = comparisonJson(p.comparison);
@@ -297,13 +371,22 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
     j["pairs"].push_back(std::move(pair));
   }
   j["pairTotals"] = nlohmann::json::array();
-  for (const auto& t : summary.pairTallies) {
-    j["pairTotals"].push_back({{"method", t.method},
-                               {"against", t.against},
-                               {"wins", t.wins},
-                               {"ties", t.ties},
-                               {"losses", t.losses},
-                               {"undecided", t.undecided}});
+  for (const auto& t : summary.pairTallies)
+    j["pairTotals"].push_back(tallyJson(t));
+  j["groups"] = nlohmann::json::array();
+  for (const auto& g : summary.groups) {
+    nlohmann::json group{{"name", g.name},
+                         {"scenes", g.scenes},
+                         {"meanCoverage", nlohmann::json::array()},
+                         {"totals", nlohmann::json::array()},
+                         {"pairTotals", nlohmann::json::array()}};
+    for (const auto& [method, mean] : g.meanCoverage)
+      group["meanCoverage"].push_back({{"method", method}, {"mean", mean}});
+    for (const auto& t : g.tallies)
+      group["totals"].push_back(tallyJson(t));
+    for (const auto& t : g.pairTallies)
+      group["pairTotals"].push_back(tallyJson(t));
+    j["groups"].push_back(std::move(group));
   }
   j["failures"] = nlohmann::json::array();
   for (const auto& f : summary.failures) {
@@ -374,18 +457,28 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
     s.reference = j.at("reference").get<std::string>();
     for (const auto& c : j.at("comparisons"))
       s.comparisons.push_back(comparisonFrom(c));
-    for (const auto& t : j.at("totals")) {
-      s.tallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
-                           t.at("ties").get<int>(), t.at("losses").get<int>(), "",
-                           t.value("undecided", 0)});
-    }
+    for (const auto& t : j.at("totals"))
+      s.tallies.push_back(tallyFrom(t));
     // Summaries written before issue 19 have no pairs.
     for (const auto& c : j.value("pairs", nlohmann::json::array()))
       s.pairs.push_back({c.at("against").get<std::string>(), comparisonFrom(c)});
-    for (const auto& t : j.value("pairTotals", nlohmann::json::array())) {
-      s.pairTallies.push_back({t.at("method").get<std::string>(), t.at("wins").get<int>(),
-                               t.at("ties").get<int>(), t.at("losses").get<int>(),
-                               t.at("against").get<std::string>(), t.value("undecided", 0)});
+    for (const auto& t : j.value("pairTotals", nlohmann::json::array()))
+      s.pairTallies.push_back(tallyFrom(t));
+    // Summaries written before scenes had groups have none.
+    for (const auto& g : j.value("groups", nlohmann::json::array())) {
+      GroupSummary group{g.at("name").get<std::string>(),
+                         g.at("scenes").get<std::vector<std::string>>(),
+                         {},
+                         {},
+                         {}};
+      for (const auto& m : g.at("meanCoverage"))
+        group.meanCoverage.emplace_back(m.at("method").get<std::string>(),
+                                        m.at("mean").get<double>());
+      for (const auto& t : g.at("totals"))
+        group.tallies.push_back(tallyFrom(t));
+      for (const auto& t : g.at("pairTotals"))
+        group.pairTallies.push_back(tallyFrom(t));
+      s.groups.push_back(std::move(group));
     }
     for (const auto& f : j.at("failures")) {
       s.failures.push_back({f.at("scene").get<std::string>(),

@@ -6,8 +6,10 @@
 // give the same bytes.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -111,6 +113,18 @@ struct PairComparison {
   Comparison comparison;
 };
 
+// One group of scenes (a generated family, or the folder the scenes came from): how each
+// method fared there, so a reader sees where a method is strong and where it is weak.
+struct GroupSummary {
+  std::string name;
+  std::vector<std::string> scenes;  // in the summary's order
+  // Per method, in the batch's order: the mean over the group's scenes of its mean average
+  // coverage (scenes where it ran).
+  std::vector<std::pair<std::string, double>> meanCoverage;
+  std::vector<Tally> tallies;      // against the reference, as BatchSummary::tallies
+  std::vector<Tally> pairTallies;  // as BatchSummary::pairTallies
+};
+
 struct BatchSummary {
   std::vector<MethodSummary> methods;   // sorted by scene, then method
   std::vector<std::string> scenes;      // every scene with a job, natural order
@@ -122,15 +136,19 @@ struct BatchSummary {
   std::vector<PairComparison> pairs;
   std::vector<Tally> pairTallies;    // by `against`, then method, in the batch's order
   std::vector<JobOutcome> failures;  // sorted by scene, method, seed
+  // By group, in the order of each group's first scene; empty when no scene has a group.
+  std::vector<GroupSummary> groups;
 
   // The comparison of `method` on `scene`, or nullptr (the reference, or a method not run).
   const Comparison* comparison(const std::string& scene, const std::string& method) const;
 };
 
 // Compares every method with `reference` (the baseline, by default), and the others pairwise
-// in the order of `order` (the batch's methods; names it lacks come after, by name).
+// in the order of `order` (the batch's methods; names it lacks come after, by name), and
+// groups the scenes by `groupOf` (scene name to group; scenes it lacks are in no group).
 BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
-                       std::span<const std::string> order = {});
+                       std::span<const std::string> order = {},
+                       const std::map<std::string, std::string>& groupOf = {});
 nlohmann::json summaryToJson(const BatchSummary& summary);
 // The inverse of summaryToJson, so a report shows exactly the numbers the batch wrote.
 // Throws InputError naming `source` if the document is not a camcov summary.

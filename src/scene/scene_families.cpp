@@ -19,6 +19,10 @@
 
 namespace camcov::scene {
 
+// A generated scene's description starts "family NAME seed S: " (familyNamedIn reads it back).
+constexpr std::string_view kFamilyLead = "family ";
+constexpr std::string_view kSeedLead = " seed ";
+
 // ---------------------------------------------------------------------------------------------
 // The table: every family, in one place. docs/families.md shows it as `--family list` prints
 // it (a test checks that the two agree).
@@ -388,6 +392,17 @@ std::string familyTable() {
     text += familyRanges(f);
   }
   return text;
+}
+
+std::optional<std::string> familyNamedIn(std::string_view description) {
+  if (!description.starts_with(kFamilyLead)) return std::nullopt;
+  description.remove_prefix(kFamilyLead.size());
+  const std::string_view name = description.substr(0, description.find(kSeedLead));
+  if (name.size() == description.size()) return std::nullopt;
+  for (const SceneFamily& f : sceneFamilies()) {
+    if (f.name == name) return std::string(f.name);
+  }
+  return std::nullopt;
 }
 
 std::string familySceneFileName(std::string_view family, std::uint64_t seed) {
@@ -1151,9 +1166,10 @@ std::string describe(const SceneFamily& f, std::uint64_t seed, const Draw& d) {
   static constexpr std::array kStarts{"spread out", "facing away from every object",
                                       "far from every object"};
   return fmt::format(
-      "family {} seed {}: {}, {}, {}, {} camera{} at {} m/s ({:.0f} s to cross) turning {} "
+      "{}{}{}{}: {}, {}, {}, {} camera{} at {} m/s ({:.0f} s to cross) turning {} "
       "rad/s, half FoV {}°, starting {}",
-      f.name, seed, roomText(d.room), countsText(d.targetMotions, f.targetMotions, "target"),
+      kFamilyLead, f.name, kSeedLead, seed, roomText(d.room),
+      countsText(d.targetMotions, f.targetMotions, "target"),
       countsText(d.obstacleMotions, f.obstacleMotions, "obstacle"), d.cameras.size(),
       d.cameras.size() == 1 ? "" : "s", d.cameraSpeed, d.room.width / d.cameraSpeed, d.turnRate,
       d.halfFovDeg, kStarts.at(static_cast<std::size_t>(d.start)));

@@ -25,6 +25,7 @@
 //    seed give the same bytes on every machine, whatever its maths library does in the last
 //    bit.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -123,6 +124,10 @@ std::string familyNames();
 // What `camcov generate --family list` prints: every family with its seeds, its summary and
 // its ranges.
 std::string familyTable();
+
+// The family a generated scene's description names ("family l_rooms seed 5: ..."), when it is
+// one of the table's; nullopt for any other description.
+std::optional<std::string> familyNamedIn(std::string_view description);
 
 // "<family>-<seed>.json".
 std::string familySceneFileName(std::string_view family, std::uint64_t seed);

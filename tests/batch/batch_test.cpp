@@ -2,11 +2,14 @@
 // running with resume and failures, and merging shards back into one folder.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <map>
 #include <set>
 
 #include "batch/batch_plan.h"
 #include "batch/merge.h"
 #include "control/methods.h"
+#include "scene/scene_families.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
 #include "util/input_error.h"
@@ -63,6 +66,21 @@ TEST(PlanBatch, JobsRunSceneByMethodBySeedAndShardsSplitThemExactlyOnce) {
   for (const auto& job : whole.jobs)
     all.insert(job.stem);
   EXPECT_EQ(fromShards, all);
+}
+
+TEST(PlanBatch, AGeneratedSceneIsGroupedByItsFamilyAnyOtherByItsFolder) {
+  const fs::path dir = testing::freshDir("mixed");
+  std::ofstream(dir / "drawn.json")
+      << scene::generateFamilyScene(scene::sceneFamily("l_rooms"), 3).dump(1) << "\n";
+  fs::copy_file(testing::testDataDir() / "scenes" / "tiny_static.json", dir / "own.json");
+  BatchRequest r = tinyRequest();
+  r.scenes = {dir.string(), (testing::testDataDir() / "scenes" / "tiny_dynamic.json").string()};
+  const BatchPlan plan = planBatch(r, "test");
+  std::map<std::string, std::string> groupOf;
+  for (const auto& s : plan.manifest.scenes)
+    groupOf[s.name] = s.group;
+  EXPECT_EQ(groupOf, (std::map<std::string, std::string>{
+                         {"drawn", "l_rooms"}, {"own", "mixed"}, {"tiny_dynamic", "scenes"}}));
 }
 
 TEST(PlanBatch, BadRequestsAreInputErrors) {

@@ -4,7 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "util/input_error.h"
 
@@ -138,6 +142,55 @@ TEST(Summarize, MethodsOtherThanTheReferenceAreComparedPairwiseInTheBatchOrder) 
             std::make_tuple(std::string("camcov"), std::string("paper"), 1, 1, 0));
   // The reference's tallies say nothing of the pairs.
   EXPECT_EQ(summary.tallies[1].against, "");
+}
+
+TEST(Summarize, GroupsCountTheSameVerdictsPerGroupAndAddUpToTheTotals) {
+  std::vector<JobOutcome> jobs;
+  // Scenes a1..a3 in group A, b1..b2 in group B, c in none: camcov beats paper on a1, a2 and
+  // b1, ties on a3, loses on b2; both beat local everywhere.
+  const std::vector<std::pair<std::string, double>> camcovOver{
+      {"a1", 0.1}, {"a2", 0.1}, {"a3", 0.0}, {"b1", 0.1}, {"b2", -0.1}, {"c", 0.1}};
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    for (const auto& [scene, delta] : camcovOver) {
+      jobs.push_back(job(scene, "local", s, 0.1 + 0.001 * s));
+      jobs.push_back(job(scene, "paper", s, 0.5 + 0.001 * s));
+      jobs.push_back(job(scene, "camcov", s, 0.5 + delta + 0.001 * s));
+    }
+  }
+  const std::vector<std::string> order{"paper", "local", "camcov"};
+  const std::map<std::string, std::string> groupOf{{"a1", "A"}, {"a2", "A"}, {"a3", "A"},
+                                                   {"b1", "B"}, {"b2", "B"}, {"c", ""}};
+  const BatchSummary summary = summarize(jobs, "local", order, groupOf);
+  ASSERT_EQ(summary.groups.size(), 2u) << "c has no group";
+  const GroupSummary &a = summary.groups[0], &b = summary.groups[1];
+  EXPECT_EQ(a.name, "A");
+  EXPECT_EQ(a.scenes, (std::vector<std::string>{"a1", "a2", "a3"}));
+  EXPECT_EQ(b.scenes, (std::vector<std::string>{"b1", "b2"}));
+  ASSERT_EQ(a.pairTallies.size(), 1u);
+  const auto wtl = [](const Tally& t) { return std::make_tuple(t.wins, t.ties, t.losses); };
+  EXPECT_EQ(wtl(a.pairTallies[0]), std::make_tuple(2, 1, 0));
+  EXPECT_EQ(wtl(b.pairTallies[0]), std::make_tuple(1, 0, 1));
+  EXPECT_EQ(a.pairTallies[0].against, "paper");
+  ASSERT_EQ(a.tallies.size(), summary.tallies.size());
+  for (std::size_t i = 0; i < a.tallies.size(); ++i) {
+    EXPECT_EQ(a.tallies[i].method, summary.tallies[i].method);
+    EXPECT_EQ(a.tallies[i].wins + b.tallies[i].wins + 1, summary.tallies[i].wins) << "c's win";
+  }
+  // Means over the group's scenes, by hand: paper 0.503 on every scene, camcov + its deltas.
+  const auto meanOf = [](const GroupSummary& g, const std::string& method) {
+    for (const auto& [m, mean] : g.meanCoverage) {
+      if (m == method) return mean;
+    }
+    return -1.0;
+  };
+  EXPECT_NEAR(meanOf(a, "paper"), 0.503, 1e-12);
+  EXPECT_NEAR(meanOf(a, "camcov"), 0.503 + 0.2 / 3, 1e-12);
+  EXPECT_NEAR(meanOf(b, "camcov"), 0.503, 1e-12);
+  EXPECT_NEAR(meanOf(b, "local"), 0.103, 1e-12);
+  // And the file keeps them.
+  const BatchSummary back = summaryFromJson(summaryToJson(summary), "test");
+  EXPECT_EQ(summaryToJson(back).dump(), summaryToJson(summary).dump());
+  EXPECT_TRUE(summarize(jobs, "local", order).groups.empty()) << "no groups asked for";
 }
 
 TEST(Summarize, FinalCoverageIsDescribedAndRunsWithoutItAreLeftOut) {

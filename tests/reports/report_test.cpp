@@ -59,6 +59,33 @@ TEST(Report, BenchWritesItWithEverySceneInEverySection) {
   EXPECT_NE(section(html, "parameters").find("Table I"), std::string::npos);
 }
 
+TEST(Report, GroupsScenesByFolderWhenThereAreSeveralAndCountsEachGroupsVerdicts) {
+  const ScratchDir dir;
+  const auto one = benchFixture(dir / "one", "--no-report");
+  ASSERT_EQ(one.exitCode, 0) << one.out << one.err;
+  ASSERT_EQ(runCamcov("report " + (dir / "one").string()).exitCode, 0);
+  EXPECT_EQ(readFile(dir / "one" / "report.html").find("id=\"groups\""), std::string::npos)
+      << "one folder: nothing to group";
+  fs::create_directories(dir / "other");
+  fs::copy_file(testDataDir() / "scenes" / "tiny_static.json", dir / "other" / "lone.json");
+  const auto two = benchFixture(dir / "two", "--scenes " + (dir / "other").string());
+  ASSERT_EQ(two.exitCode, 0) << two.out << two.err;
+  EXPECT_NE(two.out.find("by family or folder"), std::string::npos) << two.out;
+  const std::string groups = section(readFile(dir / "two" / "report.html"), "groups");
+  ASSERT_FALSE(groups.empty());
+  // Each folder's row: its name, its scene count, a mean per method, and the three comparisons
+  // of the default methods (3 seeds: undecided on every scene, marked "?").
+  EXPECT_NE(groups.find("<th scope=\"row\">scenes</th><td class=\"num\">2</td>"), std::string::npos)
+      << groups;
+  EXPECT_NE(groups.find("<th scope=\"row\">other</th><td class=\"num\">1</td>"), std::string::npos);
+  EXPECT_EQ(countOf(groups, "0 / 0 / 0 / 2?"), 3) << groups;
+  EXPECT_EQ(countOf(groups, "0 / 0 / 0 / 1?"), 3);
+  const auto summary = nlohmann::json::parse(readFile(dir / "two" / "summary.json"));
+  ASSERT_EQ(summary["groups"].size(), 2u);
+  EXPECT_EQ(summary["groups"][0]["name"], "other") << "in the order of each group's first scene";
+  EXPECT_EQ(summary["groups"][0]["scenes"], nlohmann::json::array({"lone"}));
+}
+
 TEST(Report, ShowsContactsBelowDeltaByKindInTheTableAndOnTheTimePlots) {
   // The corridor scene of tests/data/safety: a contact no method can avoid, proven there.
   const ScratchDir dir;

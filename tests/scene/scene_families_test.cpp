@@ -150,6 +150,18 @@ TEST(SceneFamilies, TheDescriptionNamesTheFamilyTheSeedAndWhatWasDrawn) {
   }
 }
 
+TEST(SceneFamilies, AGeneratedScenesDescriptionNamesItsFamilyBackAndNoOtherTextDoes) {
+  for (const SceneFamily& f : sceneFamilies())
+    EXPECT_EQ(familyNamedIn(load(f, 7).description), std::string(f.name));
+  for (const char* other :
+       {"", "family", "family l_rooms", "family l_rooms seed", "family nosuch seed 1: a room",
+        "Family l_rooms seed 1: a room", " family l_rooms seed 1: a room", "family  seed 1: a room",
+        "the paper's Fig. 1 (family l_rooms seed 1)"}) {
+    EXPECT_EQ(familyNamedIn(other), std::nullopt) << '"' << other << '"';
+  }
+  EXPECT_EQ(familyNamedIn("family l_rooms seed 1"), "l_rooms") << "the seed's text is not read";
+}
+
 TEST(SceneFamilies, TuneAndTestSeedsAreDisjointForEveryFamily) {
   std::set<std::string_view> names;
   for (const SceneFamily& f : sceneFamilies()) {
