@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,12 +28,17 @@ std::string optimumSection(const ReportData& data) {
   for (const auto& m : data.summary.methods)
     rows[{m.scene, m.method}] = &m;
   std::map<std::string, int> near, compared;
+  const double duration = data.manifest.parameters.sim.duration;
+  int outOfReachScenes = 0;
   std::string body;
   int scenes = 0;
   for (const SceneData& scene : data.scenes) {
     if (!scene.optimum) continue;
     const records::OptimumFile& o = *scene.optimum;
     const double best = o.result.terms.coverage;
+    // A pose the team cannot reach before the run ends is no target for its final coverage:
+    // shown, not counted (unknown travel, in older files, counts as reachable).
+    const bool outOfReach = o.travelTime > duration;
     ++scenes;
     std::string cells;
     for (const std::string& method : methods) {
@@ -48,17 +54,28 @@ std::string optimumSection(const ReportData& data) {
       }
       const double fraction = final / best;
       const bool reached = fraction >= kNearOptimum;
-      ++compared[method];
-      near[method] += reached;
+      if (!outOfReach) {
+        ++compared[method];
+        near[method] += reached;
+      }
       cells += fmt::format("<td class=\"num\">{}</td><td class=\"num{}\">{}{}&nbsp;%</td>",
-                           fixed(final, 3), reached ? " near-optimum" : "", reached ? "✓ " : "",
-                           fixed(100.0 * fraction, 1));
+                           fixed(final, 3),
+                           outOfReach ? " muted"
+                           : reached  ? " near-optimum"
+                                      : "",
+                           reached && !outOfReach ? "✓ " : "", fixed(100.0 * fraction, 1));
     }
+    outOfReachScenes += outOfReach;
+    const std::string reach =
+        std::isnan(o.travelTime)
+            ? std::string("—")
+            : fmt::format("{}{}", fixed(o.travelTime, 1),
+                          outOfReach ? " <span class=\"out-of-reach\">out of reach</span>" : "");
     body += fmt::format(
         "<tr><th scope=\"row\">{}</th><td class=\"num\" title=\"found in round {} of {} by {} "
-        "after {} of {} reward evaluations\">{}</td>{}</tr>\n",
+        "after {} of {} reward evaluations\">{}</td><td class=\"num\">{}</td>{}</tr>\n",
         escapeXml(scene.name), o.result.foundInRound, o.result.rounds, escapeXml(o.result.foundBy),
-        o.result.foundAt, o.budget, fixed(best, 3), cells);
+        o.result.foundAt, o.budget, fixed(best, 3), reach, cells);
   }
   if (scenes == 0) return {};
   std::string head, subhead, foot;
@@ -83,15 +100,20 @@ std::string optimumSection(const ReportData& data) {
       "holds still, the coverage of the best team pose <code>camcov optimum</code> found at "
       "t = 0 ({} reward evaluations: rounds of Algorithm 2, each improved camera by camera), "
       "and each method's coverage at the end of the run (t = {} s), median over seeds, as a "
-      "fraction of it; ✓ marks {} % or more. The optimum is a reference, not a proof: a method "
-      "can end above it. Within {} %: {}.</p>\n<div class=\"table-wrap\"><table "
+      "fraction of it; ✓ marks {} % or more. Reach is how long the team needs from its start "
+      "to the optimum's poses (section V-B's estimate: straight at full speed, obstacles "
+      "ignored, so at least that); a pose out of reach within the run is shown, greyed, and "
+      "not counted{}. The optimum is a reference, not a proof: a method can end above it. "
+      "Within {} %: {}.</p>\n<div class=\"table-wrap\"><table "
       "class=\"optimum\"><thead><tr><th scope=\"col\" rowspan=\"2\">Scene</th><th scope=\"col\" "
-      "rowspan=\"2\">Optimum coverage</th>{}</tr>\n<tr>{}</tr></thead>\n<tbody>\n{}</tbody>\n"
-      "<tfoot><tr><th scope=\"row\" colspan=\"2\">Within {} %</th>{}</tr></tfoot></table></div>\n"
+      "rowspan=\"2\">Optimum coverage</th><th scope=\"col\" rowspan=\"2\">Reach, s</th>{}</tr>\n"
+      "<tr>{}</tr></thead>\n<tbody>\n{}</tbody>\n"
+      "<tfoot><tr><th scope=\"row\" colspan=\"3\">Within {} %</th>{}</tr></tfoot></table></div>\n"
       "</section>\n",
-      any.budget, fmt::format("{:g}", data.manifest.parameters.sim.duration),
-      fixed(100 * kNearOptimum, 0), fixed(100 * (1 - kNearOptimum), 0), join(verdicts, ", "), head,
-      subhead, body, fixed(100 * (1 - kNearOptimum), 0), foot);
+      any.budget, fmt::format("{:g}", duration), fixed(100 * kNearOptimum, 0),
+      outOfReachScenes > 0 ? fmt::format(" ({} of {} scenes here)", outOfReachScenes, scenes) : "",
+      fixed(100 * (1 - kNearOptimum), 0), join(verdicts, ", "), head, subhead, body,
+      fixed(100 * (1 - kNearOptimum), 0), foot);
 }
 
 }  // namespace camcov::reports

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "control/goal_assignment.h"
 #include "kinematics/kinematics.h"
 #include "planners/state_validity.h"
 #include "reward/reward_model.h"
@@ -30,7 +31,12 @@ records::OptimumFile searchSceneOptimum(const std::filesystem::path& sceneFile,
     throw InputError(fmt::format("{}: no valid pose for every camera was found at t = {} s",
                                  sceneFile.string(), time));
   }
-  return {s.name, sceneFile.string(), file.hash, time, seed, budget, parameters, std::move(*best)};
+  std::vector<geometry::Pose> starts;
+  for (const auto& camera : s.cameras)
+    starts.push_back(camera.initial);
+  const double travel = control::assignGoals(s, starts, best->poses).travelTime;
+  return {s.name, sceneFile.string(), file.hash,        time,  seed,
+          budget, parameters,         std::move(*best), travel};
 }
 
 }  // namespace camcov::batch

@@ -43,6 +43,10 @@ int optimum(const OptimumCommandOptions& o) {
       "of {} evaluations\n",
       found.scene, o.time, best.terms.coverage, best.terms.reward, best.foundInRound, best.rounds,
       best.foundBy, best.foundAt, best.evaluations);
+  std::cout << fmt::format(
+      "  the team needs about {:.1f} s from its start to reach it (section V-B's estimate: "
+      "straight at full speed, obstacles ignored)\n",
+      found.travelTime);
   for (const std::string* f : {&o.out, &o.poses}) {
     if (!f->empty()) std::cout << "  -> " << *f << "\n";
   }

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/goal_assignment.h"
 #include "control/local_controller.h"
 #include "control/travel_time.h"
 #include "planners/global_optimizer.h"
-#include "planners/hungarian.h"
 #include "planners/team_improvement.h"
 #include "util/run_threads.h"
 
@@ -77,7 +77,7 @@ void PaperController::globalOptimization(const Observation& observation) {
           "no-valid-pose");
     return;
   }
-  const Assignment assignment = assign(observation, result->poses);
+  const GoalAssignment assignment = assignGoals(scene_, observation.cameras, result->poses);
   double candidate = result->reward;
   if (params_.global.horizon > 0.0) {
     candidate *= std::max(0.0, 1.0 - assignment.travelTime / params_.global.horizon);
@@ -106,7 +106,7 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   double keptReward = model_.reward(kept);
   planners::TeamImprovement(model_, validity_, ours.refine).refineAll(kept, keptReward, idle);
 
-  const Assignment assignment = assign(observation, candidate);
+  const GoalAssignment assignment = assignGoals(scene_, observation.cameras, candidate);
   std::vector<geometry::Pose> goals(m);
   for (std::size_t j = 0; j < m; ++j)
     goals[j] = candidate[assignment.goalOf[j]];
@@ -153,32 +153,6 @@ double PaperController::lookWhileMoving(std::span<geometry::Pose> team, std::siz
   const double yaw = lookoutYaw(model_, team, j, planned, executor.goal().yaw, timeLeft,
                                 camera.maxAngularVelocity, kLookoutDirections);
   return geometry::wrapAngle(yaw - team[j].yaw) / dt;
-}
-
-PaperController::Assignment PaperController::assign(
-    const Observation& observation, const std::vector<geometry::Pose>& goals) const {
-  // Section V-B: estimated travel time, obstacles ignored.
-  // Goal g was sampled for camera g's field of view: only a camera with the same θ takes it
-  // (in a team of like cameras, any camera takes any goal, as in the paper).
-  constexpr double kOtherFieldOfView = 1e12;  // s: never chosen while the identity is possible
-  const std::size_t m = goals.size();
-  std::vector<double> cost(m * m);
-  for (std::size_t j = 0; j < m; ++j) {
-    const auto& camera = scene_.cameras[j];
-    for (std::size_t g = 0; g < m; ++g) {
-      if (scene_.cameras[g].halfFov != camera.halfFov) {
-        cost[j * m + g] = kOtherFieldOfView;
-        continue;
-      }
-      cost[j * m + g] = travelTime(camera, observation.cameras[j], goals[g]);
-    }
-  }
-  Assignment result;
-  result.goalOf = planners::solveAssignment(cost, static_cast<int>(m), static_cast<int>(m));
-  for (std::size_t j = 0; j < m; ++j) {
-    result.travelTime = std::max(result.travelTime, cost[j * m + result.goalOf[j]]);
-  }
-  return result;
 }
 
 planners::Roadmap& PaperController::roadmap(const Observation& observation, std::size_t j) {
@@ -253,7 +227,7 @@ void PaperController::startPlans(const Observation& observation,
 }
 
 void PaperController::plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
-                           const Assignment& assignment) {
+                           const GoalAssignment& assignment) {
   std::vector<geometry::Pose> targets(goals.size());
   for (std::size_t j = 0; j < goals.size(); ++j)
     targets[j] = goals[assignment.goalOf[j]];

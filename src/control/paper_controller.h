@@ -17,6 +17,7 @@
 
 #include "control/camcov_choices.h"
 #include "control/controller.h"
+#include "control/goal_assignment.h"
 #include "params/parameters.h"
 #include "planners/local_optimizer.h"
 #include "planners/motion_planner.h"
@@ -56,11 +57,6 @@ class PaperController final : public Controller {
   static bool improves(double candidate, double current, double tau);
 
  private:
-  struct Assignment {
-    std::vector<int> goalOf;  // camera j goes to goals[goalOf[j]]
-    double travelTime = 0.0;  // the largest estimated travel time, s
-  };
-
   bool ours() const { return variant_ == Variant::Camcov; }
   void globalOptimization(const Observation& observation);
   // Ours: improve the candidate, judge it over the horizon, plan if it wins.
@@ -75,9 +71,8 @@ class PaperController final : public Controller {
   std::optional<std::vector<geometry::Pose>> straightPath(const Observation& observation,
                                                           std::size_t j,
                                                           const geometry::Pose& goal) const;
-  Assignment assign(const Observation& observation, const std::vector<geometry::Pose>& goals) const;
   void plan(const Observation& observation, const std::vector<geometry::Pose>& goals,
-            const Assignment& assignment);
+            const GoalAssignment& assignment);
   // A path and how it was found ("straight", "roadmap of N milestones").
   struct Route {
     std::vector<geometry::Pose> poses;

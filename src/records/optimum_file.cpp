@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "params/parameter_table.h"
+#include "records/json_numbers.h"
 #include "util/input_error.h"
 
 namespace camcov::records {
@@ -33,6 +34,7 @@ nlohmann::json optimumToJson(const OptimumFile& f) {
             {"repulsion", r.terms.repulsion},
             {"reward", r.terms.reward}}},
           {"found", {{"round", r.foundInRound}, {"by", r.foundBy}, {"evaluations", r.foundAt}}},
+          {"travelTime", finiteOrNull(f.travelTime)},
           {"rounds", r.rounds},
           {"evaluations", r.evaluations},
           {"curve", curve}};
@@ -67,6 +69,8 @@ OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) 
     r.foundAt = j.at("found").at("evaluations").get<std::int64_t>();
     r.rounds = j.at("rounds").get<int>();
     r.evaluations = j.at("evaluations").get<std::int64_t>();
+    if (const auto t = j.find("travelTime"); t != j.end() && t->is_number())
+      f.travelTime = t->get<double>();
     for (const auto& step : j.at("curve")) {
       r.curve.push_back({step.at("evaluations").get<std::int64_t>(),
                          step.at("reward").get<double>(), step.at("coverage").get<double>()});

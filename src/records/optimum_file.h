@@ -5,6 +5,7 @@
 // against it.
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,10 @@ struct OptimumFile {
   std::int64_t budget = 0;  // reward evaluations
   params::Parameters parameters;
   planners::OptimumResult result;
+  // s: how long the team needs from its start to these poses, section V-B's estimate (each
+  // camera assigned a pose by the Hungarian method; obstacles ignored, so a lower bound where
+  // they are in the way). NaN in files written before it was recorded.
+  double travelTime = std::numeric_limits<double>::quiet_NaN();
 };
 
 nlohmann::json optimumToJson(const OptimumFile& file);

@@ -220,6 +220,7 @@ TEST(Report, SetsEachMethodsMedianFinalCoverageAgainstTheOptimum) {
   ASSERT_GT(paperFinal, 0.0);
   const fs::path file = results / "optimum" / "tiny_static.json";
   auto optimum = nlohmann::json::parse(readFile(file));
+  optimum["travelTime"] = 1.5;  // s: within the fixture's 2 s runs
   const auto reportWith = [&](double optimumCoverage) {
     optimum["best"]["coverage"] = optimumCoverage;
     std::ofstream(file) << optimum.dump(1);
@@ -234,6 +235,18 @@ TEST(Report, SetsEachMethodsMedianFinalCoverageAgainstTheOptimum) {
   table = reportWith(paperFinal / 0.99);
   EXPECT_NE(table.find("<td class=\"num near-optimum\">✓ 99.0&nbsp;%"), std::string::npos) << table;
   EXPECT_EQ(countOf(table, "<tr><th scope=\"row\">"), 1) << "one scene holds still";
+  // A pose the team needs longer than the run to reach is shown, greyed, and not counted.
+  EXPECT_EQ(table.find("class=\"out-of-reach\""), std::string::npos);
+  EXPECT_NE(table.find("<td class=\"num\">1.5</td>"), std::string::npos);
+  optimum["travelTime"] = 1e3;
+  table = reportWith(paperFinal / 0.99);
+  EXPECT_NE(table.find("1000.0 <span class=\"out-of-reach\">out of reach</span>"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("<td class=\"num muted\">99.0&nbsp;%"), std::string::npos) << table;
+  EXPECT_NE(table.find("not counted (1 of 1 scenes here)"), std::string::npos);
+  EXPECT_NE(table.find("<td class=\"num\" colspan=\"2\">0 of 0</td>"), std::string::npos);
+  optimum.erase("travelTime");
 
   // An optimum made from another version of the scene is not a reference for these runs.
   optimum["scene"]["hash"] = optimum["scene"]["hash"].get<std::uint64_t>() + 1;
