@@ -1,6 +1,11 @@
 #include "python/numpy_arrays.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <string>
+
+#include "scene/scene_validation.h"
 
 namespace camcov::python {
 
@@ -32,7 +37,30 @@ Array posesToArray(std::span<const geometry::Pose> poses) {
   return out;
 }
 
+void requireScenePoses(std::span<const geometry::Pose> poses, const char* what) {
+  const double maxYaw = geometry::degToRad(scene::kMaxYawDegrees);
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    const geometry::Pose& p = poses[j];
+    const auto within = [](double v, double limit) {
+      return std::isfinite(v) && std::abs(v) <= limit;
+    };
+    if (!within(p.x, scene::kMaxCoordinate) || !within(p.y, scene::kMaxCoordinate) ||
+        !within(p.yaw, maxYaw)) {
+      throw py::value_error(fmt::format(
+          "{}: row {} ({}, {}, {}): x and y must be finite and within ±{:g} m, yaw within "
+          "±{:.0f} rad ({:g}°)",
+          what, j, p.x, p.y, p.yaw, scene::kMaxCoordinate, maxYaw, scene::kMaxYawDegrees));
+    }
+  }
+}
+
 std::vector<geometry::Pose> posesFromArray(const py::handle& poses, const char* what) {
+  std::vector<geometry::Pose> out = rowsFromArray(poses, what);
+  requireScenePoses(out, what);
+  return out;
+}
+
+std::vector<geometry::Pose> rowsFromArray(const py::handle& poses, const char* what) {
   // A list or tuple of rows is read directly: a controller's few rows cost less so than
   // through a numpy array made for them.
   if (py::isinstance<py::list>(poses) || py::isinstance<py::tuple>(poses)) {
@@ -69,15 +97,24 @@ std::vector<geometry::Pose> teamsFromArray(const py::handle& teams, std::size_t&
   const double* v = a.data();
   for (std::size_t k = 0; k < poses; ++k)
     out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+  requireScenePoses(out, "teams");
   return out;
 }
 
-std::vector<double> valuesFromArray(const py::handle& values, std::size_t count, const char* what) {
+std::vector<double> valuesFromArray(const py::handle& values, std::size_t count, const char* what,
+                                    double limit) {
   const Array a = Array::ensure(values);
   if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != count) {
     throw py::value_error(std::string(what) + ": expected " + std::to_string(count) + " numbers");
   }
-  return {a.data(), a.data() + count};
+  std::vector<double> out(a.data(), a.data() + count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!std::isfinite(out[i]) || std::abs(out[i]) > limit) {
+      throw py::value_error(fmt::format("{}: entry {} is {}: expected a finite number within ±{:g}",
+                                        what, i, out[i], limit));
+    }
+  }
+  return out;
 }
 
 py::dict segmentsToDict(std::span<const visibility::Segment> segments,

@@ -38,7 +38,7 @@ void PythonController::control(const control::Observation& o,
             ? py::len(result)
             : 1;
     const auto velocities =
-        posesFromArray(parts > 1 ? result[py::int_(0)] : result, "controller's velocities");
+        rowsFromArray(parts > 1 ? result[py::int_(0)] : result, "controller's velocities");
     if (velocities.size() != commands.size()) {
       throw py::value_error("the controller returned " + std::to_string(velocities.size()) +
                             " velocities for " + std::to_string(commands.size()) + " cameras");
@@ -54,11 +54,14 @@ void PythonController::control(const control::Observation& o,
     }
     goals_.assign(commands.size(), std::nullopt);
     if (parts > 1 && !result[py::int_(1)].is_none()) {
-      const auto goals = posesFromArray(result[py::int_(1)], "controller's goals");
+      // A row that is not all finite (NaN) says "no goal"; a goal is a pose a scene could hold.
+      const auto goals = rowsFromArray(result[py::int_(1)], "controller's goals");
       if (goals.size() != commands.size()) throw py::value_error("one goal row per camera");
       for (std::size_t j = 0; j < goals.size(); ++j) {
-        if (std::isfinite(goals[j].x) && std::isfinite(goals[j].y) && std::isfinite(goals[j].yaw))
+        if (std::isfinite(goals[j].x) && std::isfinite(goals[j].y) && std::isfinite(goals[j].yaw)) {
+          requireScenePoses(std::span(&goals[j], 1), "controller's goals");
           goals_[j] = goals[j];
+        }
       }
     }
     if (parts > 2) takeEventsFrom(result[py::int_(2)], o.time, commands.size());

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 
 #include "kinematics/world.h"
@@ -104,7 +105,14 @@ void bindScene(py::module_& m) {
                                return Array(static_cast<py::ssize_t>(thetas.size()), thetas.data());
                              })
       .def(
-          "world_at", [](const PythonScene& s, double t) { return s.kinematics.worldAt(t); },
+          "world_at",
+          [](const PythonScene& s, double t) {
+            // Kinematics places objects at times up to 1e9 s (scene/scene_validation.h).
+            if (!std::isfinite(t) || std::abs(t) > 1e9)
+              throw py::value_error(
+                  fmt::format("world_at: t = {}: expected a finite time within ±1e9 s", t));
+            return s.kinematics.worldAt(t);
+          },
           py::arg("t"), "The world at time t (SPEC section 2's motion).")
       .def("__repr__", [](const PythonScene& s) {
         return fmt::format("<camcov.Scene {}: {} targets, {} obstacles, {} cameras>", s.scene.name,

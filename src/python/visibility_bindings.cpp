@@ -1,11 +1,15 @@
 // Visibility (S and visibleBy, eq. (1)) and the reward's terms (eq. (2)–(8)) for camera poses
 // given as numpy arrays, at one instant: the services the built-in methods use.
+#include <fmt/format.h>
+
 #include <mutex>
+#include <numbers>
 
 #include "python/bindings.h"
 #include "python/numpy_arrays.h"
 #include "python/python_scene.h"
 #include "reward/reward_model.h"
+#include "scene/scene_validation.h"
 
 namespace camcov::python {
 namespace {
@@ -82,9 +86,20 @@ std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
   const Array thetas = Array::ensure(halfFovs);
   if (!thetas || thetas.ndim() != 1 || thetas.shape(0) == 0)
     throw py::value_error("half_fovs: expected one half-angle (radians) per camera");
-  return std::make_unique<Visibility>(
-      world, valuesFromArray(thetas, static_cast<std::size_t>(thetas.shape(0)), "half_fovs"),
-      parametersFrom(values));
+  const auto count = static_cast<std::size_t>(thetas.shape(0));
+  // The sweep keeps which cameras see a segment as a 64-bit mask.
+  if (count > scene::kMaxCameras) {
+    throw py::value_error(
+        fmt::format("half_fovs: {} cameras; at most {}", count, scene::kMaxCameras));
+  }
+  std::vector<double> halfAngles = valuesFromArray(thetas, count, "half_fovs");
+  for (std::size_t j = 0; j < count; ++j) {
+    if (!(halfAngles[j] > 0.0 && halfAngles[j] < std::numbers::pi)) {
+      throw py::value_error(fmt::format("half_fovs: θ_{} = {} rad: a half-angle must lie in (0, π)",
+                                        j, halfAngles[j]));
+    }
+  }
+  return std::make_unique<Visibility>(world, std::move(halfAngles), parametersFrom(values));
 }
 
 // The terms of every team as arrays (N,).
@@ -156,7 +171,7 @@ void bindVisibility(py::module_& m) {
       .def(
           "visibility_polygon",
           [](Visibility& v, const py::handle& point) {
-            const auto p = valuesFromArray(point, 2, "point");
+            const auto p = valuesFromArray(point, 2, "point", scene::kMaxCoordinate);
             return v.visibilityPolygon({p[0], p[1]});
           },
           py::arg("point"), "The region seen from a point in every direction (Algorithm 2).");

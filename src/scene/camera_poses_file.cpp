@@ -11,13 +11,6 @@
 #include "util/strict_json.h"
 
 namespace camcov::scene {
-namespace {
-
-// Beyond ±1e6 degrees (2,778 turns) a yaw in double precision has lost its fraction of a
-// degree: such a number is a mistake, not an angle.
-constexpr double kMaxYawDegrees = 1e6;
-
-}  // namespace
 
 std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const std::string& source) {
   nlohmann::json j;

@@ -19,6 +19,9 @@ inline constexpr std::size_t kMaxCameras = 64;
 // twice the time of a walking pace).
 inline constexpr double kMaxCoordinate = 1e9;  // m, |x| and |y| of every WKT coordinate
 inline constexpr double kMaxSpeed = 1e4;       // m/s and rad/s, every velocity, either sign
+// Beyond ±1e6 degrees (2,778 turns) a yaw in double precision has lost its fraction of a
+// degree: such a number is a mistake, not an angle.
+inline constexpr double kMaxYawDegrees = 1e6;
 
 // Zero-length edges, zero area, self-intersections. Empty string for a simple polygon.
 std::string describeRingDefect(const geometry::Ring& ring);

@@ -77,3 +77,31 @@ def test_no_teams_give_no_terms_and_an_empty_team_sees_nothing(tiny):
     assert len(visibility.terms_each(np.zeros((0, 2, 3)))["coverage"]) == 0
     assert len(visibility.segments_each(np.zeros((0, 2, 3)))["a"]) == 0
     assert visibility.terms(np.zeros((0, 3)))["coverage"] == 0.0
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf, 2e9])
+def test_numbers_no_scene_could_hold_raise_value_errors_naming_the_input(tiny, bad):
+    scene = camcov.load_scene(tiny("tiny_static"))
+    visibility = camcov.Visibility(scene.world_at(0.0), scene.half_fovs)
+    for column in range(3):
+        poses = np.array(scene.initial_poses)
+        poses[0, column] = bad
+        with pytest.raises(ValueError, match=r"poses: row 0 .*within"):
+            visibility.terms(poses)
+        with pytest.raises(ValueError, match=r"teams: row 0 .*within"):
+            visibility.terms_each(poses[None])
+    with pytest.raises(ValueError, match="point: entry 1"):
+        visibility.visibility_polygon([0.0, bad])
+    with pytest.raises(ValueError, match="world_at: t ="):
+        scene.world_at(bad)
+    with pytest.raises(ValueError, match="half_fovs: entry 0"):
+        camcov.Visibility(scene.world_at(0.0), [bad])
+
+
+@pytest.mark.parametrize("theta", [0.0, -0.1, np.pi, 4.0])
+def test_a_half_angle_outside_zero_to_pi_or_too_many_cameras_raise_value_errors(tiny, theta):
+    world = camcov.load_scene(tiny("tiny_static")).world_at(0.0)
+    with pytest.raises(ValueError, match=r"half-angle must lie in \(0, π\)"):
+        camcov.Visibility(world, [0.5, theta])
+    with pytest.raises(ValueError, match="65 cameras; at most 64"):
+        camcov.Visibility(world, np.full(65, 0.5))
