@@ -53,6 +53,7 @@ thead th { background: var(--panel); font-weight: 600; vertical-align: bottom; w
 thead th[colspan] { text-align: center; border-bottom: 1px solid #c3c8cf; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 td.near-optimum { color: #1a7f37; font-weight: 600; }
+p.scene-warning { color: #9a6700; }
 .out-of-reach { color: #9a6700; font-size: 0.85em; white-space: nowrap; }
 table.summary tbody { border-top: 1px solid #b4bac3; }
 table.summary tbody th { font-weight: 600; white-space: nowrap; }

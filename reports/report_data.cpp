@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "kinematics/object_overlaps.h"
 #include "records/run_files.h"
 #include "reports/markup.h"
 #include "scene/scene_loader.h"
@@ -79,7 +80,7 @@ MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string&
   return runs;
 }
 
-void loadScene(const records::SceneEntry& entry, SceneData& data) {
+void loadScene(const records::SceneEntry& entry, const params::SimParams& run, SceneData& data) {
   if (!fs::exists(entry.file)) {
     data.sceneNote =
         "scene file " + entry.file + " not found (batch.json names it as given to camcov bench)";
@@ -88,6 +89,9 @@ void loadScene(const records::SceneEntry& entry, SceneData& data) {
   try {
     scene::SceneFile file = scene::loadSceneFile(entry.file);
     data.scene = std::move(file.scene);
+    data.warnings = data.scene->warnings;
+    for (const auto& o : kinematics::findObjectOverlaps(*data.scene, run.duration, run.dt))
+      data.warnings.push_back(kinematics::describeOverlap(o));
     if (file.hash != entry.hash)
       data.sceneNote = entry.file + " changed since the batch ran; drawn as it is now";
   } catch (const InputError& e) {
@@ -180,7 +184,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
     const auto entry = std::find_if(data.manifest.scenes.begin(), data.manifest.scenes.end(),
                                     [&](const records::SceneEntry& e) { return e.name == name; });
     if (entry != data.manifest.scenes.end()) {
-      loadScene(*entry, scene);
+      loadScene(*entry, data.manifest.parameters.sim, scene);
       scene.optimum = findOptimum(folder, *entry);
     } else {
       scene.sceneNote = "not listed in batch.json";

@@ -49,8 +49,11 @@ inline constexpr SceneGroup kSceneGroups[] = {SceneGroup::Static, SceneGroup::Dy
 struct SceneData {
   std::string name;
   SceneGroup group = SceneGroup::Other;
-  std::optional<scene::Scene> scene;          // empty if its file cannot be read any more
-  std::string sceneNote;                      // why the scene is missing, or that its file changed
+  std::optional<scene::Scene> scene;  // empty if its file cannot be read any more
+  std::string sceneNote;              // why the scene is missing, or that its file changed
+  // What the loader warned of, then objects that pass through each other during the run
+  // (sampled every step; kinematics/object_overlaps.h).
+  std::vector<std::string> warnings;
   std::map<std::string, MethodRuns> methods;  // by method name
   std::string explorerUrl;  // explore/<scene>.html relative to the report; empty if none
   // optimum/<scene>.json (issue 19) when it was made from the scene the batch ran.

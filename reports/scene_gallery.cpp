@@ -302,6 +302,8 @@ std::string sceneCard(const SceneData& data) {
   if (!data.sceneNote.empty()) {
     out += fmt::format("<p class=\"note\">{}</p>\n", escapeXml(data.sceneNote));
   }
+  for (const std::string& warning : data.warnings)
+    out += fmt::format("<p class=\"note scene-warning\">warning: {}</p>\n", escapeXml(warning));
   return out + "</figure>\n";
 }
 

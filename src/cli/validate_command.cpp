@@ -5,6 +5,8 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "kinematics/object_overlaps.h"
+#include "params/parameters.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 
@@ -25,6 +27,12 @@ Registration addValidateCommand(CLI::App& app) {
                                          s.cameras.size());
                 for (const std::string& warning : s.warnings)
                   std::cout << fmt::format("  warning: {}\n", warning);
+                // Over a run of the default length, at the simulator's step.
+                const params::SimParams run;
+                for (const auto& o : kinematics::findObjectOverlaps(s, run.duration, run.dt)) {
+                  std::cout << fmt::format("  warning: {} (checked every {:g} s over {:g} s)\n",
+                                           kinematics::describeOverlap(o), run.dt, run.duration);
+                }
               } catch (const InputError& e) {
                 std::cout << "error " << e.what() << "\n";
                 exitCode = 2;

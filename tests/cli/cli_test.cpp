@@ -5,6 +5,7 @@
 
 #include "camcov/version.h"
 #include "support/run_camcov.h"
+#include "support/scratch.h"
 #include "support/test_paths.h"
 
 namespace camcov::testing {
@@ -60,6 +61,36 @@ TEST(CliValidate, OneBadFileAmongGoodOnesStillFailsAndReportsEach) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.out.find("ok    " + good.string()), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("error " + bad.string()), std::string::npos) << r.out;
+}
+
+TEST(CliValidate, ObjectsThatPassThroughEachOtherAreAWarningInValidateAndTheReport) {
+  const auto file = testDataDir() / "warnings" / "target_through_obstacle.json";
+  const auto r = runCamcov("validate " + file.string());
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  const std::string warning =
+      "targets[0] and obstacles[0] pass through each other at t = 1.1 s near (-0.95, 0.00)";
+  EXPECT_NE(r.out.find("  warning: " + warning + " (checked every 0.1 s over 30 s)"),
+            std::string::npos)
+      << r.out;
+  // The report says so under the scene, over the batch's own duration.
+  const ScratchDir dir;
+  const auto bench = runCamcov("bench --scenes " + file.string() +
+                               " --methods local --seeds 1 --duration 2 --videos none "
+                               "--explorer none --optimum-budget 0 --out " +
+                               (dir / "b").string());
+  ASSERT_EQ(bench.exitCode, 0) << bench.out << bench.err;
+  EXPECT_NE(readFile(dir / "b" / "report.html")
+                .find("<p class=\"note scene-warning\">warning: " + warning + "</p>"),
+            std::string::npos);
+  ASSERT_EQ(runCamcov("bench --scenes " + file.string() +
+                      " --methods local --seeds 1 --duration 1 --videos none --explorer none "
+                      "--optimum-budget 0 --out " +
+                      (dir / "short").string())
+                .exitCode,
+            0);
+  EXPECT_EQ(readFile(dir / "short" / "report.html").find("class=\"note scene-warning\""),
+            std::string::npos)
+      << "a run that ends before they meet has nothing to warn of";
 }
 
 TEST(CliState, Dynamic9AtSevenPointThreeFollowsTheLoopRule) {
