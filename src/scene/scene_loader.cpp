@@ -348,17 +348,22 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   for (std::size_t i = 0; i < cameraCount; ++i)
     scene.cameras.push_back(camera(cameras.element(i), sceneHalfFov));
 
-  if (const PlacementDefect defect = findPlacementDefect(scene); !defect.jsonPath.empty()) {
-    throw SceneError(sourceName, defect.jsonPath, defect.problem);
-  }
-  // Every object that leaves the boundary at some time, at once.
+  // Every misplaced camera or object at t = 0 and every object that leaves the boundary later,
+  // at once: the first names the error's place, the others follow it.
+  std::vector<PlacementDefect> defects = findPlacementDefects(scene);
   const MotionCheck motion = checkMotion(scene);
-  if (!motion.errors.empty()) {
+  for (const PlacementDefect& e : motion.errors) {
+    // An object already misplaced at t = 0 is named once.
+    const bool named = std::any_of(defects.begin(), defects.end(), [&](const PlacementDefect& d) {
+      return d.jsonPath.starts_with(e.jsonPath + ".");
+    });
+    if (!named) defects.push_back(e);
+  }
+  if (!defects.empty()) {
     std::string others;
-    for (std::size_t k = 1; k < motion.errors.size(); ++k)
-      others += "; " + motion.errors[k].jsonPath + ": " + motion.errors[k].problem;
-    throw SceneError(sourceName, motion.errors.front().jsonPath,
-                     motion.errors.front().problem + others);
+    for (std::size_t k = 1; k < defects.size(); ++k)
+      others += "; " + defects[k].jsonPath + ": " + defects[k].problem;
+    throw SceneError(sourceName, defects.front().jsonPath, defects.front().problem + others);
   }
   for (const PlacementDefect& w : motion.warnings)
     scene.warnings.push_back(w.jsonPath + ": " + w.problem);

@@ -55,7 +55,8 @@ std::string objectPath(const char* kind, std::size_t i) {
 
 }  // namespace
 
-PlacementDefect findPlacementDefect(const Scene& scene) {
+std::vector<PlacementDefect> findPlacementDefects(const Scene& scene) {
+  std::vector<PlacementDefect> defects;
   struct Placed {
     std::string path;
     geometry::Ring polygon;
@@ -73,32 +74,30 @@ PlacementDefect findPlacementDefect(const Scene& scene) {
   // A recorded track: every sample inside the boundary (the importers choose the boundary
   // around them). Recorded people are not checked against walls or one another: they are
   // where they were, and walls occlude but do not stop them.
-  const auto trackOutside = [&](const char* kind,
-                                const std::vector<MovingObject>& objects) -> PlacementDefect {
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-      if (!objects[i].track) continue;
-      const Track& track = *objects[i].track;
+  // (Per object, its first sample outside.)
+  for (const auto& [kind, objects] :
+       {std::pair{"targets", &scene.targets}, std::pair{"obstacles", &scene.obstacles}}) {
+    for (std::size_t i = 0; i < objects->size(); ++i) {
+      if (!(*objects)[i].track) continue;
+      const Track& track = *(*objects)[i].track;
       for (std::size_t k = 0; k < track.times.size(); ++k) {
         if (geometry::locate(scene.boundary, track.positions[k]) ==
             geometry::Containment::Outside) {
-          return {
-              objectPath(kind, i) + ".track.samples[" + std::to_string(k) + "]",
-              fmt::format("at t = {} s the position lies outside the boundary", track.times[k])};
+          defects.push_back(
+              {objectPath(kind, i) + ".track.samples[" + std::to_string(k) + "]",
+               fmt::format("at t = {} s the position lies outside the boundary", track.times[k])});
+          break;
         }
       }
     }
-    return {};
-  };
-  for (const auto& [kind, objects] :
-       {std::pair{"targets", &scene.targets}, std::pair{"obstacles", &scene.obstacles}}) {
-    if (PlacementDefect d = trackOutside(kind, *objects); !d.jsonPath.empty()) return d;
   }
   for (const auto& object : placed) {
     if (!object.presentAtZero) continue;
     for (std::size_t v = 0; v < object.polygon.size(); ++v) {
       if (geometry::locate(scene.boundary, object.polygon[v]) == geometry::Containment::Outside) {
-        return {object.path + ".shape",
-                "at t = 0 vertex " + std::to_string(v) + " lies outside the boundary"};
+        defects.push_back({object.path + ".shape",
+                           "at t = 0 vertex " + std::to_string(v) + " lies outside the boundary"});
+        break;
       }
     }
   }
@@ -106,16 +105,18 @@ PlacementDefect findPlacementDefect(const Scene& scene) {
     const geometry::Vec2 p = scene.cameras[c].initial.position();
     const std::string path = objectPath("cameras", c) + ".pos";
     if (geometry::locate(scene.boundary, p) == geometry::Containment::Outside) {
-      return {path, "camera lies outside the boundary"};
+      defects.push_back({path, "camera lies outside the boundary"});
+      continue;
     }
     for (const auto& object : placed) {
       if (object.presentAtZero &&
           geometry::locate(object.polygon, p) == geometry::Containment::Inside) {
-        return {path, "camera lies inside " + object.path + " at t = 0"};
+        defects.push_back({path, "camera lies inside " + object.path + " at t = 0"});
+        break;
       }
     }
   }
-  return {};
+  return defects;
 }
 
 }  // namespace camcov::scene

@@ -3,6 +3,7 @@
 // unusable. Each returns an empty description when all is well, so tests can call them alone.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "geometry/ring.h"
 #include "scene/scene.h"
@@ -34,7 +35,8 @@ struct PlacementDefect {
   std::string problem;
 };
 // At t = 0: cameras inside the boundary (on it is allowed) and not strictly inside an object;
-// objects within the boundary.
-PlacementDefect findPlacementDefect(const Scene& scene);
+// objects within the boundary (a recorded track: every sample). Every defect of the scene, one
+// per camera or object, in the order targets, obstacles, cameras; none for a good scene.
+std::vector<PlacementDefect> findPlacementDefects(const Scene& scene);
 
 }  // namespace camcov::scene

@@ -63,6 +63,8 @@ const BadCase kBadCases[] = {
     {"camera_inside_target", "cameras[0].pos", "inside targets[0]"},
     {"camera_inside_obstacle", "cameras[0].pos", "inside obstacles[0]"},
     {"object_outside_boundary", "obstacles[0].shape", "outside the boundary"},
+    // Every misplaced object and camera at once, the first naming the place.
+    {"many_misplaced", "obstacles[0].shape", "; cameras[1].pos: camera lies inside obstacles[1]"},
     {"deformation_vertex_count", "targets[0].deformation.keyframes[0].shape", "vertices"},
     {"deformation_time_outside_period", "targets[0].deformation.keyframes[0].time", "(0, period)"},
     {"deformation_opposite_orientation", "targets[0].deformation.keyframes[0].shape",
@@ -97,6 +99,22 @@ TEST_P(BadScene, IsRejectedWithFileJsonPathAndProblem) {
 
 INSTANTIATE_TEST_SUITE_P(AllClasses, BadScene, ::testing::ValuesIn(kBadCases),
                          [](const auto& info) { return std::string(info.param.file); });
+
+TEST(BadSceneSet, EveryMisplacedObjectAndCameraIsNamedInOneMessageEachOnce) {
+  const auto file = testing::testDataDir() / "bad" / "many_misplaced.json";
+  try {
+    loadScene(file);
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    for (const char* part :
+         {": obstacles[0].shape: at t = 0 vertex", "; cameras[0].pos: camera lies outside",
+          "; cameras[1].pos: camera lies inside obstacles[1]", "; targets[0]: leaves the boundary"})
+      EXPECT_NE(message.find(part), std::string::npos) << part << " in " << message;
+    EXPECT_EQ(message.find("obstacles[0]: leaves"), std::string::npos)
+        << "an object misplaced at t = 0 is named once: " << message;
+  }
+}
 
 TEST(BadSceneSet, EveryFileInTheFolderHasACase) {
   for (const auto& file : testing::jsonFilesIn(testing::testDataDir() / "bad")) {

@@ -205,10 +205,11 @@ namespace {
 // only the corner's own trace into the object shows that the room's outside passes through it.
 TEST(MotionContainment, ABoundaryCornerEnteringTheObjectIsFoundThoughNoVertexLeaves) {
   Scene scene;
-  scene.boundary = {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+  scene.boundary = geometry::Ring{{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
   MovingObject o;
-  o.shape = {{0, 0}, {11, 5}, {5, 11}};  // at (1 1): its far edge x + y = 18 misses (10 10)
-  o.path = {{1, 1}, {3, 3}};             // at (3 3): x + y = 22, past the corner
+  o.shape =
+      geometry::Ring{{0, 0}, {11, 5}, {5, 11}};  // at (1 1): its far edge x + y = 18 misses (10 10)
+  o.path = std::vector<geometry::Vec2>{{1, 1}, {3, 3}};  // at (3 3): x + y = 22, past the corner
   scene.targets = {o};
   const MotionCheck check = checkMotion(scene);
   ASSERT_EQ(check.errors.size() + check.warnings.size(), 1u);
@@ -226,14 +227,14 @@ TEST(MotionContainment, AgreesWithDenseSamplingOnRandomShuttles) {
   std::uniform_real_distribution<double> coordinate(-2, 22), size(0.3, 9.0);
   Scene scene;
   // An L room: the reflex corner at (10 10) is where sampling and traces may disagree.
-  scene.boundary = {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+  scene.boundary = geometry::Ring{{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
   int out = 0, in = 0;
   for (int trial = 0; trial < 1500; ++trial) {
     MovingObject o;
     const double w = size(rng), h = size(rng);
-    o.shape = {{-w, -h}, {w, -h}, {0.3 * w, h}};
+    o.shape = geometry::Ring{{-w, -h}, {w, -h}, {0.3 * w, h}};
     const Vec2 from{coordinate(rng), coordinate(rng)}, to{coordinate(rng), coordinate(rng)};
-    o.path = {from, to};
+    o.path = std::vector<geometry::Vec2>{from, to};
     // As the loader has it before this check: the object inside at t = 0.
     geometry::Ring start = o.shape;
     geometry::transformRing(start, 0.0, from);
@@ -262,14 +263,18 @@ TEST(MotionContainment, AgreesWithDenseSamplingOnRandomShuttles) {
       }
     }
     const bool found = !check.errors.empty() || !check.warnings.empty();
-    if (sampled > 1e-3) EXPECT_TRUE(found) << "trial " << trial << ": sampled " << sampled;
+    if (sampled > 1e-3) {
+      EXPECT_TRUE(found) << "trial " << trial << ": sampled " << sampled;
+    }
     if (found) {
       // The depth the check reports ("lies 0.42 m outside"): a deep one sampling must see.
       const std::string problem =
           (check.errors.empty() ? check.warnings : check.errors).front().problem;
       std::smatch m;
       ASSERT_TRUE(std::regex_search(problem, m, std::regex(R"(lies ([0-9.e+-]+) m)"))) << problem;
-      if (std::stod(m[1]) > 0.05) EXPECT_GT(sampled, 0.0) << "trial " << trial << ": " << problem;
+      if (std::stod(m[1]) > 0.05) {
+        EXPECT_GT(sampled, 0.0) << "trial " << trial << ": " << problem;
+      }
     }
     (found ? out : in)++;
   }
