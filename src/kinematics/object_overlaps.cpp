@@ -33,7 +33,11 @@ BgPolygon toPolygon(const geometry::Ring& ring) {
 // is not overlapping.
 std::optional<Vec2> interiorsMeet(const geometry::Ring& a, const geometry::Ring& b) {
   std::vector<BgPolygon> pieces;
+  // GCC 12 at -O2 sees Boost 1.74's rescale policy read a factor it always sets first.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
   bg::intersection(toPolygon(a), toPolygon(b), pieces);
+#pragma GCC diagnostic pop
   const double scale =
       std::max(std::abs(geometry::signedArea(a)), std::abs(geometry::signedArea(b)));
   const BgPolygon* largest = nullptr;
@@ -46,7 +50,7 @@ std::optional<Vec2> interiorsMeet(const geometry::Ring& a, const geometry::Ring&
     }
   }
   if (largest == nullptr) return std::nullopt;
-  BgPoint c;
+  BgPoint c(0.0, 0.0);
   bg::centroid(*largest, c);
   return Vec2{c.x(), c.y()};
 }
