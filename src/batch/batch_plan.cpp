@@ -61,6 +61,39 @@ std::string identityOf(const control::Method* brought) {
   return std::string("c++ ") + codeIdentity();
 }
 
+// A scene that is not drawn from a family is grouped under its folder's name, with as many of
+// the folder's parents as tell two folders of the same name apart ("a/scenes", "b/scenes").
+void nameFolderGroups(std::vector<records::SceneEntry>& scenes,
+                      const std::vector<fs::path>& folderOf) {
+  std::vector<fs::path> folders;
+  for (const fs::path& f : folderOf) {
+    if (!f.empty() && std::find(folders.begin(), folders.end(), f) == folders.end())
+      folders.push_back(f);
+  }
+  // The last `depth` parts of a folder's path.
+  const auto tail = [](const fs::path& folder, std::size_t depth) {
+    std::vector<fs::path> parts(folder.begin(), folder.end());
+    fs::path out;
+    for (std::size_t i = parts.size() - std::min(depth, parts.size()); i < parts.size(); ++i)
+      out /= parts[i];
+    return out.relative_path().empty() ? out : out.relative_path();
+  };
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    if (folderOf[k].empty()) continue;
+    std::size_t depth = 1;
+    const auto clashes = [&] {
+      return std::any_of(folders.begin(), folders.end(), [&](const fs::path& other) {
+        return other != folderOf[k] && tail(other, depth) == tail(folderOf[k], depth);
+      });
+    };
+    const auto parts =
+        static_cast<std::size_t>(std::distance(folderOf[k].begin(), folderOf[k].end()));
+    while (clashes() && depth < parts)
+      ++depth;
+    scenes[k].group = tail(folderOf[k], depth).generic_string();
+  }
+}
+
 }  // namespace
 
 Shard parseShard(const std::string& text) {
@@ -100,13 +133,14 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
     if (brought[m] != nullptr)
       plan.manifest.methodLooks[r.methods[m]] = {brought[m]->description, brought[m]->color};
   }
+  std::vector<fs::path> folderOf;  // per scene not drawn from a family, its folder; else empty
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
-    plan.manifest.scenes.push_back(
-        {s.scene.name, file.string(), s.hash,
-         scene::familyNamedIn(s.scene.description)
-             .value_or(fs::absolute(file).lexically_normal().parent_path().filename().string())});
+    const auto family = scene::familyNamedIn(s.scene.description);
+    plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family.value_or("")});
+    folderOf.push_back(family ? fs::path() : fs::absolute(file).lexically_normal().parent_path());
   }
+  nameFolderGroups(plan.manifest.scenes, folderOf);
   const std::uint64_t total = plan.manifest.scenes.size() * r.methods.size() * r.seeds;
   if (total > kMaxJobs) {
     throw InputError(fmt::format(

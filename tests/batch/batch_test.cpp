@@ -83,6 +83,24 @@ TEST(PlanBatch, AGeneratedSceneIsGroupedByItsFamilyAnyOtherByItsFolder) {
                          {"drawn", "l_rooms"}, {"own", "mixed"}, {"tiny_dynamic", "scenes"}}));
 }
 
+TEST(PlanBatch, TwoFoldersOfOneNameAreToldApartByTheirParents) {
+  const fs::path root = testing::freshDir("clash");
+  for (const char* parent : {"x", "y"}) {
+    fs::create_directories(root / parent / "scenes");
+    fs::copy_file(testing::testDataDir() / "scenes" / "tiny_static.json",
+                  root / parent / "scenes" / (std::string(parent) + ".json"));
+  }
+  BatchRequest r = tinyRequest();
+  r.scenes = {(root / "x" / "scenes").string(), (root / "y" / "scenes").string(),
+              (testing::testDataDir() / "scenes" / "tiny_dynamic.json").string()};
+  std::map<std::string, std::string> groupOf;
+  for (const auto& s : planBatch(r, "test").manifest.scenes)
+    groupOf[s.name] = s.group;
+  EXPECT_EQ(groupOf, (std::map<std::string, std::string>{
+                         {"x", "x/scenes"}, {"y", "y/scenes"}, {"tiny_dynamic", "data/scenes"}}))
+      << "three folders named scenes: each with its parent";
+}
+
 TEST(PlanBatch, BadRequestsAreInputErrors) {
   for (const char* shard : {"0/3", "4/3", "1/0", "a/b", "1/2/3", "2"})
     EXPECT_THROW(parseShard(shard), InputError) << shard;
