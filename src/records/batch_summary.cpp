@@ -83,62 +83,61 @@ Tally tallyFrom(const nlohmann::json& t) {
 }
 
 // The summary's tallies again, scene group by scene group: the same comparisons, counted
-// per group, and each method's mean coverage there.
+// per group, and each method's mean coverage there. One pass over each list.
 std::vector<GroupSummary> groupScenes(const BatchSummary& summary,
                                       const std::map<std::string, std::string>& groupOf) {
   std::vector<GroupSummary> groups;
-  const auto groupFor = [&](const std::string& scene) -> GroupSummary* {
-    const auto it = groupOf.find(scene);
-    if (it == groupOf.end() || it->second.empty()) return nullptr;
-    for (GroupSummary& g : groups) {
-      if (g.name == it->second) return &g;
-    }
-    groups.push_back({it->second, {}, {}, {}, {}});
-    return &groups.back();
-  };
+  std::map<std::string, std::size_t> indexOf;  // scene to its group's index
   for (const std::string& scene : summary.scenes) {
-    if (GroupSummary* g = groupFor(scene)) g->scenes.push_back(scene);
+    const auto it = groupOf.find(scene);
+    if (it == groupOf.end() || it->second.empty()) continue;
+    const auto g = std::find_if(groups.begin(), groups.end(),
+                                [&](const GroupSummary& x) { return x.name == it->second; });
+    indexOf[scene] = static_cast<std::size_t>(g - groups.begin());
+    if (g == groups.end()) {
+      groups.push_back({it->second, {}, {}, summary.tallies, summary.pairTallies});
+      for (auto* tallies : {&groups.back().tallies, &groups.back().pairTallies}) {
+        for (Tally& t : *tallies)
+          t.wins = t.ties = t.losses = t.undecided = 0;
+      }
+    }
+    groups[indexOf[scene]].scenes.push_back(scene);
   }
-  // Methods, and the tallies' order, as the whole summary has them.
-  std::vector<std::string> methods;
-  for (const Tally& t : summary.tallies)
-    methods.push_back(t.method);
+  const auto groupOfScene = [&](const std::string& scene) -> GroupSummary* {
+    const auto it = indexOf.find(scene);
+    return it == indexOf.end() ? nullptr : &groups[it->second];
+  };
+  // Means by method name; the tables look them up by name.
+  std::vector<std::map<std::string, std::pair<double, int>>> sums(groups.size());
   for (const MethodSummary& m : summary.methods) {
-    if (std::find(methods.begin(), methods.end(), m.method) == methods.end())
-      methods.insert(m.method == summary.reference ? methods.begin() : methods.end(), m.method);
+    if (m.coverage.count == 0) continue;
+    if (GroupSummary* g = groupOfScene(m.scene)) {
+      auto& [sum, n] = sums[static_cast<std::size_t>(g - groups.data())][m.method];
+      sum += m.coverage.mean;
+      ++n;
+    }
   }
-  for (GroupSummary& g : groups) {
-    const auto inGroup = [&](const std::string& scene) {
-      return std::find(g.scenes.begin(), g.scenes.end(), scene) != g.scenes.end();
-    };
-    for (const std::string& method : methods) {
-      double sum = 0.0;
-      int n = 0;
-      for (const MethodSummary& m : summary.methods) {
-        if (m.method == method && m.coverage.count > 0 && inGroup(m.scene)) {
-          sum += m.coverage.mean;
-          ++n;
-        }
-      }
-      if (n > 0) g.meanCoverage.emplace_back(method, sum / n);
-    }
-    for (Tally t : summary.tallies) {
-      t.wins = t.ties = t.losses = t.undecided = 0;
-      for (const Comparison& c : summary.comparisons) {
-        if (c.method == t.method && inGroup(c.scene)) count(t, c, summary.reference);
-      }
-      g.tallies.push_back(t);
-    }
-    for (Tally t : summary.pairTallies) {
-      t.wins = t.ties = t.losses = t.undecided = 0;
-      for (const PairComparison& p : summary.pairs) {
-        if (p.against == t.against && p.comparison.method == t.method &&
-            inGroup(p.comparison.scene)) {
-          count(t, p.comparison, t.against);
-        }
-      }
-      g.pairTallies.push_back(t);
-    }
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    for (const auto& [method, sum] : sums[k])
+      groups[k].meanCoverage.emplace_back(method, sum.first / sum.second);
+  }
+  const auto tallyOf = [](std::vector<Tally>& tallies, const std::string& method,
+                          const std::string& against) {
+    return std::find_if(tallies.begin(), tallies.end(), [&](const Tally& t) {
+      return t.method == method && (against.empty() || t.against == against);
+    });
+  };
+  for (const Comparison& c : summary.comparisons) {
+    GroupSummary* g = groupOfScene(c.scene);
+    if (g == nullptr) continue;
+    if (auto t = tallyOf(g->tallies, c.method, ""); t != g->tallies.end())
+      count(*t, c, summary.reference);
+  }
+  for (const PairComparison& p : summary.pairs) {
+    GroupSummary* g = groupOfScene(p.comparison.scene);
+    if (g == nullptr) continue;
+    if (auto t = tallyOf(g->pairTallies, p.comparison.method, p.against); t != g->pairTallies.end())
+      count(*t, p.comparison, p.against);
   }
   return groups;
 }

@@ -118,8 +118,8 @@ struct PairComparison {
 struct GroupSummary {
   std::string name;
   std::vector<std::string> scenes;  // in the summary's order
-  // Per method, in the batch's order: the mean over the group's scenes of its mean average
-  // coverage (scenes where it ran).
+  // Per method, by name: the mean over the group's scenes of its mean average coverage (the
+  // scenes where it ran).
   std::vector<std::pair<std::string, double>> meanCoverage;
   std::vector<Tally> tallies;      // against the reference, as BatchSummary::tallies
   std::vector<Tally> pairTallies;  // as BatchSummary::pairTallies
