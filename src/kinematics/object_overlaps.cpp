@@ -60,8 +60,9 @@ std::optional<Vec2> interiorsMeet(const geometry::Ring& a, const geometry::Ring&
 std::vector<ObjectOverlap> findObjectOverlaps(const scene::Scene& scene, double duration,
                                               double step) {
   const Kinematics kinematics(scene);
-  const int instants =
-      std::min(kMaxInstants, 1 + static_cast<int>(std::floor(std::max(0.0, duration) / step)));
+  // Capped in floating point first: a long run at a fine step would overflow an int.
+  const double wanted = 1.0 + std::floor(std::max(0.0, duration) / step);
+  const int instants = wanted < kMaxInstants ? static_cast<int>(wanted) : kMaxInstants;
   std::vector<ObjectOverlap> found;
   std::set<std::pair<std::string, std::string>> seen;
   World world;

@@ -58,6 +58,9 @@ TEST(ObjectOverlaps, OnlyTheWindowAskedIsSampledAndAtMostSoManyInstants) {
   const auto far = findObjectOverlaps(drivingInto("POLYGON((-1 -1,1 -1,1 1,-1 1))"), 1e6, 0.1);
   ASSERT_EQ(far.size(), 1u);
   EXPECT_NEAR(far[0].time, 8.1, 1e-9);
+  // A step so fine the count of instants would not fit an int: still capped, nothing found in
+  // the first kMaxInstants nanoseconds.
+  EXPECT_TRUE(findObjectOverlaps(drivingInto("POLYGON((-1 -1,1 -1,1 1,-1 1))"), 1e6, 1e-9).empty());
 }
 
 }  // namespace
