@@ -4,8 +4,10 @@
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
-# The corpus starts from tests/fuzz/seeds and, for the scene loader, every scene of scenes/ and
-# tests/data/ (copied at run time into the build folder, never into the repository).
+# Targets: the scene loader, the visibility sweep, the two track importers and the command
+# line's parser. The corpus starts from tests/fuzz/seeds, every scene of scenes/ and tests/data/
+# and the track extracts of tests/data/tracks (copied at run time into the build folder, never
+# into the repository).
 # A crash leaves its input in build-fuzz/artifacts/; replay it with
 #   build-fuzz/tests/fuzz/fuzz_<target> build-fuzz/artifacts/<file>
 set -euo pipefail
@@ -19,14 +21,23 @@ esac
 dir="$repo/build-fuzz"
 CC=clang CXX=clang++ cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCAMCOV_BUILD_FUZZERS=ON -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$dir" --parallel "$(nproc)" --target fuzz_scene fuzz_visibility
+cmake --build "$dir" --parallel "$(nproc)" --target fuzz_scene fuzz_visibility fuzz_lastrow \
+  fuzz_ethucy fuzz_command_line
 
 corpus="$dir/corpus"
 rm -rf "$corpus"
-mkdir -p "$corpus/scene" "$corpus/visibility" "$dir/artifacts"
+mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line} "$dir/artifacts"
 cp "$repo"/tests/fuzz/seeds/scene/*.json "$corpus/scene/"
 find "$repo/scenes" "$repo/tests/data" -name '*.json' -size -64k |
   while read -r f; do cp "$f" "$corpus/scene/$(echo "${f#"$repo"/}" | tr / _)"; done
+# The importers' seeds are the repository's track extracts; an ETH/UCY input is obsmat.txt, a
+# NUL byte, then map.xml (tests/fuzz/ethucy_fuzzer.cpp).
+tracks="$repo/tests/data/tracks"
+cp "$tracks/lastrow_extract.csv" "$corpus/lastrow/"
+cp "$tracks/ethucy_extract/obsmat.txt" "$corpus/ethucy/obsmat_only"
+{ cat "$tracks/ethucy_extract/obsmat.txt"; printf '\0'; cat "$tracks/ethucy_extract/map.xml"; } \
+  >"$corpus/ethucy/with_map"
+cp "$repo"/tests/fuzz/seeds/command_line/* "$corpus/command_line/"
 
 run() {
   local target=$1 log="$dir/fuzz_$1.log" code=0
@@ -46,5 +57,8 @@ run scene -max_len=8192 -dict="$repo/tests/fuzz/scene.dict" || status=1
 # Without length control every input may use all 1024 bytes from the start: a World with
 # several objects and cameras needs a few hundred.
 run visibility -max_len=1024 -len_control=0 || status=1
+run lastrow -max_len=8192 || status=1
+run ethucy -max_len=8192 || status=1
+run command_line -max_len=512 || status=1
 [ "$status" -eq 0 ] && echo "fuzz: no failures" || echo "fuzz: FAILED, inputs in $dir/artifacts"
 exit "$status"

@@ -20,6 +20,9 @@ struct Registration {
 const std::vector<std::string>& invocation();
 void setInvocation(int argc, char** argv);
 
+// Every command below, the version flag and the numeric options' checks, on `app`.
+std::vector<Registration> addCommands(CLI::App& app);
+
 Registration addValidateCommand(CLI::App& app);
 Registration addStateCommand(CLI::App& app);
 Registration addParamsCommand(CLI::App& app);

@@ -4,36 +4,15 @@
 #include <exception>
 #include <iostream>
 
-#include "camcov/version.h"
 #include "cli/command.h"
-#include "cli/number_options.h"
+#include "cli/terminal_safe_stream.h"
 #include "util/input_error.h"
-
-namespace camcov::cli {
-namespace {
-std::vector<std::string> commandLine;
-}  // namespace
-const std::vector<std::string>& invocation() {
-  return commandLine;
-}
-void setInvocation(int argc, char** argv) {
-  commandLine.assign(argv, argv + argc);
-}
-}  // namespace camcov::cli
 
 int main(int argc, char** argv) {
   using namespace camcov;
+  const cli::TerminalSafeStderr safeMessages;
   CLI::App app{"camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian)"};
-  app.set_version_flag("--version", std::string("camcov ") + kVersion);
-  app.require_subcommand(1);
-  const std::vector<cli::Registration> commands{
-      cli::addValidateCommand(app), cli::addStateCommand(app),   cli::addParamsCommand(app),
-      cli::addInspectCommand(app),  cli::addRunCommand(app),     cli::addRenderCommand(app),
-      cli::addVideoCommand(app),    cli::addBenchCommand(app),   cli::addMergeCommand(app),
-      cli::addReportCommand(app),   cli::addExploreCommand(app), cli::addImportCommand(app),
-      cli::addGenerateCommand(app), cli::addOptimumCommand(app),
-  };
-  cli::guardNumericOptions(app);
+  const std::vector<cli::Registration> commands = cli::addCommands(app);
   cli::setInvocation(argc, argv);
   try {
     app.parse(argc, argv);

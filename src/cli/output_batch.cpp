@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <cstdio>
+#include <iostream>
 
 namespace camcov::cli {
 
@@ -22,7 +22,7 @@ void OutputProblems::add(std::string problem) {
 std::size_t OutputProblems::report() const {
   const std::lock_guard lock(mutex_);
   for (const std::string& problem : problems_)
-    std::fprintf(stderr, "warning: %s\n", problem.c_str());
+    std::cerr << "warning: " << problem << "\n";
   return problems_.size();
 }
 

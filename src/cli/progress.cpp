@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/printable.h"
+
 namespace camcov::cli {
 
 std::string formatDuration(double seconds) {
@@ -28,8 +30,11 @@ void Progress::finished(const std::string& what) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = static_cast<double>(done_ - doneAtStart_) / std::max(elapsed, 1e-9);
   const double eta = static_cast<double>(total_ - done_) / std::max(rate, 1e-9);
-  const std::string text = fmt::format("[{}/{}] {} elapsed, ETA {} | {}", done_, total_,
-                                       formatDuration(elapsed), formatDuration(eta), what);
+  // Written past std::cerr's filter (terminal_safe_stream.h) for the live line's own control
+  // codes, so `what` (a scene's name, a failed job's message) is made printable here.
+  const std::string text =
+      fmt::format("[{}/{}] {} elapsed, ETA {} | {}", done_, total_, formatDuration(elapsed),
+                  formatDuration(eta), printable(what, {.keepLines = false}));
   if (terminal_) {
     std::fprintf(stderr, "\r\033[K%s", text.c_str());
   } else {

@@ -9,6 +9,7 @@
 #include "params/parameters.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
+#include "util/printable.h"
 
 namespace camcov::cli {
 
@@ -23,10 +24,10 @@ Registration addValidateCommand(CLI::App& app) {
               try {
                 const scene::Scene s = scene::loadScene(file);
                 std::cout << fmt::format("ok    {}: {} target(s), {} obstacle(s), {} camera(s)\n",
-                                         file, s.targets.size(), s.obstacles.size(),
+                                         printable(file), s.targets.size(), s.obstacles.size(),
                                          s.cameras.size());
                 for (const std::string& warning : s.warnings)
-                  std::cout << fmt::format("  warning: {}\n", warning);
+                  std::cout << fmt::format("  warning: {}\n", printable(warning));
                 // Over a run of the default length, at the simulator's step.
                 const params::SimParams run;
                 for (const auto& o : kinematics::findObjectOverlaps(s, run.duration, run.dt)) {
@@ -34,7 +35,8 @@ Registration addValidateCommand(CLI::App& app) {
                                            kinematics::describeOverlap(o), run.dt, run.duration);
                 }
               } catch (const InputError& e) {
-                std::cout << "error " << e.what() << "\n";
+                // On stdout, past std::cerr's filter: quoted file text made printable here.
+                std::cout << "error " << printable(e.what(), {.keepLines = true}) << "\n";
                 exitCode = 2;
               }
             }

@@ -11,6 +11,7 @@
 #include "import/text_fields.h"
 #include "import/track_collector.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace camcov::import {
 namespace {
@@ -46,8 +47,8 @@ std::vector<std::pair<std::string, std::string>> attributes(std::string_view tag
   return out;
 }
 
-void readMap(const std::string& file, Recording& recording) {
-  const std::vector<std::string> lines = readLines(file);
+void parseMap(std::string xml, const std::string& file, Recording& recording) {
+  const std::vector<std::string> lines = splitLines(std::move(xml), file);
   std::string text;
   std::vector<std::size_t> lineStart;  // offset of each line in `text`
   for (const auto& l : lines) {
@@ -138,8 +139,16 @@ Recording readEthUcy(const std::string& folder, double fps) {
   namespace fs = std::filesystem;
   const fs::path obsmat = fs::path(folder) / "obsmat.txt";
   if (!fs::exists(obsmat)) throw InputError(folder + ": no obsmat.txt in the folder");
-  const std::string file = obsmat.string();
-  const std::vector<std::string> lines = readLines(file);
+  std::optional<std::string> map;
+  if (const fs::path xml = fs::path(folder) / "map.xml"; fs::exists(xml)) map = readInputFile(xml);
+  return parseEthUcy(readInputFile(obsmat), std::move(map), folder, fps);
+}
+
+Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const std::string& folder,
+                      double fps) {
+  namespace fs = std::filesystem;
+  const std::string file = (fs::path(folder) / "obsmat.txt").string();
+  const std::vector<std::string> lines = splitLines(std::move(obsmat), file);
   struct Row {
     double frame;
     std::string id;
@@ -174,8 +183,7 @@ Recording readEthUcy(const std::string& folder, double fps) {
   for (const Row& r : rows)
     tracks.add(r.id, (r.frame - first) / fps, r.p, {file, r.line});
   recording.tracks = tracks.take();
-  if (const fs::path map = fs::path(folder) / "map.xml"; fs::exists(map))
-    readMap(map.string(), recording);
+  if (map) parseMap(std::move(*map), (fs::path(folder) / "map.xml").string(), recording);
   return recording;
 }
 

@@ -10,6 +10,7 @@
 #include "import/text_fields.h"
 #include "import/track_collector.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 #include "util/person_numbers.h"
 
 namespace camcov::import {
@@ -32,7 +33,11 @@ std::string colourHex(const std::string& name) {
 }
 
 Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) {
-  const std::vector<std::string> lines = readLines(file);
+  return parseLastRow(readInputFile(file), file, pitch, rate);
+}
+
+Recording parseLastRow(std::string text, const std::string& file, const Pitch& pitch, double rate) {
+  const std::vector<std::string> lines = splitLines(std::move(text), file);
   if (lines.empty() || lines.front().empty()) {
     throw InputError(file + ": empty file: expected the header player,frame,x,y,...");
   }
@@ -49,7 +54,7 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) 
     for (const auto& m : missing)
       list += (list.empty() ? "" : ", ") + m;
     throw InputError(fmt::format("{}:1: missing column(s) {} (the header is {})", file, list,
-                                 printable(lines.front())));
+                                 printable(lines.front(), kQuotedField)));
   }
   const auto player = column("player"), frame = column("frame"), x = column("x"), y = column("y"),
              team = column("team"), colour = column("bgcolor");
@@ -70,7 +75,7 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) 
     const std::string id = f[static_cast<std::size_t>(player)];
     if (!parseCount(id)) {
       throw InputError(fmt::format("{}column player: \"{}\" is not an id (a whole number)",
-                                   where.prefix(), printable(id)));
+                                   where.prefix(), printable(id, kQuotedField)));
     }
     const double t =
         parseNumber(f[static_cast<std::size_t>(frame)], where, "column frame", kFrameNumber) / rate;
@@ -93,7 +98,7 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) 
   if (tracks.empty()) throw InputError(file + ": no rows after the header");
   recording.tracks = tracks.take();
   for (const auto& name : unknownColours)
-    recording.notes.push_back("colour \"" + name +
+    recording.notes.push_back("colour \"" + printable(name, kQuotedField) +
                               "\" is not one camcov knows: drawn in the default");
   return recording;
 }

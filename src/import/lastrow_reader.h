@@ -14,6 +14,10 @@ namespace camcov::import {
 // does not move forward for one object.
 Recording readLastRow(const std::string& file, const Pitch& pitch, double rate = 20.0);
 
+// The same for the file's text, read already (`file` names it in messages).
+Recording parseLastRow(std::string text, const std::string& file, const Pitch& pitch,
+                       double rate = 20.0);
+
 // "#rrggbb" for a CSS colour name used by the data (red, darkblue, ...); empty if unknown.
 std::string colourHex(const std::string& name);
 

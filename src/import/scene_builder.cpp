@@ -118,13 +118,16 @@ double busiestStart(const Recording& recording, double length, double maxGap) {
   const std::vector<int> present = presentPerTick(people);
   const auto window = static_cast<std::size_t>(std::llround(length / kTick));
   const auto ticksPerSecond = static_cast<std::size_t>(std::llround(1.0 / kTick));
+  // Prefix sums: the count over any window in one subtraction, so the search is linear in the
+  // recording's length whatever the window's.
+  std::vector<long> before(present.size() + 1, 0);  // before[i]: present[0] + ... + present[i-1]
+  for (std::size_t i = 0; i < present.size(); ++i)
+    before[i + 1] = before[i] + present[i];
   std::size_t best = 0;
   long bestSum = -1;
   for (std::size_t first = 0; first == 0 || first + window <= present.size();
        first += ticksPerSecond) {
-    long sum = 0;
-    for (std::size_t i = first; i < std::min(present.size(), first + window); ++i)
-      sum += present[i];
+    const long sum = before[std::min(present.size(), first + window)] - before[first];
     if (sum > bestSum) {
       bestSum = sum;
       best = first;
@@ -193,29 +196,37 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
         crossing));
   }
 
-  // The boundary: the pitch with its run-off, or the box around everything plus the margin.
-  double x0, y0, x1, y1;
+  // The boundary: the box around everything plus the margin, and on a pitch at least the pitch
+  // with its run-off (a player recorded beyond it, by noise or off the field, grows it: the
+  // boundary holds every object at all times, SPEC section 2).
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  const auto grow = [&](Vec2 p, double r) {
+    x0 = std::min(x0, p.x - r), y0 = std::min(y0, p.y - r);
+    x1 = std::max(x1, p.x + r), y1 = std::max(y1, p.y + r);
+  };
+  for (const auto& t : targets)
+    for (const Vec2 p : t.positions)
+      grow(p, t.kind == "ball" ? o.ballRadius : o.personRadius);
+  for (const auto& t : movingObstacles)
+    for (const Vec2 p : t.positions)
+      grow(p, o.ballRadius);
+  for (const Wall& w : recording.walls) {
+    grow(w.a, o.wallThickness);
+    grow(w.b, o.wallThickness);
+  }
+  for (const Pillar& p : recording.pillars)
+    grow(p.centre, p.radius);
+  x0 -= o.margin, y0 -= o.margin, x1 += o.margin, y1 += o.margin;
   if (recording.onPitch) {
-    x0 = -o.margin, y0 = -o.margin;
-    x1 = recording.pitch.length + o.margin, y1 = recording.pitch.width + o.margin;
-  } else {
-    x0 = y0 = std::numeric_limits<double>::infinity();
-    x1 = y1 = -x0;
-    const auto grow = [&](Vec2 p, double r) {
-      x0 = std::min(x0, p.x - r), y0 = std::min(y0, p.y - r);
-      x1 = std::max(x1, p.x + r), y1 = std::max(y1, p.y + r);
-    };
-    for (const auto* group : {&targets, &movingObstacles})
-      for (const auto& t : *group)
-        for (const Vec2 p : t.positions)
-          grow(p, o.personRadius);
-    for (const Wall& w : recording.walls) {
-      grow(w.a, o.wallThickness);
-      grow(w.b, o.wallThickness);
+    const double runOff[] = {-o.margin, -o.margin, recording.pitch.length + o.margin,
+                             recording.pitch.width + o.margin};
+    if (x0 < runOff[0] || y0 < runOff[1] || x1 > runOff[2] || y1 > runOff[3]) {
+      built.notes.push_back(fmt::format(
+          "someone is recorded beyond the pitch's {} m run-off: the boundary grows to hold them",
+          o.margin));
     }
-    for (const Pillar& p : recording.pillars)
-      grow(p.centre, p.radius);
-    x0 -= o.margin, y0 -= o.margin, x1 += o.margin, y1 += o.margin;
+    x0 = std::min(x0, runOff[0]), y0 = std::min(y0, runOff[1]);
+    x1 = std::max(x1, runOff[2]), y1 = std::max(y1, runOff[3]);
   }
   x0 = std::floor(x0), y0 = std::floor(y0), x1 = std::ceil(x1), y1 = std::ceil(y1);
   const geometry::Ring boundary{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};

@@ -25,25 +25,14 @@ double parseNumber(std::string_view text, const Where& where, std::string_view w
     text.remove_suffix(1);
   const auto value = parseFiniteNumber(text);
   if (!value) {
-    throw InputError(
-        fmt::format("{}{}: \"{}\" is not a finite number", where.prefix(), what, printable(text)));
+    throw InputError(fmt::format("{}{}: \"{}\" is not a finite number", where.prefix(), what,
+                                 printable(text, kQuotedField)));
   }
   if (!withinRange(*value, limits.lo, limits.hi)) {
     throw InputError(fmt::format("{}{}: {} is outside {}", where.prefix(), what,
                                  readableNumber(*value), rangeText(limits.lo, limits.hi)));
   }
   return *value;
-}
-
-std::string printable(std::string_view text) {
-  constexpr std::size_t kShown = 40;
-  std::string out;
-  for (const char c : text.substr(0, kShown)) {
-    const auto u = static_cast<unsigned char>(c);
-    out += (u < 0x20 || u == 0x7f) ? fmt::format("\\x{:02x}", u) : std::string(1, c);
-  }
-  if (text.size() > kShown) out += "…";
-  return out;
 }
 
 std::vector<std::string> splitCsv(std::string_view line, const Where& where) {
@@ -86,8 +75,7 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
   return fields;
 }
 
-std::vector<std::string> readLines(const std::string& file) {
-  std::string text = readInputFile(file);
+std::vector<std::string> splitLines(std::string text, const std::string& file) {
   // A text file may start with UTF-8's byte order mark (spreadsheets write one): not content.
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
   std::istringstream in(text);
@@ -101,6 +89,10 @@ std::vector<std::string> readLines(const std::string& file) {
     lines.push_back(std::move(line));
   }
   return lines;
+}
+
+std::vector<std::string> readLines(const std::string& file) {
+  return splitLines(readInputFile(file), file);
 }
 
 }  // namespace camcov::import

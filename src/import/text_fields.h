@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "util/printable.h"
+
 namespace camcov::import {
 
 struct Where {
@@ -29,9 +31,8 @@ inline constexpr Limits kLength{0.0, 1e6};          // m
 double parseNumber(std::string_view text, const Where& where, std::string_view what,
                    Limits limits = kAnyNumber);
 
-// `text` fit to quote in a message: control bytes as \xNN, at most 40 characters shown (a
-// binary file's bytes never reach the terminal raw).
-std::string printable(std::string_view text);
+// How a field of a file is quoted in a message: util/printable.h, at most 40 characters.
+inline constexpr PrintableOptions kQuotedField{.maxCharacters = 40};
 
 // The fields of one CSV line (RFC 4180: commas, fields in double quotes may hold commas and
 // doubled quotes). InputError for an unterminated quote.
@@ -40,8 +41,11 @@ std::vector<std::string> splitCsv(std::string_view line, const Where& where);
 // The whitespace-separated fields of a line.
 std::vector<std::string_view> splitWhitespace(std::string_view line);
 
-// The whole file, InputError if it cannot be read or holds a NUL byte; lines with any trailing
-// '\r' removed, and a leading UTF-8 byte order mark.
+// The lines of a file's text (`file` names it in messages), InputError if it holds a NUL byte;
+// lines with any trailing '\r' removed, and a leading UTF-8 byte order mark.
+std::vector<std::string> splitLines(std::string text, const std::string& file);
+
+// splitLines of the whole file, InputError if it cannot be read.
 std::vector<std::string> readLines(const std::string& file);
 
 }  // namespace camcov::import

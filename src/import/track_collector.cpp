@@ -2,12 +2,21 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "util/input_error.h"
 
 namespace camcov::import {
 
 void TrackCollector::add(const std::string& id, double time, geometry::Vec2 position,
                          const Where& where, const std::string& kind, const std::string& color) {
+  // Bounded so that what is built from the recording, sampled every 0.1 s, stays in memory.
+  if (!(std::abs(time) <= kMaxRecordingSeconds)) {
+    throw InputError(
+        fmt::format("{}{} {} at t = {} s: a recording's times lie within +-{:g} s "
+                    "(11.6 days) of its start",
+                    where.prefix(), kind, id, time, kMaxRecordingSeconds));
+  }
   auto [it, fresh] = index_.try_emplace(id, tracks_.size());
   if (fresh) tracks_.push_back({id, color, kind, {}, {}});
   RecordedTrack& track = tracks_[it->second];

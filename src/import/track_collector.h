@@ -1,6 +1,7 @@
 #pragma once
 // Gathers the rows of a recording into one track per id, in order of first appearance, and
-// refuses time that does not move forward for an id (with the file and line).
+// refuses time that does not move forward for an id or lies beyond kMaxRecordingSeconds (with
+// the file and line).
 #include <map>
 #include <string>
 #include <vector>
@@ -9,6 +10,9 @@
 #include "import/text_fields.h"
 
 namespace camcov::import {
+
+// The longest a recording may be, s: every real one is minutes or hours long.
+inline constexpr double kMaxRecordingSeconds = 1e6;
 
 class TrackCollector {
  public:

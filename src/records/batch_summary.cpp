@@ -241,8 +241,9 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
   };
   std::map<std::string, Tally> tallies;
   std::map<std::pair<std::string, std::string>, Tally> pairTallies;
-  for (const auto& [scene, byMethod] : coverageByScene) {
+  for (const auto& [scene, coverageOfScene] : coverageByScene) {
     summary.scenes.push_back(scene);
+    const auto& byMethod = coverageOfScene;  // a name a lambda may capture (clang 14)
     const auto runsOf = [&byMethod](const std::string& m) {
       const auto it = byMethod.find(m);
       return it == byMethod.end() ? nullptr : &it->second;

@@ -7,6 +7,9 @@
 #include <sys/sysmacros.h>
 #include <unistd.h>
 
+#include <clocale>
+#include <cwchar>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -189,6 +192,46 @@ TEST(HostileInput, SceneAtTheSpeedLimitsRunsToItsEndAndBeyondThemIsRefused) {
 
 namespace camcov::testing {
 namespace {
+
+// True if `text` holds a byte a terminal would obey (a control other than line feed and tab)
+// or bytes that are not UTF-8: checked with the standard library's own UTF-8 decoder, not with
+// the filter under test.
+bool unsafeForTerminal(const std::string& text) {
+  std::mbstate_t state{};
+  const char* p = text.data();
+  const char* end = p + text.size();
+  while (p < end) {
+    wchar_t c;
+    const std::size_t n = std::mbrtowc(&c, p, static_cast<std::size_t>(end - p), &state);
+    if (n == 0 || n == static_cast<std::size_t>(-1) || n == static_cast<std::size_t>(-2))
+      return true;
+    if ((c < 0x20 && c != L'\n' && c != L'\t') || (c >= 0x7f && c < 0xa0)) return true;
+    p += n;
+  }
+  return false;
+}
+
+TEST(HostileInput, MessagesQuotingAFileOrAnArgumentNeverCarryControlBytesOrBrokenUtf8) {
+  ASSERT_NE(std::setlocale(LC_CTYPE, "C.UTF-8"), nullptr);
+  const ScratchDir dir;
+  // ESC and DEL inside WKT (Boost quotes the fragment), a byte that is not UTF-8 (the JSON
+  // parser quotes what it last read), a CSV field with ESC, a C1 control in an argument.
+  std::ofstream(dir / "esc.json") << R"j({"boundary": "POLYGON((0 0,\u001b[31m\u007f 1,1 1))"})j";
+  std::ofstream(dir / "ff.json") << "{\"boundary\": \"\xff\xfe\x1b]0;title\x07\"}";
+  std::ofstream(dir / "esc.csv") << "player,frame,x,y\n\x1b[2J,0,1,1\n";
+  const std::string csv = (dir / "esc.csv").string();
+  for (const std::string& command :
+       {"validate " + (dir / "esc.json").string(), "run " + (dir / "esc.json").string(),
+        "validate " + (dir / "ff.json").string(), "state " + (dir / "ff.json").string(),
+        "import lastrow " + csv + " -o " + (dir / "x.json").string(),
+        "run " + (dir / "\xc2\x9b.json").string()}) {
+    const CommandResult r = runCamcov(command);
+    EXPECT_EQ(r.exitCode, 2) << command;
+    EXPECT_FALSE(r.err.empty() && r.out.empty()) << command;
+    EXPECT_FALSE(unsafeForTerminal(r.err)) << command << "\n" << r.err;
+    EXPECT_FALSE(unsafeForTerminal(r.out)) << command << "\n" << r.out;
+  }
+}
 
 TEST(HostileInput, StrictFormatsRefuseDuplicateKeysNulBytesAndEmptyMapsAndTakeValidOddities) {
   const ScratchDir dir;

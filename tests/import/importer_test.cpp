@@ -153,6 +153,24 @@ TEST(ImportEthUcy, ATrackThatComesBackAfterAGapIsANewTargetAndSaysSo) {
   EXPECT_NEAR(scene["targets"][1]["track"]["samples"][0][0].get<double>(), 4.0, 1e-9);
 }
 
+TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
+  // Player 3 stands at 150 % of the pitch's length (157.5 m) and -10 % of its width (-6.8 m):
+  // the boundary is the pitch with its run-off (5 m for Last Row) grown to hold them with their
+  // 0.25 m radius and the same 5 m, rounded out to whole metres: x to 157.75 + 5, y to -12.05.
+  const ScratchDir dir;
+  std::ofstream(dir / "off.csv") << "player,frame,x,y,team,bgcolor\n"
+                                    "2,0,50,50,attack,red\n2,1,51,50,attack,red\n"
+                                    "3,0,150,-10,defense,blue\n3,1,150,-10,defense,blue\n";
+  const auto r = runCamcov("import lastrow " + (dir / "off.csv").string() + " -o " +
+                           (dir / "off.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("beyond the pitch's 5 m run-off: the boundary grows"), std::string::npos)
+      << r.err;
+  const auto scene = nlohmann::json::parse(readFile(dir / "off.json"));
+  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -13,163 -13,163 73,-5 73,-5 -13))");
+  EXPECT_EQ(runCamcov("validate " + (dir / "off.json").string()).exitCode, 0);
+}
+
 struct BadInput {
   const char* name;
   const char* importer;  // "lastrow" or "ethucy"
@@ -178,6 +196,9 @@ const BadInput kBadInputs[] = {
      ":3: person 1 at t = 0.2 s after t = 0.25 s: time goes backwards"},
     {"lastrow_unclosed_quote", "lastrow", "player,frame,x,y,team,bgcolor\n1,0,3,4,\"attack,red\n",
      nullptr, ":2: a quoted field is not closed"},
+    {"lastrow_longer_than_any_recording", "lastrow",
+     "player,frame,x,y,team,bgcolor\n1,0,3,4,attack,red\n1,1e12,3,4,attack,red\n", nullptr,
+     ":3: person 1 at t = 50000000000 s: a recording's times lie within +-1e+06 s"},
     {"ethucy_empty_file", "ethucy", "", nullptr, "obsmat.txt: empty file"},
     {"ethucy_short_row", "ethucy", "1 1 0 0 1 0 0 0\n11 1 0 0 1 0 0\n", nullptr,
      "obsmat.txt:2: 7 numbers, a row has 8"},
