@@ -1,4 +1,4 @@
-// Section 2c: scenes that hold still against their offline optimum (issue 19): the coverage
+// Section 2c: scenes that hold still against their offline optimum: the coverage
 // of the best team pose `camcov optimum` found, and each method's final coverage, median
 // over seeds, as a fraction of it. The optimum is a reference a long search found, not a
 // proof: a method may end above it.
@@ -17,7 +17,7 @@
 namespace camcov::reports {
 namespace {
 
-// A final coverage this close to the optimum's counts as reaching it (issue 19: 2 %).
+// A final coverage this close to the optimum's counts as reaching it (2 %).
 constexpr double kNearOptimum = 0.98;
 
 }  // namespace

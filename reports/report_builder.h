@@ -1,5 +1,5 @@
 #pragma once
-// The report (issue 7, SPEC section 6): one HTML file that works offline — inline CSS and SVG,
+// The report (SPEC section 6): one HTML file that works offline — inline CSS and SVG,
 // one small inline script, videos by relative URL, and a Content-Security-Policy that lets
 // the browser fetch nothing else. Sections: header, summary, Fig. 4, Fig. 5, Fig. 3,
 // Table I, videos, failed jobs.

@@ -56,7 +56,7 @@ struct SceneData {
   std::vector<std::string> warnings;
   std::map<std::string, MethodRuns> methods;  // by method name
   std::string explorerUrl;  // explore/<scene>.html relative to the report; empty if none
-  // optimum/<scene>.json (issue 19) when it was made from the scene the batch ran.
+  // optimum/<scene>.json when it was made from the scene the batch ran.
   std::optional<records::OptimumFile> optimum;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// What the report of settings side by side shows (issue 22), read from several results folders
+// What the report of settings side by side shows, read from several results folders
 // of the same study run with different parameters: e.g. the folders OUT/<key=value_...> of
 // scripts/slurm_sweep.sh. Per folder its manifest and every run's average coverage and
 // utilization (from runs/, so the comparisons see the seeds, not only the means); across the

@@ -1,5 +1,5 @@
 #pragma once
-// The report of settings side by side (issue 22): several results folders of one study, run
+// The report of settings side by side: several results folders of one study, run
 // with different parameters (e.g. the folders of scripts/slurm_sweep.sh), in one offline HTML
 // file. What differs between them (parameters from each batch.json, and warnings when methods,
 // seeds or scene files differ too); per method the mean over scenes and the wins, ties and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes scenes/large/ with `camcov generate` (issue 23, "Scale"): three seeded scenes at sizes
+# Makes scenes/large/ with `camcov generate` (docs/scaling.md): three seeded scenes at sizes
 # the hand-made ones do not reach. They are committed; `camcov generate` gives the same bytes
 # for the same options and seed, so this remakes them exactly (tests/cli/generate_test.cpp).
 #

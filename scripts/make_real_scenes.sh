@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes scenes/real/ from the recorded tracks in ../shared/tracks (issue 26): three pedestrian
+# Makes scenes/real/ from the recorded tracks in ../shared/tracks: three pedestrian
 # scenes (the busiest 60 s of ETH univ, ETH hotel and UCY zara01) and both football plays whole.
 # The recordings are not ours to copy into the repository, so the scenes are made from them
 # here (scenes/real/ is not committed); the main job runs this first. Same tracks, same files.

@@ -6,7 +6,7 @@
 // 0.52 of exact).
 //
 // Why not libswscale: its general path (read a row, filter horizontally, filter vertically,
-// write) took 1.6 to 1.8 ms a 720p frame, a fifth of the video path's budget (issue 6: 100
+// write) took 1.6 to 1.8 ms a 720p frame, a fifth of the video path's budget (100
 // frames/s on one core); this takes 0.5 to 0.6 ms (viz/README.md). libswscale stays what the
 // tests check this against, and the benchmark's comparison row.
 #include <cstdint>

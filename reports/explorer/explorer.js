@@ -1,4 +1,4 @@
-// The run explorer's page script (issue 21). It decodes the data camcov embedded
+// The run explorer's page script. It decodes the data camcov embedded
 // (reports/explorer/explorer_data.h says the format) and draws; every piece of geometry and
 // every "why not seen" was computed by camcov, so nothing here decides visibility.
 "use strict";

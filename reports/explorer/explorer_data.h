@@ -1,5 +1,5 @@
 #pragma once
-// The data the run explorer (issue 21) embeds: one or more recorded runs of one scene, with
+// The data the run explorer embeds: one or more recorded runs of one scene, with
 // everything the page draws at every step already computed here, by the same code as the
 // frames (viz::RunReplay: the world, S with visibleBy, each camera's view, plan and goal) —
 // the page decodes and draws, it never decides geometry. Per step it adds, for each segment of

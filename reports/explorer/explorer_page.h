@@ -1,5 +1,5 @@
 #pragma once
-// The run explorer (issue 21): one offline HTML file that replays recorded runs of one scene
+// The run explorer: one offline HTML file that replays recorded runs of one scene
 // side by side in the browser — a timeline with play/pause, step, slider, the coverage and
 // utilization curves and the events; the world at each step as the frames draw it; details of
 // any edge (length, visibleBy, why each other camera does not see it) or camera (pose, limits,

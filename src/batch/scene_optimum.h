@@ -1,5 +1,5 @@
 #pragma once
-// The offline optimum of a scene file at one instant (issue 19; planners/offline_optimum.h):
+// The offline optimum of a scene file at one instant (planners/offline_optimum.h):
 // what `camcov optimum` computes, and `camcov bench` for every scene that holds still.
 #include <cstdint>
 #include <filesystem>

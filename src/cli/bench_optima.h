@@ -1,6 +1,6 @@
 #pragma once
-// The offline optimum of every scene of a batch that holds still (issue 19;
-// batch/scene_optimum.h), in <results>/optimum/<scene>.json, for the report to set each
+// The offline optimum of every scene of a batch that holds still
+// (batch/scene_optimum.h), in <results>/optimum/<scene>.json, for the report to set each
 // method's final coverage against it.
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-// `camcov explore RUN.json... -o run.html [--scene FILE]`: the run explorer (issue 21), one
+// `camcov explore RUN.json... -o run.html [--scene FILE]`: the run explorer, one
 // offline HTML page replaying runs of one scene side by side (reports/explorer).
 #include <fmt/format.h>
 

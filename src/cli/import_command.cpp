@@ -1,5 +1,5 @@
 // `camcov import lastrow FILE.csv -o scene.json` and `camcov import ethucy DIR --fps F -o
-// scene.json`: recorded tracks as a self-contained scene (issue 26; src/import). The scene is
+// scene.json`: recorded tracks as a self-contained scene (src/import). The scene is
 // validated by the loader before it is written, atomically: bad input leaves no file behind.
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // `camcov optimum SCENE [--budget N] [--seed S] [--time T] [-o FILE.json] [--poses FILE.json]`:
-// the offline reference for a scene that holds still (issue 19; planners/offline_optimum.h):
+// the offline reference for a scene that holds still (planners/offline_optimum.h):
 // the best team pose a long search finds for the reward at time T, its terms, how it was
 // found and how the best grew with the budget. Written atomically; the poses also in the
 // format `camcov inspect --cameras` reads.
@@ -60,7 +60,7 @@ Registration addOptimumCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "optimum",
       "Search long for the best team pose at one instant: an offline reference for scenes "
-      "that hold still (issue 19)");
+      "that hold still");
   cmd->add_option("scene", o->scene, "scene file (JSON)")->required();
   cmd->add_option("--budget", o->budget,
                   "reward evaluations to spend (rounds of Algorithm 2 with K samples per camera, "

@@ -1,5 +1,5 @@
 #pragma once
-// The pieces our method (`--method camcov`, issue 19; docs/method.md, "Our method") adds to
+// The pieces our method (`--method camcov`; docs/method.md, "Our method") adds to
 // the paper's loop in PaperController: how a global candidate is judged against what the team
 // is committed to, whether anything in the scene moves, and where a camera following a plan
 // looks on the way.

@@ -29,7 +29,7 @@
 
 namespace camcov::control {
 
-// Our method (`--method camcov`, issue 19) is this loop with the choices of params.camcov
+// Our method (`--method camcov`) is this loop with the choices of params.camcov
 // (docs/method.md, "Our method"): the global candidate (improved camera by camera when
 // camcov.refine > 0) is judged by the coverage the team would average over the next H seconds
 // (or over the whole trip where it takes longer), transit included, against the same for what

@@ -1,5 +1,5 @@
 #pragma once
-// Recorded trajectories as the importers read them (issue 26), before they become a scene:
+// Recorded trajectories as the importers read them, before they become a scene:
 // per person (or ball) its samples in time, and the static walls and pillars of the place.
 // Readers: lastrow_reader.h (football), ethucy_reader.h (pedestrians); scene_builder.h turns
 // a recording into a scene file.

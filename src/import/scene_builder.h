@@ -1,5 +1,5 @@
 #pragma once
-// A recording (recording.h) as a self-contained camcov scene (issue 26): every person a disc
+// A recording (recording.h) as a self-contained camcov scene: every person a disc
 // target with its track, the ball left out or a target or an obstacle, walls as thin
 // obstacles and pillars as discs, a boundary around it all, and a camera team. Decisions:
 //  - a disc is a regular 12-gon of the given radius about the recorded point;

@@ -1,5 +1,5 @@
 #pragma once
-// Recorded motion (scene::Track, issue 26): the reference point moves linearly from one sample
+// Recorded motion (scene::Track): the reference point moves linearly from one sample
 // to the next, a gap between two samples included, and the heading turns the short way round
 // between them. Before the first sample and after the last the object is absent; asked there,
 // it answers with the nearest sample.

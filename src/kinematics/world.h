@@ -14,7 +14,7 @@ struct World {
   std::vector<geometry::Ring> targets;    // T(t): CCW rings; their boundaries are covered
   std::vector<geometry::Ring> obstacles;  // O(t): CCW rings; occlude, are not covered
   // Which object of the scene each ring is: scene targets and obstacles in order, leaving out
-  // those absent at t (recorded tracks, issue 26). Without tracks, 0, 1, 2, ...
+  // those absent at t (recorded tracks). Without tracks, 0, 1, 2, ...
   std::vector<std::uint32_t> targetIds;
   std::vector<std::uint32_t> obstacleIds;
 };

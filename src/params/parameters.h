@@ -64,7 +64,7 @@ struct SafetyParams {
                          // against objects moving at their observed speeds; at least dt
 };
 
-// The choices of camcov's own method (`--method camcov`, issue 19; docs/method.md, "Our
+// The choices of camcov's own method (`--method camcov`; docs/method.md, "Our
 // method"), which keeps the paper's loop and changes how a global optimization's candidate is
 // made, judged and reached. The paper's method ignores them.
 struct CamcovParams {

@@ -1,6 +1,6 @@
 #pragma once
 // Exact nearest neighbours for the PRM* roadmap (paper section V-C) in sub-linear time, with no
-// random numbers (issue 23). OMPL's exhaustive search measures every milestone for every new
+// random numbers. OMPL's exhaustive search measures every milestone for every new
 // one, O(n²) for a roadmap; GNAT is sub-linear but picks its pivots from OMPL's global
 // generator, which would make roadmaps depend on what else ran in the process.
 //

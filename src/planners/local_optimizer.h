@@ -18,7 +18,7 @@ struct StepLimits {
 
 class LocalOptimizer {
  public:
-  // How a step is found: the paper's gradient ascent, or our compass search (issue 19): the
+  // How a step is found: the paper's gradient ascent, or our compass search: the
   // best of the gradient's step and moves by the step's limit, and a quarter of it, along ±x,
   // ±y and ±γ.
   enum class Search { Gradient, Compass };

@@ -1,5 +1,5 @@
 #pragma once
-// An offline reference for the best team pose at one instant (issue 19): what the method's
+// An offline reference for the best team pose at one instant: what the method's
 // reward, eq. (8), can reach in a scene that holds still, found by a search that may take far
 // longer than a control step. A reference, not a proof: the search is random and local, and
 // says how it found its best and how the best grew with the budget, so a reader can judge

@@ -459,7 +459,7 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       s.comparisons.push_back(comparisonFrom(c));
     for (const auto& t : j.at("totals"))
       s.tallies.push_back(tallyFrom(t));
-    // Summaries written before issue 19 have no pairs.
+    // Summaries written before pairwise verdicts existed have no pairs.
     for (const auto& c : j.value("pairs", nlohmann::json::array()))
       s.pairs.push_back({c.at("against").get<std::string>(), comparisonFrom(c)});
     for (const auto& t : j.value("pairTotals", nlohmann::json::array()))

@@ -1,5 +1,5 @@
 #pragma once
-// The offline optimum of a scene at one instant (issue 19; planners/offline_optimum.h) as a
+// The offline optimum of a scene at one instant (planners/offline_optimum.h) as a
 // results file: `camcov optimum -o` writes one, `camcov bench` one per scene that holds still
 // (optimum/<scene>.json), and the report reads them to set each method's final coverage
 // against it.

@@ -52,7 +52,7 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
   s.averageCoverage = j.at("averageCoverage").get<double>();
   s.averageUtilization = j.at("averageUtilization").get<double>();
   s.averageReward = j.at("averageReward").get<double>();
-  // Runs written before issue 19 lack it: NaN, which the summary leaves out.
+  // Runs written before final coverage was recorded lack it: NaN, which the summary leaves out.
   s.finalCoverage = j.contains("finalCoverage") ? j.at("finalCoverage").get<double>()
                                                 : std::numeric_limits<double>::quiet_NaN();
   s.minObjectDistance = numberOrInfinity(j.at("minObjectDistance"));

@@ -1,6 +1,6 @@
 #pragma once
 // An upper bound, without a sweep, of the reward eq. (8) of a team with one camera added:
-// what lets Algorithm 2 skip the sweeps of samples that cannot be the best (issue 23). Scoring
+// what lets Algorithm 2 skip the sweeps of samples that cannot be the best. Scoring
 // the K samples of one camera is most of the paper method's time on a large crowd, and most
 // samples score well below the best.
 //

@@ -1,6 +1,6 @@
 #pragma once
-// Repulsion, eq. (6), of a team whose cameras move a few at a time — the optimizers' probes
-// (issue 23). repulsion() measures every camera against every object and every other camera,
+// Repulsion, eq. (6), of a team whose cameras move a few at a time — the optimizers' probes.
+// repulsion() measures every camera against every object and every other camera,
 // O(M·N + M²) per call, although a probe moves one camera and changes only its own terms.
 //
 // repulsion() is an exact fixed-point sum of its terms (fixed_point_sum.h), so the sum can be

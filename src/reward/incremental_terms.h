@@ -1,6 +1,6 @@
 #pragma once
 // Coverage, eq. (3), and utilization, eq. (5), of a team whose cameras move a few at a time —
-// the optimizers' probes (issue 23). Made from S, they cost a sweep per camera, the cut of
+// the optimizers' probes. Made from S, they cost a sweep per camera, the cut of
 // every target edge and a sum over all of S on every call, although a probe moves one camera
 // and changes only what that camera sees.
 //

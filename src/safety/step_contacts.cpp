@@ -35,7 +35,7 @@ Sample StepAccounting::sample(const kinematics::World& world,
   Sample s;
   s.time = world.time;
   // One distance per object of the scene, in scene order; an object absent at this instant
-  // (a recorded track, issue 26) is infinitely far.
+  // (a recorded track) is infinitely far.
   const std::size_t targets = targetSpeeds_.size(), objects = targets + obstacleSpeeds_.size();
   for (const auto& c : cameras) {
     const geometry::Vec2 p = c.position();

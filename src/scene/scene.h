@@ -24,7 +24,7 @@ struct Deformation {
   std::vector<DeformationKeyframe> keyframes;  // strictly increasing times
 };
 
-// Our extension for recorded motion (issue 26: real people from tracking data): the reference
+// Our extension for recorded motion (real people from tracking data): the reference
 // point's position at sample times, and optionally the heading. The object is present from
 // its first sample to its last and absent before and after (it enters and leaves the scene);
 // in between it moves linearly from sample to sample, a gap between two samples included

@@ -1,5 +1,5 @@
 #pragma once
-// Large synthetic scenes, seeded, for measuring how camcov scales (issue 23): N targets, each
+// Large synthetic scenes, seeded, for measuring how camcov scales: N targets, each
 // a V-gon on its own short loop, and M cameras, at random places in a rectangular field. The
 // result is a scene file's content in the published format (SPEC section 2), so it goes
 // through the loader like any other file. Decisions:

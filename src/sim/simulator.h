@@ -41,7 +41,7 @@ struct StepRecord {
 // The kinds of the events that mark where a camera came closer than δ (see RunSummary).
 inline constexpr std::string_view kAvoidableContact = "avoidable-contact";
 inline constexpr std::string_view kUnavoidableContact = "unavoidable-contact";
-// A recorded target entering or leaving the scene (issue 26), at the first step it is present
+// A recorded target entering or leaving the scene, at the first step it is present
 // or absent.
 inline constexpr std::string_view kTargetAppears = "target-appears";
 inline constexpr std::string_view kTargetLeaves = "target-leaves";
@@ -54,7 +54,7 @@ struct RunSummary {
   double averageCoverage = 0.0;
   double averageUtilization = 0.0;  // the same for utilization, eq. (5)
   double averageReward = 0.0;
-  // Coverage at the last step, t = duration: where the team ended up (issue 19 sets it
+  // Coverage at the last step, t = duration: where the team ended up (the report sets it
   // against the offline optimum of a scene that holds still).
   double finalCoverage = 0.0;
   // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.

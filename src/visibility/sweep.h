@@ -63,7 +63,7 @@ class Sweep {
   // Each camera slot j keeps its last six sweeps: a camera whose arrangement
   // (Occluders::buildId()), pose and θ_j are bit for bit those of a kept sweep is not swept
   // again, so a call where one camera moved costs one sweep and the union, O(n log n + k log k)
-  // for k seen intervals (the optimizers move one camera at a time; issue 23).
+  // for k seen intervals (the optimizers move one camera at a time).
   // Throws std::invalid_argument for more than kMaxCameras cameras, fewer half-angles than
   // cameras, θ_j outside (0, π), or a non-finite pose.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,

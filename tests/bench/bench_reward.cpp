@@ -1,4 +1,4 @@
-// The reward's calls as the optimizers make them (issue 23, "Scale"), at t = 0 of a scene:
+// The reward's calls as the optimizers make them (docs/scaling.md), at t = 0 of a scene:
 //   Sweep/<scene>        one camera's sweep (Algorithm 1) at a pose not seen before
 //   Probe/<scene>        RewardModel::reward() of the whole team with one camera moved: a
 //                        global-optimization sample (Algorithm 2 line 10) or a local

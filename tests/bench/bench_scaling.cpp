@@ -1,4 +1,4 @@
-// How the cost of a run grows with the team and the crowd (issue 23, "Scale"). For each
+// How the cost of a run grows with the team and the crowd (docs/scaling.md). For each
 // method, the wall time of simulating D seconds (default parameters otherwise) of generated
 // scenes (scene/scene_generator.h: 1 x 1 m squares on 2 m loops at 1 m/s), in sweeps over
 //   cameras M at a fixed number of targets N,
@@ -303,7 +303,7 @@ int run(const Options& options) {
 
 int main(int argc, char** argv) {
   camcov::Options options;
-  CLI::App app{"Cost of a run against cameras M, targets N and vertices V (issue 23)"};
+  CLI::App app{"Cost of a run against cameras M, targets N and vertices V"};
   bool quick = false;
   app.add_option("--duration", options.duration, "simulated s per point")
       ->check(CLI::PositiveNumber)

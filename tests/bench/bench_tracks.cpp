@@ -1,4 +1,4 @@
-// Recorded crowds (issue 26, point 5), on a seeded synthetic recording in the ETH/UCY format:
+// Recorded crowds (docs/scaling.md), on a seeded synthetic recording in the ETH/UCY format:
 // 400 people over 10 minutes, each walking across a 40 m x 30 m square and back at about
 // 1.2 m/s for 90 s (so about 60 at once), sampled every 0.4 s, with four walls.
 //   Import          `camcov import ethucy` without the file writes: read obsmat.txt and

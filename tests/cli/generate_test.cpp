@@ -1,4 +1,4 @@
-// `camcov generate` (issue 23): it writes a scene `camcov validate` accepts, the same bytes for
+// `camcov generate`: it writes a scene `camcov validate` accepts, the same bytes for
 // the same options, nothing at all for bad options (exit 2); and scripts/make_large_scenes.sh
 // remakes the committed scenes/large/ to the byte.
 #include <gtest/gtest.h>

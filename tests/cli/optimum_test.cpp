@@ -1,4 +1,4 @@
-// `camcov optimum` (issue 19): the offline reference for a scene at one instant, written
+// `camcov optimum`: the offline reference for a scene at one instant, written
 // atomically with what the search did, its poses in the format `camcov inspect --cameras`
 // reads (and inspect agrees with its coverage); bad requests exit 2 and write nothing.
 #include <fmt/format.h>

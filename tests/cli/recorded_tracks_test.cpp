@@ -1,4 +1,4 @@
-// Runs of scenes whose targets come and go (recorded tracks, issue 26): each step says how
+// Runs of scenes whose targets come and go (recorded tracks): each step says how
 // many targets are present, entering and leaving are events, averages leave out the steps
 // with nothing to cover — and no method ever sees the future: a target that turns at t leaves
 // every decision before t unchanged.

@@ -4,9 +4,10 @@
 // the layer's additions (continuous-time distances, contact events) are left out of the comparison.
 // The hashes were taken from runs of commit 22712ab, the last one without the layer:
 //   camcov run ../shared/coverage_scenes/SCENE.json --method M --seed N
-// then FNV-1a of the JSON dump of those keys, as computed below. Issue 23 made the reward's sums
-// exact (reward/fixed_point_sum.h), which moves the last bits of most runs: the hashes since are
-// of those runs with the layer off (dynamic1 local kept its bytes), taken the same way.
+// then FNV-1a of the JSON dump of those keys, as computed below. The incremental terms (ebee9e3)
+// made the reward's sums exact (reward/fixed_point_sum.h), which moves the last bits of most runs:
+// the hashes since are of those runs with the layer off (dynamic1 local kept its bytes), taken the
+// same way.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// The pieces of our method (issue 19; control/camcov_choices.h), each against numbers worked
+// The pieces of our method (control/camcov_choices.h), each against numbers worked
 // out by hand on a unit square target.
 #include "control/camcov_choices.h"
 

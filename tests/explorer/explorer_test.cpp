@@ -103,7 +103,7 @@ TEST_F(Explore, TwoMethodsOfDynamic9ForThirtySecondsFitWellUnderTwoMegabytes) {
                 .exitCode,
             0);
   EXPECT_EQ(embeddedData(page)["runs"][0]["series"]["time"].size(), 301u);
-  EXPECT_LT(fs::file_size(page), 1'000'000u) << "issue 21: well under 2 MB";
+  EXPECT_LT(fs::file_size(page), 1'000'000u) << "well under the 2 MB a page may weigh";
 }
 
 TEST_F(Explore, BadRequestsExitWithTwoAndWriteNothing) {

@@ -1,4 +1,4 @@
-// `camcov import` (issue 26) on the committed extracts (tests/data/tracks, sources named in its
+// `camcov import` on the committed extracts (tests/data/tracks, sources named in its
 // README): sample times and positions as the source rows say (read here independently),
 // interpolation between them, people entering and leaving, the window, a track that comes back
 // after a gap; every kind of bad input exits 2 naming the file and line and writes nothing;

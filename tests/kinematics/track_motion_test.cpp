@@ -1,4 +1,4 @@
-// Recorded motion (scene::Track, issue 26): exact positions at the sample times, linear motion
+// Recorded motion (scene::Track): exact positions at the sample times, linear motion
 // between them, the heading turning the short way, presence from the first sample to the last,
 // and the world listing only the objects present with their scene indices.
 #include <gtest/gtest.h>

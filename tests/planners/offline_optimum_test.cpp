@@ -1,4 +1,4 @@
-// The offline optimum (issue 19) against an independent reference: an exhaustive grid of poses
+// The offline optimum against an independent reference: an exhaustive grid of poses
 // for one camera, which the search must match or beat; and what the search reports about itself.
 #include "planners/offline_optimum.h"
 

@@ -201,7 +201,8 @@ TEST(Summarize, FinalCoverageIsDescribedAndRunsWithoutItAreLeftOut) {
     jobs.push_back(o);
   }
   JobOutcome old = job("a", "paper", 4, 0.5);
-  old.summary.finalCoverage = std::numeric_limits<double>::quiet_NaN();  // a run before issue 19
+  old.summary.finalCoverage =
+      std::numeric_limits<double>::quiet_NaN();  // a run from before final coverage was recorded
   jobs.push_back(old);
   const BatchSummary summary = summarize(jobs, "local");
   ASSERT_EQ(summary.methods.size(), 1u);

@@ -1,4 +1,4 @@
-// The report of settings side by side (issue 22): `camcov report` over a folder of results
+// The report of settings side by side: `camcov report` over a folder of results
 // folders (a sweep) or over several folders. Its numbers are checked against each folder's own
 // summary.json and, for the verdicts, against Mann-Whitney p-values worked out by hand.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The bound that lets Algorithm 2 skip samples (issue 23): never below the reward it bounds,
+// The bound that lets Algorithm 2 skip samples: never below the reward it bounds,
 // whatever the pose — on an edge's line, at a vertex, inside a target, between two targets
 // that share a side, with a field of view wider than a half-turn — and equal to it where
 // nothing is occluded and the team sees nothing of what the camera does.

@@ -1,4 +1,4 @@
-// The optimizers' incremental terms (issue 23) against the terms made afresh from S, to the bit,
+// The optimizers' incremental terms against the terms made afresh from S, to the bit,
 // over long random sequences of the calls the optimizers make: one camera probed and put
 // back, a camera placed after the others, cameras taken away, θ changed, a new instant. And
 // the sums of runs (metrics.h) against the paper's sums over segments, to rounding.

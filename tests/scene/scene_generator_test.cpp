@@ -1,4 +1,4 @@
-// The large-scene generator (issue 23): seeded to the byte, the counts and sizes asked for,
+// The large-scene generator: seeded to the byte, the counts and sizes asked for,
 // and the placement it promises checked on the loaded scene through kinematics, as a run
 // would move it: no camera ever within the clearance of a target, none near the boundary,
 // targets never overlapping. Bad options and fields too crowded are InputErrors.

@@ -1,4 +1,4 @@
-// Frames per second of the video path at 1280x720 (issue 6 asks for at least 100 on one
+// Frames per second of the video path at 1280x720 (the target: at least 100 on one
 // core): FrameBuilder (world and visibility), FrameRenderer (Cairo), VideoEncoder (colour
 // conversion and libx264 with one thread).
 // Replay/<scene> is what `camcov video` does per frame: the scene's paper-method run (seed 1,
