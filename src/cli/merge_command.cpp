@@ -1,46 +1,32 @@
 // `camcov merge DIR... --out DIR`: combine the results folders of shards (or of separate
 // machines) into one, then write the summary and logs as `camcov bench` would.
-#include <algorithm>
-#include <memory>
-#include <thread>
-
-#include "batch/merge.h"
-#include "cli/bench_outputs.h"
+#include "bench/run_bench.h"
+#include "cli/bench_output_options.h"
 #include "cli/command.h"
-#include "records/atomic_file.h"
+#include "cli/terminal_observer.h"
 
 namespace camcov::cli {
-namespace {
-
-struct MergeOptions {
-  std::vector<std::string> inputs;
-  std::string out;
-  BenchOutputOptions outputs;
-};
-
-int merge(const MergeOptions& o) {
-  o.outputs.check();  // a bad --videos or --explorer fails before anything is copied
-  const records::BatchFolder target(o.out);
-  records::NewFolderGuard created(target.root());
-  const records::BatchManifest manifest = batch::mergeFolders(o.inputs, target, invocation());
-  const int status = writeBenchOutputs(target, manifest, target.allJobs(), o.outputs,
-                                       std::max(1u, std::thread::hardware_concurrency()));
-  created.keep();
-  return status;
-}
-
-}  // namespace
 
 Registration addMergeCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "merge", "Combine bench folders (shards, machines) into one; write summary and logs");
-  auto o = std::make_shared<MergeOptions>();
+  struct Options {
+    std::vector<std::string> inputs;
+    std::string out;
+    bench::BenchOutputOptions outputs;
+  };
+  auto o = std::make_shared<Options>();
   cmd->add_option("folders", o->inputs, "bench --out folders to combine")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out,-o", o->out, "the combined folder (may be one of the inputs)")->required();
-  o->outputs.addTo(*cmd);
-  return {cmd, [o] { return merge(*o); }};
+  addBenchOutputOptions(*cmd, o->outputs);
+  return {cmd, [o] {
+            TerminalObserver terminal;
+            const bench::BenchResult result =
+                bench::mergeBench(o->inputs, o->out, o->outputs, invocation(), terminal);
+            return result.failedJobs > 0 ? 1 : 0;
+          }};
 }
 
 }  // namespace camcov::cli

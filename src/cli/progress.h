@@ -1,9 +1,9 @@
 #pragma once
-// Progress of a batch on stderr: on a terminal one live line (done/total, elapsed, ETA, the
-// last finished job), in a log one plain line per finished job.
-#include <chrono>
-#include <mutex>
+// A bench's progress on stderr (bench/progress_count.h gives the text): on a terminal one live
+// line, rewritten as items finish, in a log one plain line per finished item.
 #include <string>
+
+#include "bench/progress_count.h"
 
 namespace camcov::cli {
 
@@ -15,14 +15,8 @@ class Progress {
   void close();
 
  private:
-  std::mutex mutex_;
-  std::size_t total_;
-  std::size_t done_;
-  std::size_t doneAtStart_;
+  bench::ProgressCount count_;
   bool terminal_;
-  std::chrono::steady_clock::time_point start_;
 };
-
-std::string formatDuration(double seconds);
 
 }  // namespace camcov::cli

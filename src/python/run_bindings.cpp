@@ -1,24 +1,24 @@
 // Runs: the built-in methods (camcov.run), a Python controller (camcov.simulate), batches
 // with both (camcov.bench) and reports, all through the same stages as the CLI, so their
 // files are the CLI's to the byte. The GIL is let go while C++ works.
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <thread>
+#include <optional>
 
-#include "batch/batch_plan.h"
-#include "batch/batch_runner.h"
 #include "batch/run_job.h"
-#include "camcov/version.h"
-#include "cli/bench_outputs.h"
+#include "bench/progress_count.h"
+#include "bench/run_bench.h"
 #include "python/bindings.h"
 #include "python/numpy_arrays.h"
 #include "python/python_controller.h"
 #include "python/python_scene.h"
+#include "records/batch_summary.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
+#include "util/person_numbers.h"
 
 namespace camcov::python {
 namespace {
@@ -28,21 +28,26 @@ records::RunRecord runWithoutGil(const batch::JobSpec& job) {
   return batch::runJob(job);
 }
 
-// A batch's progress: nothing on the way (a notebook has no progress line) but what was
-// reused from the folder, as the CLI says it, on sys.stderr.
-class Quiet final : public batch::BatchObserver {
+// A bench's lines, as the command line says them (one line per finished item, as in a log):
+// notes and progress on sys.stderr, results on sys.stdout, so a notebook shows them too.
+class PythonObserver final : public bench::BenchObserver {
  public:
-  explicit Quiet(std::string folder) : folder_(std::move(folder)) {}
-  void resuming(const batch::Resumption& r) override {
-    if (r.alreadyDone == 0) return;
-    const py::gil_scoped_acquire gil;
-    py::module_::import("sys").attr("stderr").attr("write")(batch::describeResumption(r, folder_) +
-                                                            "\n");
+  void note(const std::string& line) override { write("stderr", line); }
+  void report(const std::string& line) override { write("stdout", line); }
+  void stretchStarted(std::size_t total, std::size_t alreadyDone) override {
+    count_.emplace(total, alreadyDone);
   }
-  void finished(const batch::BatchJob&, const records::JobOutcome&) override {}
+  void itemFinished(const std::string& what) override {
+    if (count_) write("stderr", count_->finished(what));
+  }
+  void stretchDone() override { count_.reset(); }
 
  private:
-  std::string folder_;
+  static void write(const char* stream, const std::string& line) {
+    const py::gil_scoped_acquire gil;
+    py::module_::import("sys").attr(stream).attr("write")(line + "\n");
+  }
+  std::optional<bench::ProgressCount> count_;
 };
 
 void bindObservation(py::module_& m) {
@@ -135,55 +140,70 @@ void bindRuns(py::module_& m) {
       "One run with a Python controller: controller(observation) -> velocities (M, 3), or "
       "(velocities, goals), or (velocities, goals, events) (see the README). Its results files "
       "are a method's like any other.");
+  const bench::BenchRequest defaults;  // the command line's defaults, one place for both
   m.def(
       "bench",
       [](const std::vector<std::string>& scenes, const std::vector<std::string>& methods,
-         std::uint64_t seeds, const std::string& out, const py::object& params,
-         const py::dict& controllers, unsigned jobs, const std::string& reference,
-         const std::string& videos, const std::string& explorer, bool report, bool force) {
+         std::uint64_t seeds, const py::object& duration, const std::string& out,
+         const py::object& params, const py::dict& controllers, unsigned jobs,
+         const std::string& shard, bool force, const std::string& reference,
+         const std::string& videos, const std::string& explorer, bool report,
+         std::int64_t optimumBudget) -> py::object {
         std::vector<control::Method> brought;
         for (const auto& [name, factory] : controllers)
           brought.push_back(
               pythonMethod(py::str(name), py::reinterpret_borrow<py::object>(factory)));
-        std::vector<std::string> names = methods;
-        if (names.empty()) names = control::defaultMethods();
+        bench::BenchRequest request;
+        request.scenes = scenes;
+        if (!methods.empty()) request.methods = methods;
         for (const auto& m : brought) {
-          if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+          if (std::find(request.methods.begin(), request.methods.end(), m.name) ==
+              request.methods.end())
+            request.methods.push_back(m.name);
         }
-        cli::BenchOutputOptions outputs;
-        outputs.noReport = !report;
-        outputs.videos = videos;
-        outputs.explorer = explorer;
-        outputs.reference = reference;
-        outputs.check();
-        outputs.referenceAmong(names);
+        request.seeds = seeds;
+        if (!duration.is_none()) {
+          request.duration = duration.cast<double>();
+          if (!withinRange(request.duration, 0.0, 1e6)) {  // as `camcov bench --duration`
+            throw py::value_error(fmt::format("duration = {}: expected a number in {}",
+                                              readableNumber(request.duration),
+                                              rangeText(0.0, 1e6)));
+          }
+        }
+        request.parameters = parametersFrom(params);
+        request.shard = shard;
+        request.jobs = jobs;
+        request.out = out;
+        request.force = force;
+        request.outputs = {!report, videos, explorer, reference, optimumBudget};
         // What ran it, for batch.json and the report: the script and its arguments.
-        std::vector<std::string> command{"python"};
+        request.command = {"python"};
         for (const auto& arg : py::module_::import("sys").attr("argv"))
-          command.push_back(py::str(arg));
-        batch::BatchRequest request{scenes, names,   seeds,  parametersFrom(params),
-                                    {},     command, brought};
-        batch::BatchPlan plan = batch::planBatch(request, kVersion);
-        const records::BatchFolder folder(out);
+          request.command.push_back(py::str(arg));
+        request.extraMethods = brought;
+        PythonObserver observer;
+        bench::BenchResult result;
         {
           py::gil_scoped_release free;
-          batch::prepareFolder(folder, plan.manifest, force);
-          const unsigned workers =
-              jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
-          Quiet quiet(out);
-          const batch::BatchRun run = batch::runBatch(plan.jobs, folder, workers, quiet);
-          cli::writeBenchOutputs(folder, plan.manifest, run.outcomes, outputs, workers);
+          result = bench::runBench(request, observer);
         }
-        return jsonToPython(nlohmann::json::parse(std::ifstream(folder.root() / "summary.json")));
+        if (result.shard) return py::none();
+        return jsonToPython(records::summaryToJson(result.summary));
       },
-      py::arg("scenes"), py::arg("methods") = std::vector<std::string>{}, py::arg("seeds") = 5,
-      py::arg("out") = "bench-results", py::arg("params") = py::none(),
-      py::arg("controllers") = py::dict(), py::arg("jobs") = 0, py::arg("reference") = "",
-      py::arg("videos") = "none", py::arg("explorer") = "median", py::arg("report") = true,
-      py::arg("force") = false,
-      "`camcov bench` with Python controllers beside the table's methods: controllers maps a "
-      "method name to factory(scene, params, seed) -> controller; jobs = 0 is every core. "
-      "Returns the summary.");
+      py::arg("scenes") = defaults.scenes, py::arg("methods") = std::vector<std::string>{},
+      py::arg("seeds") = defaults.seeds, py::arg("duration") = py::none(),
+      py::arg("out") = defaults.out, py::arg("params") = py::none(),
+      py::arg("controllers") = py::dict(), py::arg("jobs") = defaults.jobs,
+      py::arg("shard") = defaults.shard, py::arg("force") = defaults.force,
+      py::arg("reference") = defaults.outputs.reference,
+      py::arg("videos") = defaults.outputs.videos, py::arg("explorer") = defaults.outputs.explorer,
+      py::arg("report") = !defaults.outputs.noReport,
+      py::arg("optimum_budget") = defaults.outputs.optimumBudget,
+      "`camcov bench`, with its options and defaults, and Python controllers beside the table's "
+      "methods: controllers maps a method name to factory(scene, params, seed) -> controller "
+      "(the factory's `description`, `color` and `version` attributes, if set, name it in the "
+      "report and in resumes). Says what `camcov bench` says (sys.stdout, sys.stderr); returns "
+      "the summary (None for a shard, summarized by `camcov merge`).");
   m.def(
       "report",
       [](const std::string& folder, const std::string& out) {

@@ -4,6 +4,7 @@
 // from the CMake files that declare it: the top-level CMakeLists.txt and src/CMakeLists.txt.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -46,7 +47,16 @@ std::vector<std::string> stageOrder(const fs::path& root) {
   return order;
 }
 
-// "file:line: <stage> includes <later stage>/..." for every wrong-way include under `root`.
+// Edges the order alone would allow but no stage may take: the two front ends are siblings
+// (each calls the bench stage, neither the other), and no stage reads the tests' support code.
+struct Sideways {
+  const char* from;  // a stage folder, or "*" for every stage
+  const char* to;    // the first folder of the include's path
+};
+constexpr Sideways kSideways[] = {{"src/python", "cli"}, {"src/cli", "python"}, {"*", "support"}};
+
+// "file:line: <stage> includes <later stage>/..." for every wrong-way include under `root`,
+// and "file:line: <stage> includes <folder> sideways" for the edges of kSideways.
 std::vector<std::string> wrongWayIncludes(const fs::path& root) {
   const std::vector<std::string> order = stageOrder(root);
   std::map<std::string, std::size_t> rank;  // by the name used in includes: "control", "viz"
@@ -58,12 +68,24 @@ std::vector<std::string> wrongWayIncludes(const fs::path& root) {
     for (const auto& entry : fs::recursive_directory_iterator(root / order[i])) {
       const auto ext = entry.path().extension();
       if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+      // A stage's benchmark programs (viz/bench/) are programs beside it, not part of it: they
+      // may share the tests' support code.
+      const bool benchmarkProgram =
+          fs::relative(entry.path(), root / order[i]).string().rfind("bench/", 0) == 0;
       std::ifstream in(entry.path());
       int number = 0;
       for (std::string text; std::getline(in, text);) {
         ++number;
         std::smatch m;
         if (!std::regex_search(text, m, include)) continue;
+        for (const Sideways& edge : kSideways) {
+          if ((std::string(edge.from) == "*" || order[i] == edge.from) && m[1] == edge.to &&
+              !benchmarkProgram) {
+            found.push_back(fs::relative(entry.path(), root).string() + ":" +
+                            std::to_string(number) + ": " + order[i] + " includes " + edge.to +
+                            " sideways (" + text + ")");
+          }
+        }
         const auto it = rank.find(m[1]);
         if (it != rank.end() && it->second > i) {
           found.push_back(fs::relative(entry.path(), root).string() + ":" + std::to_string(number) +
@@ -73,6 +95,12 @@ std::vector<std::string> wrongWayIncludes(const fs::path& root) {
     }
   }
   return found;
+}
+
+// A planted tree's file, its folders made.
+void writeFile(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << text;
 }
 
 TEST(IncludeOrder, TheTreeReadsTheStagesInOrder) {
@@ -92,9 +120,8 @@ TEST(IncludeOrder, TheTreeReadsTheStagesInOrder) {
 TEST(IncludeOrder, APlantedWrongWayIncludeIsFound) {
   const ScratchDir dir;
   const fs::path root = dir.path();
-  auto write = [&](const fs::path& file, const std::string& text) {
-    fs::create_directories((root / file).parent_path());
-    std::ofstream(root / file) << text;
+  const auto write = [&](const fs::path& file, const std::string& text) {
+    writeFile(root / file, text);
   };
   write("CMakeLists.txt",
         "add_subdirectory(src)\nadd_subdirectory(viz)\nadd_subdirectory(tests)\n");
@@ -107,6 +134,32 @@ TEST(IncludeOrder, APlantedWrongWayIncludeIsFound) {
   const auto found = wrongWayIncludes(root);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].rfind("src/geometry/vec2.h:2: src/geometry includes viz", 0), 0u) << found[0];
+}
+
+TEST(IncludeOrder, APlantedSidewaysIncludeIsFound) {
+  const ScratchDir dir;
+  const fs::path root = dir.path();
+  const auto write = [&](const fs::path& file, const std::string& text) {
+    writeFile(root / file, text);
+  };
+  write("CMakeLists.txt",
+        "add_subdirectory(src)\nadd_subdirectory(src/cli)\n"
+        "add_subdirectory(src/python)\n");
+  write("src/CMakeLists.txt", "add_subdirectory(bench)\n");
+  write("src/bench/run.h", "#pragma once\n");
+  write("src/cli/main.cpp", "#include \"bench/run.h\"\n");
+  write("src/python/module.cpp", "#include \"bench/run.h\"\n");
+  EXPECT_TRUE(wrongWayIncludes(root).empty());
+  // Later in the order, so allowed by it, but a front end reaching into the other.
+  write("src/python/module.cpp", "#include \"bench/run.h\"\n#include \"cli/command.h\"\n");
+  write("src/bench/run.h", "#pragma once\n#include \"support/scratch.h\"\n");
+  auto found = wrongWayIncludes(root);
+  std::sort(found.begin(), found.end());
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].rfind("src/bench/run.h:2: src/bench includes support sideways", 0), 0u)
+      << found[0];
+  EXPECT_EQ(found[1].rfind("src/python/module.cpp:2: src/python includes cli sideways", 0), 0u)
+      << found[1];
 }
 
 }  // namespace

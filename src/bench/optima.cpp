@@ -1,4 +1,4 @@
-#include "cli/bench_optima.h"
+#include "bench/optima.h"
 
 #include <fmt/format.h>
 
@@ -8,13 +8,14 @@
 #include <vector>
 
 #include "batch/scene_optimum.h"
+#include "bench/bench_observer.h"
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
 #include "records/optimum_file.h"
 #include "scene/scene_loader.h"
 #include "util/worker_pool.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
 namespace {
 
@@ -37,7 +38,7 @@ bool isCurrent(const std::filesystem::path& file, const records::SceneEntry& sce
 
 OutputBatch writeBenchOptima(const records::BatchFolder& folder,
                              const records::BatchManifest& manifest, std::int64_t budget,
-                             unsigned workers) {
+                             unsigned workers, BenchObserver& observer) {
   OutputBatch batch;
   if (budget <= 0) return batch;
   std::vector<const records::SceneEntry*> pending;
@@ -68,9 +69,9 @@ OutputBatch writeBenchOptima(const records::BatchFolder& folder,
       problems.add(fmt::format("optimum/{}.json: not written: {}", entry.name, e.what()));
     }
   });
-  batch.failed = problems.report();
+  batch.failed = problems.report(observer);
   batch.written = written;
   return batch;
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

@@ -4,10 +4,10 @@
 // method's final coverage against it.
 #include <cstdint>
 
-#include "cli/output_batch.h"
+#include "bench/output_batch.h"
 #include "records/batch_folder.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
 // Searches, on `workers` threads, the scenes of `manifest` that hold still and have no
 // current optimum file (the same scene, parameters and budget), with `budget` reward evaluations
@@ -15,6 +15,6 @@ namespace camcov::cli {
 // the optimum a reference.
 OutputBatch writeBenchOptima(const records::BatchFolder& folder,
                              const records::BatchManifest& manifest, std::int64_t budget,
-                             unsigned workers);
+                             unsigned workers, BenchObserver& observer);
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

@@ -1,41 +1,19 @@
-#include "cli/bench_outputs.h"
+#include "bench/finish_bench.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <iostream>
 #include <map>
 
-#include "cli/bench_explorers.h"
-#include "cli/bench_optima.h"
-#include "cli/bench_videos.h"
-#include "cli/number_options.h"
+#include "bench/explorer_pages.h"
+#include "bench/optima.h"
+#include "bench/videos.h"
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
 #include "util/input_error.h"
 
-namespace camcov::cli {
-
-void BenchOutputOptions::addTo(CLI::App& cmd) {
-  cmd.add_flag("--no-report", noReport, "do not write report.html");
-  cmd.add_option("--videos", videos,
-                 "videos/ for the report: none; median (per scene and method, the seed with the "
-                 "median average coverage); best (the highest); all")
-      ->capture_default_str();
-  cmd.add_option("--explorer", explorer,
-                 "explore/<scene>.html, the run explorer for the report: none; median (each "
-                 "method's median-seed run, side by side); best")
-      ->capture_default_str();
-  cmd.add_option("--reference", reference,
-                 "the method every other is tested against (default: the baseline, local, if "
-                 "run; else the first method)");
-  cmd.add_option("--optimum-budget", optimumBudget,
-                 "reward evaluations of the offline optimum (camcov optimum) searched for each "
-                 "scene that holds still, for the report to set final coverage against; 0: none")
-      ->check(within(0, 0x1p40))
-      ->capture_default_str();
-}
+namespace camcov::bench {
 
 records::VideoChoice BenchOutputOptions::explorerChoice() const {
   const records::VideoChoice choice = records::parseVideoChoice(explorer);
@@ -62,7 +40,8 @@ std::string tallyText(const records::Tally& t) {
 
 // Per group of scenes (family or folder), when there is more than one: each method's mean
 // coverage there, and the wins/ties/losses of every comparison the totals count.
-void printGroups(const records::BatchSummary& summary, const std::vector<std::string>& methods) {
+void reportGroups(const records::BatchSummary& summary, const std::vector<std::string>& methods,
+                  BenchObserver& observer) {
   if (summary.groups.size() < 2) return;
   std::vector<std::string> names;
   for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
@@ -74,7 +53,7 @@ void printGroups(const records::BatchSummary& summary, const std::vector<std::st
     header += fmt::format(" {:>9}", method);
   for (const auto& name : names)
     header += fmt::format("  {:>16}", name);
-  std::cout << header << "  (mean average coverage; wins/ties/losses)\n";
+  observer.report(header + "  (mean average coverage; wins/ties/losses)");
   for (const auto& g : summary.groups) {
     std::string line = fmt::format("{:<20} {:>6}", g.name, g.scenes.size());
     for (const auto& method : methods) {
@@ -87,12 +66,13 @@ void printGroups(const records::BatchSummary& summary, const std::vector<std::st
       for (const auto& t : *tallies)
         line += fmt::format("  {:>16}", tallyText(t));
     }
-    std::cout << line << "\n";
+    observer.report(line);
   }
 }
 
 // Average coverage per scene and method, then each method against the reference.
-void printSummary(const records::BatchSummary& summary, const std::vector<std::string>& methods) {
+void reportSummary(const records::BatchSummary& summary, const std::vector<std::string>& methods,
+                   BenchObserver& observer) {
   std::map<std::pair<std::string, std::string>, const records::MethodSummary*> rows;
   for (const auto& m : summary.methods)
     rows[{m.scene, m.method}] = &m;
@@ -103,7 +83,7 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
     if (method != summary.reference)
       header += fmt::format("  {:<20}", method + " vs " + summary.reference);
   }
-  std::cout << header << "\n";
+  observer.report(header);
   for (const auto& scene : summary.scenes) {
     std::string line = fmt::format("{:<34}", scene);
     for (const auto& method : methods) {
@@ -118,35 +98,37 @@ void printSummary(const records::BatchSummary& summary, const std::vector<std::s
       const records::Comparison* c = summary.comparison(scene, method);
       line += fmt::format("  {:<20}", c == nullptr ? std::string("-") : records::verdictText(*c));
     }
-    std::cout << line << "\n";
+    observer.report(line);
   }
   // Against the reference, then the others pairwise.
   int undecided = 0;
   for (const auto* tallies : {&summary.tallies, &summary.pairTallies}) {
     for (const auto& t : *tallies) {
-      std::cout << fmt::format("{} against {}: wins {}, ties {}, losses {}{}\n", t.method,
-                               t.against.empty() ? summary.reference : t.against, t.wins, t.ties,
-                               t.losses,
-                               t.undecided > 0 ? fmt::format(", undecided {}", t.undecided) : "");
+      observer.report(
+          fmt::format("{} against {}: wins {}, ties {}, losses {}{}", t.method,
+                      t.against.empty() ? summary.reference : t.against, t.wins, t.ties, t.losses,
+                      t.undecided > 0 ? fmt::format(", undecided {}", t.undecided) : ""));
       undecided += t.undecided;
     }
   }
   if (undecided > 0) {
-    std::cout << fmt::format(
+    observer.report(fmt::format(
         "note: {} comparisons are undecided: with so few seeds no difference can reach p < {}; "
-        "run at least {} seeds per method (--seeds {})\n",
+        "run at least {} seeds per method (--seeds {})",
         undecided, records::kSignificance, records::seedsToReachSignificance(),
-        records::seedsToReachSignificance());
+        records::seedsToReachSignificance()));
   }
-  printGroups(summary, methods);
-  std::cout << fmt::format("{} failed jobs\n", summary.failures.size());
+  reportGroups(summary, methods, observer);
+  observer.report(fmt::format("{} failed jobs", summary.failures.size()));
 }
 
 }  // namespace
 
-int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
-                      const std::vector<records::JobOutcome>& outcomes,
-                      const BenchOutputOptions& options, unsigned workers) {
+records::BatchSummary finishBench(const records::BatchFolder& folder,
+                                  const records::BatchManifest& manifest,
+                                  const std::vector<records::JobOutcome>& outcomes,
+                                  const BenchOutputOptions& options, unsigned workers,
+                                  BenchObserver& observer) {
   std::map<std::string, std::string> groupOf;
   for (const records::SceneEntry& scene : manifest.scenes)
     groupOf[scene.name] = scene.group;
@@ -154,34 +136,34 @@ int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchMa
       outcomes, options.referenceAmong(manifest.methods), manifest.methods, groupOf);
   folder.writeSummary(summary);
   const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
-  printSummary(summary, manifest.methods);
+  reportSummary(summary, manifest.methods, observer);
   for (const auto& f : summary.failures) {
-    std::cout << fmt::format("  failed: {} {} seed {}: {}\n", f.scene, f.method, f.seed, f.error);
+    observer.report(fmt::format("  failed: {} {} seed {}: {}", f.scene, f.method, f.seed, f.error));
   }
-  std::cout << fmt::format(
-      "wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl\n",
-      folder.root().string(), logs.size(), folder.root().string());
+  observer.report(
+      fmt::format("wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl",
+                  folder.root().string(), logs.size(), folder.root().string()));
   // Before the report, which embeds what it finds in videos/.
   const auto chosen = records::chooseVideoRuns(summary, outcomes, options.videoChoice());
   const std::string root = folder.root().string();
   if (!chosen.empty()) {
-    std::cout << writeBenchVideos(folder, chosen, workers).describe("videos", root + "/videos")
-              << "\n";
+    observer.report(
+        writeBenchVideos(folder, chosen, workers, observer).describe("videos", root + "/videos"));
   }
   const auto explored = records::chooseVideoRuns(summary, outcomes, options.explorerChoice());
   if (!explored.empty()) {
-    std::cout
-        << writeBenchExplorers(folder, explored).describe("run explorer pages", root + "/explore")
-        << "\n";
+    observer.report(writeBenchExplorers(folder, explored, observer)
+                        .describe("run explorer pages", root + "/explore"));
   }
-  const OutputBatch optima = writeBenchOptima(folder, manifest, options.optimumBudget, workers);
+  const OutputBatch optima =
+      writeBenchOptima(folder, manifest, options.optimumBudget, workers, observer);
   if (optima.written + optima.upToDate + optima.failed > 0)
-    std::cout << optima.describe("offline optima", root + "/optimum") << "\n";
+    observer.report(optima.describe("offline optima", root + "/optimum"));
   if (!options.noReport) {
     reports::writeReport(folder.root(), folder.root() / "report.html");
-    std::cout << fmt::format("wrote {}\n", (folder.root() / "report.html").string());
+    observer.report(fmt::format("wrote {}", (folder.root() / "report.html").string()));
   }
-  return summary.failures.empty() ? 0 : 1;
+  return summary;
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

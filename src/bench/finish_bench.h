@@ -1,25 +1,25 @@
 #pragma once
-// What `camcov bench` and `camcov merge` write once the runs exist: the summary (JSON, CSV),
-// the OMPL benchmark logs, the videos, the explorer pages, the report, and a table on stdout.
-#include <CLI/CLI.hpp>
+// What a bench makes once its runs exist, for `camcov bench`, `camcov merge` and camcov.bench
+// alike: the summary (JSON, CSV), the OMPL benchmark logs, the videos, the explorer pages,
+// the offline optima, the report, and the summary table said to the observer.
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "bench/bench_observer.h"
 #include "records/batch_folder.h"
 #include "records/batch_summary.h"
 #include "records/video_choice.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
-// The options both commands share.
+// What to make after the runs. The defaults are every front end's.
 struct BenchOutputOptions {
   bool noReport = false;
-  std::string videos = "median";
+  std::string videos = "median";    // videos/: none, median, best or all
   std::string explorer = "median";  // explore/<scene>.html: none, median or best
   std::string reference;            // the method the others are tested against; empty: the baseline
   std::int64_t optimumBudget = 200000;  // reward evaluations per optimum/<scene>.json; 0: none
-  void addTo(CLI::App& cmd);
   // InputError for a bad --videos.
   records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
   // InputError for a bad --explorer (all seeds of a scene on one page would not be read).
@@ -33,9 +33,12 @@ struct BenchOutputOptions {
   std::string referenceAmong(const std::vector<std::string>& methods) const;
 };
 
-// Returns the exit code: 0, or 1 if some job failed. Videos are made on `workers` threads.
-int writeBenchOutputs(const records::BatchFolder& folder, const records::BatchManifest& manifest,
-                      const std::vector<records::JobOutcome>& outcomes,
-                      const BenchOutputOptions& options, unsigned workers);
+// Writes everything above into `folder`; videos and optima are made on `workers` threads.
+// Returns the summary (its failures are the jobs that failed).
+records::BatchSummary finishBench(const records::BatchFolder& folder,
+                                  const records::BatchManifest& manifest,
+                                  const std::vector<records::JobOutcome>& outcomes,
+                                  const BenchOutputOptions& options, unsigned workers,
+                                  BenchObserver& observer);
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

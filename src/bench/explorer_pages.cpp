@@ -1,18 +1,19 @@
-#include "cli/bench_explorers.h"
+#include "bench/explorer_pages.h"
 
 #include <fmt/format.h>
 
-#include <iostream>
 #include <map>
+
+#include "bench/bench_observer.h"
 
 #include "records/run_files.h"
 #include "reports/explorer/explorer_page.h"
 #include "util/input_error.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
 OutputBatch writeBenchExplorers(const records::BatchFolder& folder,
-                                std::span<const records::VideoRun> runs) {
+                                std::span<const records::VideoRun> runs, BenchObserver& observer) {
   std::map<std::string, std::vector<std::filesystem::path>> byScene;  // in the runs' order
   for (const auto& run : runs)
     byScene[run.scene].push_back(folder.runFile(records::runStem(run.scene, run.method, run.seed)));
@@ -24,11 +25,11 @@ OutputBatch writeBenchExplorers(const records::BatchFolder& folder,
       reports::explorer::writeExplorer(files, page);
       ++batch.written;
     } catch (const InputError& e) {
-      std::cerr << fmt::format("warning: no explorer page for {}: {}\n", scene, e.what());
+      observer.note(fmt::format("warning: no explorer page for {}: {}", scene, e.what()));
       ++batch.failed;
     }
   }
   return batch;
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

@@ -1,4 +1,4 @@
-#include "cli/bench_videos.h"
+#include "bench/videos.h"
 
 #include <fmt/format.h>
 
@@ -8,17 +8,18 @@
 #include <string>
 #include <vector>
 
-#include "cli/progress.h"
+#include "bench/bench_observer.h"
 #include "records/run_files.h"
 #include "util/worker_pool.h"
 #include "viz/run_replay.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
 namespace fs = std::filesystem;
 
 OutputBatch writeBenchVideos(const records::BatchFolder& folder,
-                             std::span<const records::VideoRun> runs, unsigned workers) {
+                             std::span<const records::VideoRun> runs, unsigned workers,
+                             BenchObserver& observer) {
   OutputBatch batch;
   if (runs.empty()) return batch;
   const fs::path dir = folder.root() / "videos";  // made by the first video's encoder
@@ -36,9 +37,9 @@ OutputBatch writeBenchVideos(const records::BatchFolder& folder,
       pending.push_back(i);
     }
   }
-  std::fprintf(stderr, "videos: %zu to write, %zu up to date in %s\n", pending.size(),
-               batch.upToDate, dir.c_str());
-  Progress progress(runs.size(), batch.upToDate);
+  observer.note(fmt::format("videos: {} to write, {} up to date in {}", pending.size(),
+                            batch.upToDate, dir.string()));
+  observer.stretchStarted(runs.size(), batch.upToDate);
   std::atomic<std::size_t> written{0};
   OutputProblems problems;
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
@@ -58,12 +59,12 @@ OutputBatch writeBenchVideos(const records::BatchFolder& folder,
       what = fmt::format("videos/{}.mp4: not written: {}", stem, e.what());
       problems.add(what);
     }
-    progress.finished(what);
+    observer.itemFinished(what);
   });
-  progress.close();
-  batch.failed = problems.report();
+  observer.stretchDone();
+  batch.failed = problems.report(observer);
   batch.written = written;
   return batch;
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench

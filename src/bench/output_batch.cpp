@@ -1,10 +1,10 @@
-#include "cli/output_batch.h"
+#include "bench/output_batch.h"
 
 #include <fmt/format.h>
 
-#include <iostream>
+#include "bench/bench_observer.h"
 
-namespace camcov::cli {
+namespace camcov::bench {
 
 std::string OutputBatch::describe(const std::string& what, const std::string& dir) const {
   std::string notes;
@@ -19,11 +19,11 @@ void OutputProblems::add(std::string problem) {
   problems_.push_back(std::move(problem));
 }
 
-std::size_t OutputProblems::report() const {
+std::size_t OutputProblems::report(BenchObserver& observer) const {
   const std::lock_guard lock(mutex_);
   for (const std::string& problem : problems_)
-    std::cerr << "warning: " << problem << "\n";
+    observer.note("warning: " + problem);
   return problems_.size();
 }
 
-}  // namespace camcov::cli
+}  // namespace camcov::bench
