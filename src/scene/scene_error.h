@@ -12,11 +12,14 @@ class SceneError : public InputError {
   SceneError(const std::string& file, const std::string& jsonPath, const std::string& problem)
       : InputError(file + ": " + (jsonPath.empty() ? std::string("(top level)") : jsonPath) + ": " +
                    problem),
-        jsonPath_(jsonPath) {}
+        jsonPath_(jsonPath),
+        problem_(problem) {}
   const std::string& jsonPath() const { return jsonPath_; }
+  const std::string& problem() const { return problem_; }
 
  private:
   std::string jsonPath_;
+  std::string problem_;
 };
 
 }  // namespace camcov::scene

@@ -272,11 +272,45 @@ MovingObject movingObject(const Node& node) {
   return object;
 }
 
-std::vector<MovingObject> objects(const Node& node) {
-  std::vector<MovingObject> result;
-  for (std::size_t i = 0, n = node.arraySize(); i < n; ++i) {
-    result.push_back(movingObject(node.element(i)));
+// The problems of a scene file, gathered so that one message names them all: each part that
+// does not depend on another (the boundary, each object, each camera) is read on its own, and
+// what it refuses is kept while the others are read.
+class Problems {
+ public:
+  explicit Problems(std::string file) : file_(std::move(file)) {}
+  // Runs `read`; a SceneError it throws is kept. Returns whether it succeeded.
+  template <class Read>
+  bool attempt(Read&& read) {
+    try {
+      read();
+      return true;
+    } catch (const SceneError& e) {
+      found_.push_back({e.jsonPath(), e.problem()});
+      return false;
+    }
   }
+  void add(PlacementDefect defect) { found_.push_back(std::move(defect)); }
+  bool empty() const { return found_.empty(); }
+  // SceneError naming the first problem's place, the others following it.
+  void throwIfAny() const {
+    if (found_.empty()) return;
+    std::string others;
+    for (std::size_t k = 1; k < found_.size(); ++k)
+      others += "; " +
+                (found_[k].jsonPath.empty() ? std::string("(top level)") : found_[k].jsonPath) +
+                ": " + found_[k].problem;
+    throw SceneError(file_, found_.front().jsonPath, found_.front().problem + others);
+  }
+
+ private:
+  std::string file_;
+  std::vector<PlacementDefect> found_;
+};
+
+std::vector<MovingObject> objects(const Node& node, Problems& problems) {
+  std::vector<MovingObject> result;
+  for (std::size_t i = 0, n = node.arraySize(); i < n; ++i)
+    problems.attempt([&] { result.push_back(movingObject(node.element(i))); });
   return result;
 }
 
@@ -317,9 +351,13 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
-  if (root.has("description")) scene.description = root.child("description").string();
-  scene.boundary = simpleRing(root.child("boundary"));
-  if (root.has("pitch")) {
+  Problems problems(sourceName);
+  problems.attempt([&] {
+    if (root.has("description")) scene.description = root.child("description").string();
+  });
+  problems.attempt([&] { scene.boundary = simpleRing(root.child("boundary")); });
+  problems.attempt([&] {
+    if (!root.has("pitch")) return;
     const Node pitch = root.child("pitch");
     pitch.object({"length", "width"});
     const auto size = [](const Node& n, const char* what) {
@@ -329,42 +367,52 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
       return v;
     };
     scene.pitch = Pitch{size(pitch.child("length"), "length"), size(pitch.child("width"), "width")};
-  }
+  });
 
-  const Node targets = root.child("targets");
-  scene.targets = objects(targets);
-  if (scene.targets.empty()) targets.fail("a scene needs at least one target");
-  if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"));
+  problems.attempt([&] {
+    const Node targets = root.child("targets");
+    const std::size_t written = targets.arraySize();
+    scene.targets = objects(targets, problems);
+    if (written == 0) targets.fail("a scene needs at least one target");
+  });
+  problems.attempt([&] {
+    if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"), problems);
+  });
 
-  const double sceneHalfFov = halfFov(root.child("cameraFoV"));
+  // A camera without its own field of view takes the scene's; if that is bad, the cameras
+  // are still read (with any valid one) for their own problems.
+  double sceneHalfFov = geometry::degToRad(30.0);
+  problems.attempt([&] { sceneHalfFov = halfFov(root.child("cameraFoV")); });
 
-  const Node cameras = root.child("cameras");
-  const std::size_t cameraCount = cameras.arraySize();
-  if (cameraCount == 0) cameras.fail("a scene needs at least one camera");
-  if (cameraCount > kMaxCameras) {
-    cameras.fail("at most " + std::to_string(kMaxCameras) + " cameras are supported, found " +
-                 std::to_string(cameraCount));
-  }
-  for (std::size_t i = 0; i < cameraCount; ++i)
-    scene.cameras.push_back(camera(cameras.element(i), sceneHalfFov));
+  problems.attempt([&] {
+    const Node cameras = root.child("cameras");
+    const std::size_t cameraCount = cameras.arraySize();
+    if (cameraCount == 0) cameras.fail("a scene needs at least one camera");
+    if (cameraCount > kMaxCameras) {
+      cameras.fail("at most " + std::to_string(kMaxCameras) + " cameras are supported, found " +
+                   std::to_string(cameraCount));
+    }
+    for (std::size_t i = 0; i < cameraCount; ++i)
+      problems.attempt([&] { scene.cameras.push_back(camera(cameras.element(i), sceneHalfFov)); });
+  });
+  // Where the file's structure is wrong, placing its objects would judge a scene that is not
+  // the one written.
+  problems.throwIfAny();
 
   // Every misplaced camera or object at t = 0 and every object that leaves the boundary later,
-  // at once: the first names the error's place, the others follow it.
-  std::vector<PlacementDefect> defects = findPlacementDefects(scene);
+  // at once.
+  const std::vector<PlacementDefect> atStart = findPlacementDefects(scene);
+  for (const PlacementDefect& d : atStart)
+    problems.add(d);
   const MotionCheck motion = checkMotion(scene);
   for (const PlacementDefect& e : motion.errors) {
     // An object already misplaced at t = 0 is named once.
-    const bool named = std::any_of(defects.begin(), defects.end(), [&](const PlacementDefect& d) {
+    const bool named = std::any_of(atStart.begin(), atStart.end(), [&](const PlacementDefect& d) {
       return d.jsonPath.starts_with(e.jsonPath + ".");
     });
-    if (!named) defects.push_back(e);
+    if (!named) problems.add(e);
   }
-  if (!defects.empty()) {
-    std::string others;
-    for (std::size_t k = 1; k < defects.size(); ++k)
-      others += "; " + defects[k].jsonPath + ": " + defects[k].problem;
-    throw SceneError(sourceName, defects.front().jsonPath, defects.front().problem + others);
-  }
+  problems.throwIfAny();
   for (const PlacementDefect& w : motion.warnings)
     scene.warnings.push_back(w.jsonPath + ": " + w.problem);
   return scene;

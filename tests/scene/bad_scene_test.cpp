@@ -65,6 +65,7 @@ const BadCase kBadCases[] = {
     {"object_outside_boundary", "obstacles[0].shape", "outside the boundary"},
     // Every misplaced object and camera at once, the first naming the place.
     {"many_misplaced", "obstacles[0].shape", "; cameras[1].pos: camera lies inside obstacles[1]"},
+    {"many_malformed", "targets[0].shape", "; cameras[2].maxAngularVelocity: missing"},
     {"deformation_vertex_count", "targets[0].deformation.keyframes[0].shape", "vertices"},
     {"deformation_time_outside_period", "targets[0].deformation.keyframes[0].time", "(0, period)"},
     {"deformation_opposite_orientation", "targets[0].deformation.keyframes[0].shape",
@@ -113,6 +114,30 @@ TEST(BadSceneSet, EveryMisplacedObjectAndCameraIsNamedInOneMessageEachOnce) {
       EXPECT_NE(message.find(part), std::string::npos) << part << " in " << message;
     EXPECT_EQ(message.find("obstacles[0]: leaves"), std::string::npos)
         << "an object misplaced at t = 0 is named once: " << message;
+  }
+}
+
+TEST(BadSceneSet, EveryStructuralProblemIsNamedInOneMessageInTheFilesOrder) {
+  // Seven problems in independent parts of one file: each object and camera is read on its
+  // own, and a bad scene-wide field of view does not hide the cameras' own problems.
+  const auto file = testing::testDataDir() / "bad" / "many_malformed.json";
+  try {
+    loadScene(file);
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.jsonPath(), "targets[0].shape");
+    std::size_t at = 0;
+    for (const char* part :
+         {": targets[0].shape: unbalanced parentheses", "; targets[1].path: missing required key",
+          "; targets[2].shape: missing required key", "; obstacles[0].velocity: velocity must be",
+          "; cameraFoV: half-angle field of view must be in (0, 180) degrees, is 200",
+          "; cameras[0].angle: expected a number", "; cameras[2].maxAngularVelocity: missing"}) {
+      const std::size_t found = message.find(part, at);
+      EXPECT_NE(found, std::string::npos) << part << " (in order) in " << message;
+      if (found != std::string::npos) at = found;
+    }
+    EXPECT_EQ(message.find("cameras[1]"), std::string::npos) << message;
   }
 }
 
