@@ -11,7 +11,7 @@ namespace camcov::viz {
 namespace {
 
 // BT.709 luma weights; the limited range scales luma by 219/255 and chroma by 224/255.
-constexpr double kKr = 0.2126, kKb = 0.0722, kKg = 1.0 - kKr - kKb;
+constexpr double kKr = 0.2126, kKb = 0.0722;  // Kg = 1 - Kr - Kb: what each row leaves over
 constexpr double kLumaScale = 219.0 / 255.0;
 constexpr double kUScale = 224.0 / 255.0 / (2.0 * (1.0 - kKb));  // U = (B - Y') × this
 constexpr double kVScale = 224.0 / 255.0 / (2.0 * (1.0 - kKr));  // V = (R - Y') × this

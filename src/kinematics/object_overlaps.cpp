@@ -33,11 +33,16 @@ BgPolygon toPolygon(const geometry::Ring& ring) {
 // is not overlapping.
 std::optional<Vec2> interiorsMeet(const geometry::Ring& a, const geometry::Ring& b) {
   std::vector<BgPolygon> pieces;
-  // GCC 12 at -O2 sees Boost 1.74's rescale policy read a factor it always sets first.
+  // GCC 12 at -O2 sees Boost 1.74's rescale policy read a factor it always sets first (clang
+  // has no such warning).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
   bg::intersection(toPolygon(a), toPolygon(b), pieces);
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
   const double scale =
       std::max(std::abs(geometry::signedArea(a)), std::abs(geometry::signedArea(b)));
   const BgPolygon* largest = nullptr;

@@ -28,8 +28,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<char*> argv;
   for (std::string& a : args)
     argv.push_back(a.data());
-  CLI::App app{"camcov"};
-  const auto commands = cli::addCommands(app);  // owns the variables the options write to
+  // Built once: CLI11 clears what the previous input parsed before it parses the next, and
+  // building the application anew costs more than parsing.
+  static CLI::App app{"camcov"};
+  static const auto commands = cli::addCommands(app);  // owns the variables options write to
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::Error&) {
