@@ -18,6 +18,7 @@
 #include "records/batch_summary.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
+#include "util/interruption.h"
 #include "util/person_numbers.h"
 
 namespace camcov::python {
@@ -43,9 +44,17 @@ class PythonObserver final : public bench::BenchObserver {
   void stretchDone() override { count_.reset(); }
 
  private:
+  // Never throws into the bench's threads: what Python raises while it writes (Ctrl-C comes
+  // out of the stream's write, a closed stream) is kept, the bench stops at its next step,
+  // and the call raises it on its way back to Python.
   static void write(const char* stream, const std::string& line) {
     const py::gil_scoped_acquire gil;
-    py::module_::import("sys").attr(stream).attr("write")(line + "\n");
+    try {
+      py::module_::import("sys").attr(stream).attr("write")(line + "\n");
+    } catch (py::error_already_set& e) {
+      e.restore();
+      keepPythonError();
+    }
   }
   std::optional<bench::ProgressCount> count_;
 };
@@ -187,6 +196,7 @@ void bindRuns(py::module_& m) {
           py::gil_scoped_release free;
           result = bench::runBench(request, observer);
         }
+        throwIfInterrupted();  // an error kept while the last lines were written
         if (result.shard) return py::none();
         return jsonToPython(records::summaryToJson(result.summary));
       },

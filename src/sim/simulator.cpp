@@ -1,5 +1,7 @@
 #include "sim/simulator.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,6 +17,11 @@ namespace camcov::sim {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool isFinite(const kinematics::CameraCommand& u) {
+  return std::isfinite(u.velocity.x) && std::isfinite(u.velocity.y) &&
+         std::isfinite(u.angularVelocity);
+}
 
 // Constraint 3 of Problem 2.2: ‖[ẋ ẏ]‖ ≤ v_max and |γ̇| ≤ γ̇_max. Non-finite commands stop.
 kinematics::CameraCommand saturate(kinematics::CameraCommand u, const scene::CameraSpec& limits) {
@@ -114,6 +121,7 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   for (const auto& c : scene.cameras)
     cameras.push_back(c.initial);
   std::vector<kinematics::CameraCommand> commands(cameras.size());
+  std::vector<char> nonFiniteBefore(cameras.size(), 0);  // was camera j's last command so?
   std::vector<geometry::Vec2> velocities(cameras.size());
   std::vector<std::optional<geometry::Pose>> goals(cameras.size());
   std::vector<control::ControlEvent> events;
@@ -194,6 +202,20 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
       // The controller acts on the present; its events belong to this step's record.
       controller.control({t, world, cameras, measure.segments(), record.terms, &measure}, commands);
       for (std::size_t j = 0; j < cameras.size(); ++j) {
+        const bool finite = isFinite(commands[j]);
+        if (!finite && !nonFiniteBefore[j]) {
+          events.push_back(
+              {t,
+               std::string(kNonFiniteCommand),
+               static_cast<int>(j),
+               fmt::format("camera {}'s command (vx {}, vy {}, yaw rate {}) is not finite: it "
+                           "holds still",
+                           j, commands[j].velocity.x, commands[j].velocity.y,
+                           commands[j].angularVelocity),
+               {},
+               ""});
+        }
+        nonFiniteBefore[j] = !finite;
         commands[j] = saturate(commands[j], scene.cameras[j]);
         velocities[j] = commands[j].velocity;
       }

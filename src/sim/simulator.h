@@ -33,8 +33,8 @@ struct StepRecord {
   double unavoidableContactTime = 0.0;  // s closer than δ in unavoidable contacts
   // Targets present at t, where they come and go (scene::Scene::hasPresenceWindows); else −1.
   int targetsPresent = -1;
-  // Raised since the last step: contacts that began in the step that ended at t, then the
-  // controller's events at t.
+  // Raised since the last step: contacts that began in the step that ended at t, targets
+  // appearing or leaving, commands at t that are not finite, then the controller's events at t.
   std::span<const control::ControlEvent> events;
 };
 
@@ -45,6 +45,11 @@ inline constexpr std::string_view kUnavoidableContact = "unavoidable-contact";
 // or absent.
 inline constexpr std::string_view kTargetAppears = "target-appears";
 inline constexpr std::string_view kTargetLeaves = "target-leaves";
+// A camera's command that is not a finite number (a controller's bug): the camera holds still
+// (position, or turning, whichever part is not finite) for as long as it lasts. Raised at the
+// first step of each such stretch, so that the bug shows in the results instead of hiding in
+// them.
+inline constexpr std::string_view kNonFiniteCommand = "non-finite-command";
 
 struct RunSummary {
   int steps = 0;          // recorded steps, including t = 0

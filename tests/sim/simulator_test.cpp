@@ -70,6 +70,55 @@ TEST(Simulate, StepsAtFixedDtAndShowsTheControllerOnlyThePresent) {
   EXPECT_EQ(recorder.events, 20);
 }
 
+// Camera 0 asks for NaN on steps 3 to 5 and for an infinite turn on step 8; camera 1 always
+// for a finite move.
+class BuggyController final : public control::Controller {
+ public:
+  void control(const control::Observation& o, std::span<kinematics::CameraCommand> out) override {
+    const auto k = static_cast<int>(std::lround(o.time / 0.1));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    out[0] = (k >= 3 && k <= 5) ? kinematics::CameraCommand{{nan, 0.0}, 0.0}
+             : k == 8           ? kinematics::CameraCommand{{0.0, 0.0}, HUGE_VAL}
+                                : kinematics::CameraCommand{{1.0, 0.0}, 0.0};
+    for (std::size_t j = 1; j < out.size(); ++j)
+      out[j] = {{1.0, 0.0}, 0.0};
+  }
+  std::optional<geometry::Pose> goal(std::size_t) const override { return geometry::Pose{}; }
+  void takeEvents(std::vector<control::ControlEvent>&) override {}
+};
+
+class EventRecorder final : public Recorder {
+ public:
+  void step(const StepRecord& r) override {
+    events.insert(events.end(), r.events.begin(), r.events.end());
+    poses.emplace_back(r.cameras.begin(), r.cameras.end());
+  }
+  std::vector<control::ControlEvent> events;
+  std::vector<std::vector<geometry::Pose>> poses;
+};
+
+TEST(Simulate, ANonFiniteCommandHoldsTheCameraAndIsAnEventAtTheStartOfEachStretch) {
+  params::Parameters p;
+  p.sim.duration = 1.0;
+  BuggyController controller;
+  EventRecorder recorder;
+  simulate(oneTargetScene(), p, controller, recorder);
+  std::vector<control::ControlEvent> found;
+  for (const auto& e : recorder.events)
+    if (e.kind == kNonFiniteCommand) found.push_back(e);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_NEAR(found[0].time, 0.3, 1e-12);
+  EXPECT_NEAR(found[1].time, 0.8, 1e-12);
+  EXPECT_EQ(found[0].camera, 0);
+  EXPECT_NE(found[0].detail.find("vx nan"), std::string::npos) << found[0].detail;
+  EXPECT_NE(found[1].detail.find("yaw rate inf"), std::string::npos) << found[1].detail;
+  // Steps 3 to 5 do not move camera 0 (the poses recorded at 0.3 s to 0.6 s are one), while
+  // its finite steps move it 0.1 m each.
+  for (int k = 3; k <= 5; ++k)
+    EXPECT_EQ(recorder.poses[k + 1][0].x, recorder.poses[k][0].x) << k;
+  EXPECT_NEAR(recorder.poses[3][0].x - recorder.poses[2][0].x, 0.1, 1e-12);
+}
+
 TEST(Simulate, SaturatesCommandsToTheCameraLimits) {
   params::Parameters p;
   p.sim.duration = 1.0;
