@@ -11,6 +11,7 @@
 #include "control/methods.h"
 #include "records/ompl_benchmark_log.h"
 #include "reports/report_builder.h"
+#include "util/counted.h"
 #include "util/input_error.h"
 
 namespace camcov::bench {
@@ -113,13 +114,14 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
   }
   if (undecided > 0) {
     observer.report(fmt::format(
-        "note: {} comparisons are undecided: with so few seeds no difference can reach p < {}; "
+        "note: {} undecided: with so few seeds no difference can reach p < {}; "
         "run at least {} seeds per method (--seeds {})",
-        undecided, records::kSignificance, records::seedsToReachSignificance(),
+        counted(static_cast<std::size_t>(undecided), "comparison is", "comparisons are"),
+        records::kSignificance, records::seedsToReachSignificance(),
         records::seedsToReachSignificance()));
   }
   reportGroups(summary, methods, observer);
-  observer.report(fmt::format("{} failed jobs", summary.failures.size()));
+  observer.report(counted(summary.failures.size(), "failed job", "failed jobs"));
 }
 
 }  // namespace
@@ -147,18 +149,18 @@ records::BatchSummary finishBench(const records::BatchFolder& folder,
   const auto chosen = records::chooseVideoRuns(summary, outcomes, options.videoChoice());
   const std::string root = folder.root().string();
   if (!chosen.empty()) {
-    observer.report(
-        writeBenchVideos(folder, chosen, workers, observer).describe("videos", root + "/videos"));
+    observer.report(writeBenchVideos(folder, chosen, workers, observer)
+                        .describe("video", "videos", root + "/videos"));
   }
   const auto explored = records::chooseVideoRuns(summary, outcomes, options.explorerChoice());
   if (!explored.empty()) {
     observer.report(writeBenchExplorers(folder, explored, observer)
-                        .describe("run explorer pages", root + "/explore"));
+                        .describe("run explorer page", "run explorer pages", root + "/explore"));
   }
   const OutputBatch optima =
       writeBenchOptima(folder, manifest, options.optimumBudget, workers, observer);
   if (optima.written + optima.upToDate + optima.failed > 0)
-    observer.report(optima.describe("offline optima", root + "/optimum"));
+    observer.report(optima.describe("offline optimum", "offline optima", root + "/optimum"));
   if (!options.noReport) {
     reports::writeReport(folder.root(), folder.root() / "report.html");
     observer.report(fmt::format("wrote {}", (folder.root() / "report.html").string()));

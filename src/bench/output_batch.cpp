@@ -3,14 +3,16 @@
 #include <fmt/format.h>
 
 #include "bench/bench_observer.h"
+#include "util/counted.h"
 
 namespace camcov::bench {
 
-std::string OutputBatch::describe(const std::string& what, const std::string& dir) const {
+std::string OutputBatch::describe(std::string_view one, std::string_view many,
+                                  const std::string& dir) const {
   std::string notes;
   if (upToDate > 0) notes += fmt::format("{} up to date", upToDate);
   if (failed > 0) notes += fmt::format("{}{} not written", notes.empty() ? "" : ", ", failed);
-  return fmt::format("wrote {} {} in {}{}", written, what, dir,
+  return fmt::format("wrote {} in {}{}", counted(written, one, many), dir,
                      notes.empty() ? "" : " (" + notes + ")");
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace camcov::bench {
@@ -17,8 +18,8 @@ struct OutputBatch {
   std::size_t upToDate = 0;  // already there, made from the same inputs
   std::size_t failed = 0;    // each one explained in a warning
 
-  // "wrote 3 videos in out/videos (1 up to date, 1 not written)".
-  std::string describe(const std::string& what, const std::string& dir) const;
+  // "wrote 3 videos in out/videos (1 up to date, 1 not written)", from "video" and "videos".
+  std::string describe(std::string_view one, std::string_view many, const std::string& dir) const;
 };
 
 // The items that could not be made, collected from any thread, then said at once (after a

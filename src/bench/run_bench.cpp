@@ -10,6 +10,7 @@
 #include "batch/merge.h"
 #include "camcov/version.h"
 #include "records/atomic_file.h"
+#include "util/counted.h"
 
 namespace camcov::bench {
 namespace {
@@ -67,13 +68,14 @@ BenchResult runBench(const BenchRequest& request, BenchObserver& observer) {
   const batch::Shard& shard = plan.shard;
   const unsigned workers = workersFor(request.jobs);
   observer.note(fmt::format(
-      "camcov bench: {} scenes x {} methods x {} seeds = {} jobs{} on {} workers -> {}",
-      planned.manifest.scenes.size(), planned.manifest.methods.size(), request.seeds,
-      planned.totalJobs,
+      "camcov bench: {} x {} x {} = {}{} on {} -> {}",
+      counted(planned.manifest.scenes.size(), "scene", "scenes"),
+      counted(planned.manifest.methods.size(), "method", "methods"),
+      counted(request.seeds, "seed", "seeds"), counted(planned.totalJobs, "job", "jobs"),
       shard.count > 1
           ? fmt::format(" (shard {}/{}: {})", shard.index + 1, shard.count, planned.jobs.size())
           : "",
-      workers, request.out));
+      counted(workers, "worker", "workers"), request.out));
   batch::BatchRun run;
   {
     JobsToObserver jobs(observer, request.out);

@@ -82,7 +82,7 @@ TEST(RunBench, PrintsNothingAndSaysEverythingToItsObserverInOrder) {
   EXPECT_FALSE(result.shard);
   EXPECT_EQ(result.summary.scenes, std::vector<std::string>{"tiny_dynamic"});
   ASSERT_FALSE(s.notes.empty());
-  EXPECT_EQ(s.notes.front().rfind("camcov bench: 1 scenes x 2 methods x 2 seeds = 4 jobs", 0), 0u)
+  EXPECT_EQ(s.notes.front().rfind("camcov bench: 1 scene x 2 methods x 2 seeds = 4 jobs", 0), 0u)
       << s.notes.front();
   // The jobs' stretch (4, none from before), then the videos' (the median seed of 2 methods).
   ASSERT_EQ(s.stretches.size(), 2u);

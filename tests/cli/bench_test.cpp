@@ -55,7 +55,7 @@ TEST(CliBench, SearchesTheOptimumOfScenesThatHoldStillOnceAndTheReportSetsRunsAg
   EXPECT_FALSE(fs::exists(out / "optimum" / "tiny_dynamic.json")) << "its targets move";
   const auto optimum = nlohmann::json::parse(readFile(out / "optimum" / "tiny_static.json"));
   EXPECT_EQ(optimum["budget"], 5000);
-  EXPECT_NE(first.out.find("wrote 1 offline optima"), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find("wrote 1 offline optimum in "), std::string::npos) << first.out;
   EXPECT_NE(first.out.find("camcov against paper: wins"), std::string::npos) << first.out;
   const std::string report = readFile(out / "report.html");
   EXPECT_NE(report.find("id=\"optimum\""), std::string::npos);
