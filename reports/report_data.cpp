@@ -116,7 +116,8 @@ std::optional<records::OptimumFile> findOptimum(const records::BatchFolder& fold
 std::vector<std::string> findVideos(const fs::path& resultsDir, const fs::path& reportDir) {
   std::vector<fs::path> files;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(resultsDir / "videos", ec)) {
+  for (const auto& entry :
+       fs::directory_iterator(records::BatchFolder(resultsDir).videosDir(), ec)) {
     if (entry.is_regular_file() && entry.path().extension() == ".mp4") {
       files.push_back(entry.path());
     }
@@ -176,7 +177,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
   }
   ReportData data;
   data.manifest = std::move(*manifest);
-  data.summary = records::loadSummaryFile(resultsDir / "summary.json");
+  data.summary = records::loadSummaryFile(folder.summaryFile());
   data.timings = folder.readTimings();
   for (const std::string& name : data.summary.scenes) {
     SceneData scene;
@@ -190,7 +191,7 @@ ReportData loadReportData(const fs::path& resultsDir, const fs::path& reportFile
       scene.sceneNote = "not listed in batch.json";
     }
     scene.group = sceneGroup(scene.name, scene.scene ? &*scene.scene : nullptr);
-    if (const fs::path page = resultsDir / "explore" / (name + ".html"); fs::exists(page)) {
+    if (const fs::path page = folder.explorerPage(name); fs::exists(page)) {
       scene.explorerUrl = relativeUrl(page, reportFile.parent_path());
     }
     for (const auto& m : data.summary.methods) {

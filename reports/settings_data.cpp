@@ -6,6 +6,7 @@
 #include <set>
 
 #include "params/parameter_table.h"
+#include "records/batch_folder.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "scene/scene_loader.h"
@@ -38,8 +39,8 @@ Setting readSetting(const fs::path& folder, const fs::path& reportDir) {
     runs.averageCoverage.push_back(job.summary.averageCoverage);
     runs.averageUtilization.push_back(job.summary.averageUtilization);
   }
-  if (fs::exists(folder / "report.html"))
-    s.reportUrl = relativeUrl(folder / "report.html", reportDir);
+  if (const fs::path report = records::BatchFolder(folder).reportFile(); fs::exists(report))
+    s.reportUrl = relativeUrl(report, reportDir);
   return s;
 }
 
@@ -144,7 +145,7 @@ std::vector<fs::path> resultsFoldersIn(const fs::path& root) {
   std::vector<fs::path> folders;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(root, ec)) {
-    if (entry.is_directory() && fs::exists(entry.path() / "batch.json")) {
+    if (entry.is_directory() && records::BatchFolder::holdsBatch(entry.path())) {
       folders.push_back(entry.path());
     }
   }

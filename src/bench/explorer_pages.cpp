@@ -19,7 +19,7 @@ OutputBatch writeBenchExplorers(const records::BatchFolder& folder,
     byScene[run.scene].push_back(folder.runFile(records::runStem(run.scene, run.method, run.seed)));
   OutputBatch batch;
   for (const auto& [scene, files] : byScene) {
-    const std::filesystem::path page = folder.root() / "explore" / (scene + ".html");
+    const std::filesystem::path page = folder.explorerPage(scene);
     try {
       std::filesystem::create_directories(page.parent_path());
       reports::explorer::writeExplorer(files, page);

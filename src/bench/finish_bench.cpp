@@ -142,28 +142,29 @@ records::BatchSummary finishBench(const records::BatchFolder& folder,
   for (const auto& f : summary.failures) {
     observer.report(fmt::format("  failed: {} {} seed {}: {}", f.scene, f.method, f.seed, f.error));
   }
-  observer.report(
-      fmt::format("wrote {}/summary.json, summary.csv and {} OMPL benchmark logs in {}/ompl",
-                  folder.root().string(), logs.size(), folder.root().string()));
+  observer.report(fmt::format(
+      "wrote {}, {} and {} OMPL benchmark logs in {}", folder.summaryFile().string(),
+      folder.summaryCsvFile().filename().string(), logs.size(), folder.omplDir().string()));
   // Before the report, which embeds what it finds in videos/.
   const auto chosen = records::chooseVideoRuns(summary, outcomes, options.videoChoice());
-  const std::string root = folder.root().string();
   if (!chosen.empty()) {
     observer.report(writeBenchVideos(folder, chosen, workers, observer)
-                        .describe("video", "videos", root + "/videos"));
+                        .describe("video", "videos", folder.videosDir().string()));
   }
   const auto explored = records::chooseVideoRuns(summary, outcomes, options.explorerChoice());
   if (!explored.empty()) {
-    observer.report(writeBenchExplorers(folder, explored, observer)
-                        .describe("run explorer page", "run explorer pages", root + "/explore"));
+    observer.report(
+        writeBenchExplorers(folder, explored, observer)
+            .describe("run explorer page", "run explorer pages", folder.exploreDir().string()));
   }
   const OutputBatch optima =
       writeBenchOptima(folder, manifest, options.optimumBudget, workers, observer);
   if (optima.written + optima.upToDate + optima.failed > 0)
-    observer.report(optima.describe("offline optimum", "offline optima", root + "/optimum"));
+    observer.report(
+        optima.describe("offline optimum", "offline optima", folder.optimumDir().string()));
   if (!options.noReport) {
-    reports::writeReport(folder.root(), folder.root() / "report.html");
-    observer.report(fmt::format("wrote {}", (folder.root() / "report.html").string()));
+    reports::writeReport(folder.root(), folder.reportFile());
+    observer.report(fmt::format("wrote {}", folder.reportFile().string()));
   }
   return summary;
 }

@@ -22,7 +22,7 @@ OutputBatch writeBenchVideos(const records::BatchFolder& folder,
                              BenchObserver& observer) {
   OutputBatch batch;
   if (runs.empty()) return batch;
-  const fs::path dir = folder.root() / "videos";  // made by the first video's encoder
+  const fs::path dir = folder.videosDir();  // made by the first video's encoder
 
   // A video is up to date if it is newer than its run's results file: a run done again
   // (other parameters, --force, a changed scene) gets a new video.
@@ -30,7 +30,7 @@ OutputBatch writeBenchVideos(const records::BatchFolder& folder,
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::string stem = records::runStem(runs[i].scene, runs[i].method, runs[i].seed);
     std::error_code ec;
-    const auto video = fs::last_write_time(dir / (stem + ".mp4"), ec);
+    const auto video = fs::last_write_time(folder.videoFile(stem), ec);
     if (!ec && video >= fs::last_write_time(folder.runFile(stem))) {
       ++batch.upToDate;
     } else {
@@ -45,18 +45,20 @@ OutputBatch writeBenchVideos(const records::BatchFolder& folder,
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     const records::VideoRun& chosen = runs[pending[k]];
     const std::string stem = records::runStem(chosen.scene, chosen.method, chosen.seed);
+    // "videos/<stem>.mp4": the file, as seen from the results folder.
+    const std::string shown = fs::relative(folder.videoFile(stem), folder.root()).string();
     std::string what;
     try {
       const records::RunRecord run = records::loadRunFile(folder.runFile(stem));
       const viz::RunScene scene = viz::loadRunScene(run.metadata);
       const std::size_t frames =
-          viz::writeRunVideo(run, scene.scene, dir / (stem + ".mp4"), viz::runVideoSettings(run));
+          viz::writeRunVideo(run, scene.scene, folder.videoFile(stem), viz::runVideoSettings(run));
       ++written;
       what =
-          fmt::format("videos/{}.mp4: {} frames{}", stem, frames,
+          fmt::format("{}: {} frames{}", shown, frames,
                       scene.changed ? " (warning: the scene file has changed since the run)" : "");
     } catch (const std::exception& e) {
-      what = fmt::format("videos/{}.mp4: not written: {}", stem, e.what());
+      what = fmt::format("{}: not written: {}", shown, e.what());
       problems.add(what);
     }
     observer.itemFinished(what);

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "records/batch_folder.h"
 #include "reports/report_builder.h"
 #include "reports/settings_report.h"
 #include "util/input_error.h"
@@ -25,11 +26,12 @@ struct ReportOptions {
 };
 
 int report(const ReportOptions& o) {
-  const bool oneBatch = o.folders.size() == 1 && fs::exists(fs::path(o.folders[0]) / "batch.json");
+  const bool oneBatch = o.folders.size() == 1 && records::BatchFolder::holdsBatch(o.folders[0]);
   if (o.folders.size() > 1 && o.out.empty()) {
     throw InputError("a report over several folders needs --out FILE");
   }
-  const fs::path out = o.out.empty() ? fs::path(o.folders[0]) / "report.html" : fs::path(o.out);
+  const fs::path out =
+      o.out.empty() ? records::BatchFolder(o.folders[0]).reportFile() : fs::path(o.out);
   if (oneBatch) {
     if (!o.referenceSetting.empty()) {
       throw InputError("--reference-setting compares several results folders; " + o.folders[0] +

@@ -15,6 +15,7 @@
 #include "python/numpy_arrays.h"
 #include "python/python_controller.h"
 #include "python/python_scene.h"
+#include "records/batch_folder.h"
 #include "records/batch_summary.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
@@ -218,7 +219,8 @@ void bindRuns(py::module_& m) {
       "report",
       [](const std::string& folder, const std::string& out) {
         py::gil_scoped_release free;
-        const std::filesystem::path file = out.empty() ? folder + "/report.html" : out;
+        const std::filesystem::path file =
+            out.empty() ? records::BatchFolder(folder).reportFile() : std::filesystem::path(out);
         reports::writeReport(folder, file);
         return file.string();
       },

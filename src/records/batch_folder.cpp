@@ -83,18 +83,18 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
 }
 
 std::optional<BatchManifest> BatchFolder::readManifest() const {
-  const fs::path file = root_ / "batch.json";
+  const fs::path file = manifestFile();
   const auto j = readJson(file);
   if (!j) return std::nullopt;
   return manifestFromJson(*j, file.string());
 }
 
 void BatchFolder::writeManifest(const BatchManifest& manifest) const {
-  writeJson(root_ / "batch.json", manifestToJson(manifest));
+  writeJson(manifestFile(), manifestToJson(manifest));
 }
 
 void BatchFolder::removeStaleTemporaries() const {
-  for (const fs::path& dir : {root_, runsDir(), root_ / "ompl", root_ / "optimum"}) {
+  for (const fs::path& dir : {root_, runsDir(), omplDir(), optimumDir()}) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       if (isTemporaryFile(entry.path())) fs::remove(entry.path(), ec);
@@ -180,7 +180,7 @@ std::vector<JobOutcome> BatchFolder::allJobs() const {
 
 std::map<std::string, JobTiming> BatchFolder::readTimings() const {
   std::map<std::string, JobTiming> timings;
-  const auto j = readJson(root_ / "timings.json");
+  const auto j = readJson(timingsFile());
   if (!j) return timings;
   for (const auto& [stem, t] : j->items()) {
     timings[stem] = {t.at("wallSeconds").get<double>(), t.at("cpuSeconds").get<double>()};
@@ -193,12 +193,12 @@ void BatchFolder::writeTimings(const std::map<std::string, JobTiming>& timings) 
   for (const auto& [stem, t] : timings) {
     j[stem] = {{"wallSeconds", t.wallSeconds}, {"cpuSeconds", t.cpuSeconds}};
   }
-  writeJson(root_ / "timings.json", j);
+  writeJson(timingsFile(), j);
 }
 
 void BatchFolder::writeSummary(const BatchSummary& summary) const {
-  writeJson(root_ / "summary.json", summaryToJson(summary));
-  writeFileAtomically(root_ / "summary.csv", summaryToCsv(summary));
+  writeJson(summaryFile(), summaryToJson(summary));
+  writeFileAtomically(summaryCsvFile(), summaryToCsv(summary));
 }
 
 }  // namespace camcov::records

@@ -56,10 +56,30 @@ struct JobTiming {
   double cpuSeconds = 0.0;
 };
 
+// A results folder, and the one owner of every name inside it: batch.json, runs/,
+// summary.json and .csv, timings.json, ompl/, optimum/, videos/, explore/ and report.html.
 class BatchFolder {
  public:
   explicit BatchFolder(std::filesystem::path root) : root_(std::move(root)) {}
   const std::filesystem::path& root() const { return root_; }
+  // Whether `dir` holds a batch (its manifest), without reading it.
+  static bool holdsBatch(const std::filesystem::path& dir) {
+    return std::filesystem::exists(BatchFolder(dir).manifestFile());
+  }
+  std::filesystem::path manifestFile() const { return root_ / "batch.json"; }
+  std::filesystem::path summaryFile() const { return root_ / "summary.json"; }
+  std::filesystem::path summaryCsvFile() const { return root_ / "summary.csv"; }
+  std::filesystem::path timingsFile() const { return root_ / "timings.json"; }
+  std::filesystem::path omplDir() const { return root_ / "ompl"; }
+  std::filesystem::path videosDir() const { return root_ / "videos"; }
+  std::filesystem::path videoFile(const std::string& stem) const {
+    return videosDir() / (stem + ".mp4");
+  }
+  std::filesystem::path exploreDir() const { return root_ / "explore"; }
+  std::filesystem::path explorerPage(const std::string& scene) const {
+    return exploreDir() / (scene + ".html");
+  }
+  std::filesystem::path reportFile() const { return root_ / "report.html"; }
   std::filesystem::path runsDir() const { return root_ / "runs"; }
   std::filesystem::path runFile(const std::string& stem) const {
     return runsDir() / (stem + ".json");
@@ -68,8 +88,9 @@ class BatchFolder {
     return runsDir() / (stem + ".error.json");
   }
 
+  std::filesystem::path optimumDir() const { return root_ / "optimum"; }
   std::filesystem::path optimumFile(const std::string& scene) const {
-    return root_ / "optimum" / (scene + ".json");
+    return optimumDir() / (scene + ".json");
   }
 
   std::optional<BatchManifest> readManifest() const;

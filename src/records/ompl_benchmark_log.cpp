@@ -121,7 +121,7 @@ std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
       return std::tie(a.metadata.method, a.metadata.seed) <
              std::tie(b.metadata.method, b.metadata.seed);
     });
-    const fs::path file = folder.root() / "ompl" / (scene + ".log");
+    const fs::path file = folder.omplDir() / (scene + ".log");
     writeFileAtomically(file, omplBenchmarkLog(scene, runs, timings, parameters));
     written.push_back(file);
   }
