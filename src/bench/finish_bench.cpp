@@ -16,6 +16,14 @@
 
 namespace camcov::bench {
 
+void BenchOutputOptions::check() const {
+  videoChoice();
+  explorerChoice();
+  if (optimumBudget < 0 || optimumBudget > (std::int64_t{1} << 40))
+    throw InputError(
+        fmt::format("--optimum-budget {}: expected a count in [0, 2^40]", optimumBudget));
+}
+
 records::VideoChoice BenchOutputOptions::explorerChoice() const {
   const records::VideoChoice choice = records::parseVideoChoice(explorer);
   if (choice == records::VideoChoice::All) {

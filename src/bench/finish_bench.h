@@ -24,11 +24,9 @@ struct BenchOutputOptions {
   records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
   // InputError for a bad --explorer (all seeds of a scene on one page would not be read).
   records::VideoChoice explorerChoice() const;
-  // Both checks, before any job runs.
-  void check() const {
-    videoChoice();
-    explorerChoice();
-  }
+  // Those checks and the optimum's budget in [0, 2^40] (Python passes it unchecked by a
+  // command line), before any job runs.
+  void check() const;
   // The reference among `methods`; InputError if --reference names another.
   std::string referenceAmong(const std::vector<std::string>& methods) const;
 };

@@ -5,6 +5,8 @@ and the times differ."""
 import pathlib
 import re
 
+import pytest
+
 import camcov
 
 OPTIONS = {"methods": ["local", "nearest-unseen"], "seeds": 2}
@@ -49,3 +51,9 @@ def test_a_resumed_python_bench_says_what_it_reused_as_the_cli_does(tiny, tmp_pa
     err = capfd.readouterr().err
     assert re.search(r"^4 of 4 jobs already done in .*b \(written .* UTC\); running the other 0$",
                      err, re.M), err
+
+
+def test_a_negative_optimum_budget_is_refused_as_the_cli_refuses_it(tiny, tmp_path):
+    with pytest.raises(ValueError, match="--optimum-budget -5"):
+        camcov.bench([tiny("tiny_static")], optimum_budget=-5, out=str(tmp_path / "b"))
+    assert not (tmp_path / "b").exists()
