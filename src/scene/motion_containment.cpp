@@ -243,7 +243,7 @@ Overhang turningOverhang(const geometry::Ring& shape, const std::vector<Leg>& pa
   return out;
 }
 
-// Where the reference point is at time t (the path's motion, scene section of the README).
+// Where the reference point is at time t (the path's motion: docs/scene-format.md, "Paths").
 Vec2 positionAt(const std::vector<Leg>& path, double t, double velocity) {
   const Leg& last = path.back();
   const double lap = path.size() == 1 && last.from.x == last.to.x && last.from.y == last.to.y

@@ -28,7 +28,7 @@ struct Deformation {
 // point's position at sample times, and optionally the heading. The object is present from
 // its first sample to its last and absent before and after (it enters and leaves the scene);
 // in between it moves linearly from sample to sample, a gap between two samples included
-// (docs: README "Recorded tracks"). Nothing ever looks at a sample later than the present
+// (docs/scene-format.md, "Recorded tracks"). Nothing ever looks at a sample later than the present
 // except to place the object where it is now.
 struct Track {
   std::vector<double> times;              // s, strictly increasing, at least one
@@ -43,7 +43,8 @@ struct Track {
 // A target or an obstacle.
 struct MovingObject {
   geometry::Ring shape;              // local coordinates about the reference point, CCW
-  std::vector<geometry::Vec2> path;  // waypoints of the reference point; one point = static
+  std::vector<geometry::Vec2> path;  // a closed loop of waypoints of the reference point; one
+                                     // point = static (a LINESTRING unfolds: scene/path_forms.h)
                                      // (a tracked object: its first recorded position)
   double velocity = 1.0;             // m/s along the path (closed loop), > 0
   double angularVelocity = 0.0;      // rad/s, counter-clockwise about the reference point

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "scene/motion_containment.h"
+#include "scene/path_forms.h"
 #include "scene/read_text.h"
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
@@ -73,29 +74,27 @@ class Node {
     if (!value_.is_string()) fail("expected a string, found " + typeName());
     return value_.get<std::string>();
   }
-  std::vector<geometry::Vec2> wktRing() const {
-    std::vector<geometry::Vec2> ring;
-    try {
-      ring = parseWktPolygonRing(string());
-    } catch (const WktError& e) {
-      fail(e.what());
-    }
-    for (std::size_t i = 0; i < ring.size(); ++i)
-      requireWithinRange(ring[i], i);
-    return ring;
-  }
+  std::vector<geometry::Vec2> wktRing() const { return wktPoints(parseWktPolygonRing); }
+  std::vector<geometry::Vec2> wktLineString() const { return wktPoints(parseWktLineString); }
   geometry::Vec2 wktPoint() const {
-    geometry::Vec2 point;
-    try {
-      point = parseWktPoint(string());
-    } catch (const WktError& e) {
-      fail(e.what());
-    }
-    requireWithinRange(point, 0);
-    return point;
+    return wktPoints([](std::string_view text) { return std::vector{parseWktPoint(text)}; })[0];
   }
 
  private:
+  // The points `parse` (one of wkt.h's) reads from this string, each within range; the
+  // parser's problems are this node's.
+  template <class Parse>
+  std::vector<geometry::Vec2> wktPoints(Parse&& parse) const {
+    std::vector<geometry::Vec2> points;
+    try {
+      points = parse(string());
+    } catch (const WktError& e) {
+      fail(e.what());
+    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+      requireWithinRange(points[i], i);
+    return points;
+  }
   void requireWithinRange(geometry::Vec2 v, std::size_t index) const {
     if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate) {
       fail(fmt::format("coordinate {} ({} {}) lies beyond ±{:g} m", index, v.x, v.y,
@@ -126,7 +125,28 @@ geometry::Ring simpleRing(const Node& node) {
   return ring;
 }
 
+// A path in any of its written forms, as the closed loop of waypoints kinematics follows
+// (kinematics/path_motion.h): POINT stays, LINESTRING goes back and forth, POLYGON loops.
 std::vector<geometry::Vec2> path(const Node& node) {
+  const std::string keyword = wktKeyword(node.string());
+  if (keyword == "POINT") return {node.wktPoint()};
+  if (keyword == "LINESTRING") {
+    std::vector<geometry::Vec2> loop = backAndForthLoop(node.wktLineString());
+    if (loop.size() < 2) {
+      node.fail(
+          fmt::format("a {} path goes back and forth between at least 2 distinct points, "
+                      "has 1; a static object's path is {}",
+                      keyword, kPointForm));
+    }
+    return loop;
+  }
+  if (keyword != "POLYGON") {
+    node.fail(
+        fmt::format("invalid WKT '{}': {} is not a path; write {} (a static object), {} "
+                    "(back and forth along it) or {} (a loop through the waypoints)",
+                    node.string(), keyword.empty() ? "no geometry type" : keyword, kPointForm,
+                    kLineStringForm, kPolygonForm));
+  }
   std::vector<geometry::Vec2> waypoints = node.wktRing();
   if (waypoints.size() > 1) {
     double length = 0.0;
@@ -134,34 +154,36 @@ std::vector<geometry::Vec2> path(const Node& node) {
       length += geometry::distance(waypoints[i], waypoints[(i + 1) % waypoints.size()]);
     }
     if (length == 0.0) {
-      node.fail("path of " + std::to_string(waypoints.size()) +
-                " waypoints has zero length; a static object has a one-point path");
+      node.fail(fmt::format("path of {} waypoints has zero length; a static object's path is {}",
+                            waypoints.size(), kPointForm));
     }
   }
   return waypoints;
 }
 
-double positive(const Node& node, const char* what) {
+// `unit` follows every number a message shows, so that "1.5" never has to be guessed at.
+double positive(const Node& node, const char* what, const char* unit) {
   const double v = node.number();
-  if (v <= 0.0) node.fail(fmt::format("{} must be positive, is {}", what, v));
+  if (v <= 0.0) node.fail(fmt::format("{} must be positive, is {} {}", what, v, unit));
   return v;
 }
 
-double speed(const Node& node, const char* what) {
+double speed(const Node& node, const char* what, const char* unit) {
   const double v = node.number();
-  if (std::abs(v) > kMaxSpeed) node.fail(fmt::format("{} {} exceeds {:g}", what, v, kMaxSpeed));
+  if (std::abs(v) > kMaxSpeed)
+    node.fail(fmt::format("{} {} {} exceeds {:g} {}", what, v, unit, kMaxSpeed, unit));
   return v;
 }
 
-double positiveSpeed(const Node& node, const char* what) {
-  positive(node, what);
-  return speed(node, what);
+double positiveSpeed(const Node& node, const char* what, const char* unit) {
+  positive(node, what, unit);
+  return speed(node, what, unit);
 }
 
 Deformation deformation(const Node& node, const geometry::Ring& writtenShape) {
   node.object({"period", "keyframes"});
   Deformation result;
-  result.period = positive(node.child("period"), "period");
+  result.period = positive(node.child("period"), "period", "s");
   const Node frames = node.child("keyframes");
   const std::size_t count = frames.arraySize();
   if (count == 0) frames.fail("needs at least one keyframe");
@@ -172,7 +194,7 @@ Deformation deformation(const Node& node, const geometry::Ring& writtenShape) {
     const Node timeNode = frame.child("time");
     const double time = timeNode.number();
     if (time <= previous || time >= result.period) {
-      timeNode.fail("keyframe times must increase strictly inside (0, period)");
+      timeNode.fail("keyframe times (s) must increase strictly inside (0, period)");
     }
     previous = time;
     const Node shapeNode = frame.child("shape");
@@ -210,10 +232,10 @@ Track track(const Node& node) {
     if (n != width)
       sample.fail(fmt::format("every sample of a track has {} numbers, like the first", width));
     const double t = sample.element(0).number();
-    if (t < 0.0) sample.element(0).fail(fmt::format("time {} is negative", t));
+    if (t < 0.0) sample.element(0).fail(fmt::format("time {} s is negative", t));
     if (i > 0 && t <= result.times.back()) {
       sample.element(0).fail(
-          fmt::format("times must increase strictly: {} after {}", t, result.times.back()));
+          fmt::format("times must increase strictly: {} s after {} s", t, result.times.back()));
     }
     const geometry::Vec2 p{sample.element(1).number(), sample.element(2).number()};
     if (std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate) {
@@ -252,9 +274,10 @@ MovingObject movingObject(const Node& node) {
     return object;
   }
   object.path = path(node.child("path"));
-  if (node.has("velocity")) object.velocity = positiveSpeed(node.child("velocity"), "velocity");
+  if (node.has("velocity"))
+    object.velocity = positiveSpeed(node.child("velocity"), "velocity", "m/s");
   if (node.has("angularVelocity"))
-    object.angularVelocity = speed(node.child("angularVelocity"), "angularVelocity");
+    object.angularVelocity = speed(node.child("angularVelocity"), "angularVelocity", "rad/s");
   if (node.has("deformation")) {
     // Keyframes correspond vertex by vertex to the shape as written; normalise them together.
     geometry::Ring written = shapeNode.wktRing();
@@ -318,7 +341,10 @@ std::vector<MovingObject> objects(const Node& node, Problems& problems) {
 double halfFov(const Node& node) {
   const double degrees = node.number();
   if (degrees <= 0.0 || degrees >= 180.0)
-    node.fail(fmt::format("half-angle field of view must be in (0, 180) degrees, is {}", degrees));
+    node.fail(
+        fmt::format("the half-angle θ of the field of view must be in (0, 180) degrees "
+                    "(the field of view is 2θ wide), is {}°",
+                    degrees));
   return geometry::degToRad(degrees);
 }
 
@@ -330,8 +356,9 @@ CameraSpec camera(const Node& node, double sceneHalfFov) {
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
-  camera.maxVelocity = positiveSpeed(node.child("maxVelocity"), "maxVelocity");
-  camera.maxAngularVelocity = positiveSpeed(node.child("maxAngularVelocity"), "maxAngularVelocity");
+  camera.maxVelocity = positiveSpeed(node.child("maxVelocity"), "maxVelocity", "m/s");
+  camera.maxAngularVelocity =
+      positiveSpeed(node.child("maxAngularVelocity"), "maxAngularVelocity", "rad/s");
   return camera;
 }
 
@@ -361,9 +388,9 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     const Node pitch = root.child("pitch");
     pitch.object({"length", "width"});
     const auto size = [](const Node& n, const char* what) {
-      const double v = positive(n, what);
+      const double v = positive(n, what, "m");
       if (v > kMaxCoordinate)
-        n.fail(fmt::format("{} {} lies beyond {:g} m", what, v, kMaxCoordinate));
+        n.fail(fmt::format("{} {} m lies beyond {:g} m", what, v, kMaxCoordinate));
       return v;
     };
     scene.pitch = Pitch{size(pitch.child("length"), "length"), size(pitch.child("width"), "width")};

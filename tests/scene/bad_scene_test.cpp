@@ -32,8 +32,10 @@ const BadCase kBadCases[] = {
     {"velocity_not_number", "targets[0].velocity", "expected a number"},
     {"unknown_key", "targets[0].velocty", "unknown key"},
     {"wkt_unbalanced", "targets[0].shape", "invalid WKT"},
-    {"wkt_point_for_polygon", "targets[0].shape", "invalid WKT"},
-    {"wkt_polygon_for_point", "cameras[0].pos", "invalid WKT"},
+    // Every WKT error names the form to write.
+    {"wkt_point_for_polygon", "targets[0].shape", "; write POLYGON((x1 y1, x2 y2, x3 y3, ...))"},
+    {"wkt_polygon_for_point", "cameras[0].pos",
+     "a POLYGON where a POINT is read; write POINT(x y)"},
     {"wkt_three_numbers", "targets[0].shape", "has 3 numbers"},
     {"wkt_nan", "targets[0].shape", "not a finite number"},
     {"wkt_inf", "cameras[0].pos", "not a finite number"},
@@ -44,7 +46,13 @@ const BadCase kBadCases[] = {
     {"zero_area", "targets[0].shape", "collinear"},
     {"self_intersecting_shape", "targets[0].shape", "intersects itself"},
     {"self_intersecting_boundary", "boundary", "intersects itself"},
-    {"zero_length_path", "targets[0].path", "zero length"},
+    {"zero_length_path", "targets[0].path", "zero length; a static object's path is POINT(x y)"},
+    {"path_linestring_one_point", "targets[0].path", "at least 2 distinct points, has 1"},
+    {"path_linestring_repeated_point", "targets[0].path", "at least 2 distinct points, has 1"},
+    {"path_not_a_path_form", "targets[0].path",
+     "MULTIPOINT is not a path; write POINT(x y) (a static object), LINESTRING("},
+    {"path_point_with_three_numbers", "targets[0].path",
+     "3 numbers, expected 2 (x y); write POINT"},
     {"negative_velocity", "targets[0].velocity", "must be positive"},
     // Found with the scene fuzzer (tests/fuzz): finite, but placing the object at time t
     // overflowed to infinity and the world filled with NaN.
@@ -129,9 +137,11 @@ TEST(BadSceneSet, EveryStructuralProblemIsNamedInOneMessageInTheFilesOrder) {
     EXPECT_EQ(e.jsonPath(), "targets[0].shape");
     std::size_t at = 0;
     for (const char* part :
-         {": targets[0].shape: unbalanced parentheses", "; targets[1].path: missing required key",
-          "; targets[2].shape: missing required key", "; obstacles[0].velocity: velocity must be",
-          "; cameraFoV: half-angle field of view must be in (0, 180) degrees, is 200",
+         {": targets[0].shape: invalid WKT 'POLYGON((-0.5 -0.5,0.5 -0.5,0.5': unbalanced "
+          "parentheses",
+          "; targets[1].path: missing required key", "; targets[2].shape: missing required key",
+          "; obstacles[0].velocity: velocity must be",
+          "; cameraFoV: the half-angle θ of the field of view must be in (0, 180) degrees",
           "; cameras[0].angle: expected a number", "; cameras[2].maxAngularVelocity: missing"}) {
       const std::size_t found = message.find(part, at);
       EXPECT_NE(found, std::string::npos) << part << " (in order) in " << message;

@@ -12,6 +12,7 @@
 #include <regex>
 
 #include "geometry/ring.h"
+#include "kinematics/kinematics.h"
 #include "scene/motion_containment.h"
 #include "scene/scene_error.h"
 #include "support/test_paths.h"
@@ -159,7 +160,7 @@ TEST(LoadScene, MissingFileIsAnInputErrorNamingTheFile) {
 }
 
 // Loading is near-linear in the file's size: 100,000 keyframes or a 100,000-vertex boundary
-// load in well under a second here (README, Reliability); a quadratic step would take a
+// load in well under a second here (docs/reliability.md); a quadratic step would take a
 // minute. The bound is generous for the sanitizer build and a busy machine: it catches the
 // quadratic, not a slow day.
 TEST(SceneLoader, HundredThousandKeyframesAndBoundaryVerticesLoadInLinearTime) {
@@ -280,6 +281,81 @@ TEST(MotionContainment, AgreesWithDenseSamplingOnRandomShuttles) {
   }
   EXPECT_GT(out, 20);
   EXPECT_GT(in, 10);
+}
+
+}  // namespace
+}  // namespace camcov::scene
+
+// Paths written as POINT (a static object) and LINESTRING (back and forth along a polyline),
+// placed by the kinematics at times worked out by hand.
+namespace camcov::scene {
+namespace {
+
+const Scene& pathForms() {
+  static const Scene s =
+      loadScene(testing::testDataDir() / "path_forms" / "shuttle_and_still.json");
+  return s;
+}
+
+void expectAt(Vec2 actual, Vec2 expected) {
+  EXPECT_NEAR(actual.x, expected.x, 1e-9);
+  EXPECT_NEAR(actual.y, expected.y, 1e-9);
+}
+
+TEST(PathForms, APointPathIsStatic) {
+  const MovingObject& still = pathForms().targets[0];
+  EXPECT_EQ(still.path, (std::vector<Vec2>{{9, 5}}));
+  EXPECT_TRUE(still.isStatic());
+  const kinematics::Kinematics k(pathForms());
+  for (double t : {0.0, 3.7, 29.9})
+    expectAt(k.targetPose(0, t).reference, {9, 5});
+}
+
+TEST(PathForms, ALineStringOfTwoPointsShuttlesBetweenThem) {
+  // LINESTRING(3 11,17 11) at 2 m/s: 14 m out in 7 s, 14 m back, a lap of 14 s.
+  const kinematics::Kinematics k(pathForms());
+  const std::pair<double, Vec2> expected[] = {{0.0, {3, 11}},  {3.5, {10, 11}},  {7.0, {17, 11}},
+                                              {8.0, {15, 11}}, {10.5, {10, 11}}, {14.0, {3, 11}},
+                                              {15.0, {5, 11}}};
+  for (const auto& [t, where] : expected) {
+    SCOPED_TRACE(t);
+    expectAt(k.targetPose(1, t).reference, where);
+  }
+}
+
+TEST(PathForms, ALineStringPolylineGoesOutAlongItAndBackContinuously) {
+  // LINESTRING(15 3,15 7,12 7) at the default 1 m/s: 4 m up, 3 m left, then back, 14 s a lap.
+  const kinematics::Kinematics k(pathForms());
+  const std::pair<double, Vec2> expected[] = {{2.0, {15, 5}},  {4.0, {15, 7}}, {5.0, {14, 7}},
+                                              {7.0, {12, 7}},  {9.0, {14, 7}}, {11.0, {15, 6}},
+                                              {14.0, {15, 3}}, {16.0, {15, 5}}};
+  for (const auto& [t, where] : expected) {
+    SCOPED_TRACE(t);
+    expectAt(k.obstaclePose(0, t).reference, where);
+  }
+  // Continuous: no step of 0.01 s moves it more than 0.01 m (turning round included).
+  Vec2 before = k.obstaclePose(0, 0.0).reference;
+  for (int i = 1; i <= 2800; ++i) {
+    const Vec2 now = k.obstaclePose(0, i * 0.01).reference;
+    EXPECT_LE(geometry::distance(before, now), 0.01 + 1e-9) << "at t = " << i * 0.01;
+    before = now;
+  }
+}
+
+TEST(PathForms, ATwoPointLineStringIsThePublishedTwoPointPolygon) {
+  // The published format's back-and-forth ("POLYGON((a, b))") and the LINESTRING that says it.
+  const auto load = [](const std::string& path) {
+    const std::string text =
+        R"json({"boundary": "POLYGON((-8 -8,8 -8,8 8,-8 8))", "cameraFoV": 30,
+          "cameras": [{"pos": "POINT(0 -6)", "angle": 0, "maxVelocity": 1,
+                       "maxAngularVelocity": 1}],
+          "targets": [{"shape": "POLYGON((-1 -1,1 -1,0 1))", "path": ")json" +
+        path + R"json("}]})json";
+    return parseScene(text, "t.json");
+  };
+  EXPECT_EQ(load("LINESTRING(-4 0,4 0)").targets[0].path,
+            load("POLYGON((-4 0,4 0))").targets[0].path);
+  EXPECT_EQ(load("POINT(2 2)").targets[0].path, load("POLYGON((2 2))").targets[0].path);
 }
 
 }  // namespace
