@@ -9,9 +9,16 @@
 
 PYBIND11_MODULE(camcov, m) {
   namespace py = pybind11;
-  m.doc() = "camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian)";
+  m.doc() =
+      "camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian).\n\n"
+      "load_scene(file) -> Scene; Scene.world_at(t) -> World (targets, obstacles, boundary);\n"
+      "Visibility(world, scene.half_fovs) -> what cameras at given poses see and the reward;\n"
+      "run(scene_file, method) and simulate(scene_file, controller) -> Run; bench(...) is\n"
+      "`camcov bench`; report(folder) is `camcov report`. See docs/python.md.";
   m.attr("__version__") = camcov::kVersion;
-  py::register_exception<camcov::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<camcov::InputError>(m, "InputError", PyExc_ValueError).attr("__doc__") =
+      "Bad input (a scene, parameters, an option): the message the CLI prints with exit code 2, "
+      "naming the file and the JSON path. A ValueError.";
   camcov::python::bindScene(m);
   camcov::python::bindVisibility(m);
   camcov::python::bindRuns(m);

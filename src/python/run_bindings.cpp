@@ -62,38 +62,53 @@ class PythonObserver final : public bench::BenchObserver {
 
 void bindObservation(py::module_& m) {
   py::class_<PythonObservation>(m, "Observation",
-                                "What a controller sees at step t: the present only.")
-      .def_readonly("time", &PythonObservation::time)
-      .def_readonly("world", &PythonObservation::world)
+                                "What a controller sees at step t: the present only. "
+                                "observation.world.targets are the targets' polygons now, "
+                                "observation.cameras the team's poses, observation.seen what "
+                                "each camera sees.")
+      .def_readonly("time", &PythonObservation::time, "t, seconds.")
+      .def_readonly("world", &PythonObservation::world,
+                    "The world at t (a camcov.World: boundary, targets, obstacles).")
       .def_property_readonly(
           "cameras", [](const PythonObservation& o) { return posesToArray(o.cameras); },
-          "The cameras' poses (M, 3): x, y, yaw.")
+          "The cameras' poses (M, 3): x, y in metres, yaw in radians.")
       .def_property_readonly(
           "seen", [](const PythonObservation& o) { return segmentsToDict(o.seen); },
           "S(t) for the cameras, as the simulator measured it (see Visibility.segments).")
-      .def_property_readonly("terms",
-                             [](const PythonObservation& o) { return termsToDict(o.terms); });
+      .def_property_readonly(
+          "terms", [](const PythonObservation& o) { return termsToDict(o.terms); },
+          "coverage, utilization, repulsion and reward now (eq. (3)–(8)), a dict of floats.");
 }
 
 void bindRun(py::module_& m) {
   py::class_<records::RunRecord>(m, "Run", "One run: its metadata, summary and every step.")
-      .def_property_readonly("scene", [](const records::RunRecord& r) { return r.metadata.scene; })
-      .def_property_readonly("method",
-                             [](const records::RunRecord& r) { return r.metadata.method; })
-      .def_property_readonly("seed", [](const records::RunRecord& r) { return r.metadata.seed; })
-      .def_property_readonly("summary",
-                             [](const records::RunRecord& r) {
-                               return jsonToPython(records::runToJson(r)["summary"]);
-                             })
-      .def_property_readonly("coverage",
-                             [](const records::RunRecord& r) {
-                               Array out(static_cast<py::ssize_t>(r.steps.size()));
-                               for (std::size_t k = 0; k < r.steps.size(); ++k)
-                                 out.mutable_at(k) = r.steps[k].terms.coverage;
-                               return out;
-                             })
       .def_property_readonly(
-          "stem", [](const records::RunRecord& r) { return records::runStem(r.metadata); })
+          "scene", [](const records::RunRecord& r) { return r.metadata.scene; },
+          "The scene's name (its file's stem).")
+      .def_property_readonly(
+          "method", [](const records::RunRecord& r) { return r.metadata.method; },
+          "The method's name, e.g. 'paper'.")
+      .def_property_readonly(
+          "seed", [](const records::RunRecord& r) { return r.metadata.seed; }, "The run's seed.")
+      .def_property_readonly(
+          "summary",
+          [](const records::RunRecord& r) {
+            return jsonToPython(records::runToJson(r)["summary"]);
+          },
+          "The results file's summary as a dict: averageCoverage, averageUtilization, "
+          "minimum distances, time closer than δ, ...")
+      .def_property_readonly(
+          "coverage",
+          [](const records::RunRecord& r) {
+            Array out(static_cast<py::ssize_t>(r.steps.size()));
+            for (std::size_t k = 0; k < r.steps.size(); ++k)
+              out.mutable_at(k) = r.steps[k].terms.coverage;
+            return out;
+          },
+          "Coverage at every step, (steps,): eq. (3), the fraction of target boundary seen.")
+      .def_property_readonly(
+          "stem", [](const records::RunRecord& r) { return records::runStem(r.metadata); },
+          "<scene>-<method>-seed<N>: the results files' name without extension.")
       .def(
           "write",
           [](const records::RunRecord& r, const std::string& folder) {
@@ -148,7 +163,7 @@ void bindRuns(py::module_& m) {
       py::arg("scene_file"), py::arg("controller"), py::arg("method") = "python",
       py::arg("seed") = 1, py::arg("params") = py::none(),
       "One run with a Python controller: controller(observation) -> velocities (M, 3), or "
-      "(velocities, goals), or (velocities, goals, events) (see the README). Its results files "
+      "(velocities, goals), or (velocities, goals, events) (see docs/python.md). Its results files "
       "are a method's like any other.");
   const bench::BenchRequest defaults;  // the command line's defaults, one place for both
   m.def(

@@ -11,6 +11,7 @@
 #include "python/numpy_arrays.h"
 #include "python/python_scene.h"
 #include "scene/scene_loader.h"
+#include "util/counted.h"
 
 namespace camcov::python {
 
@@ -46,43 +47,67 @@ py::dict cameraDict(const scene::CameraSpec& c) {
 
 void bindScene(py::module_& m) {
   py::class_<kinematics::World>(m, "World",
-                                "The world at one instant: every polygon in world "
-                                "coordinates, rings open and counter-clockwise.")
-      .def_readonly("time", &kinematics::World::time)
-      .def_property_readonly("boundary",
-                             [](const kinematics::World& w) { return ringToArray(w.boundary); })
-      .def_property_readonly("targets",
-                             [](const kinematics::World& w) { return ringsToList(w.targets); })
-      .def_property_readonly("obstacles",
-                             [](const kinematics::World& w) { return ringsToList(w.obstacles); })
+                                "The world at one instant (Scene.world_at(t), "
+                                "Observation.world): every polygon in world coordinates, metres, "
+                                "as an (n, 2) array of its vertices, ring open (the first vertex "
+                                "is not repeated) and counter-clockwise. Pass it to "
+                                "camcov.Visibility to see what cameras see.")
+      .def_readonly("time", &kinematics::World::time, "t, seconds.")
+      .def_property_readonly(
+          "boundary", [](const kinematics::World& w) { return ringToArray(w.boundary); },
+          "The boundary B, (n, 2): fixed, occludes, contains everything.")
+      .def_property_readonly(
+          "targets", [](const kinematics::World& w) { return ringsToList(w.targets); },
+          "The targets present at t, a list of (n, 2) arrays: their boundaries are what the "
+          "cameras cover (target i here is the scene's target target_ids[i]).")
+      .def_property_readonly(
+          "obstacles", [](const kinematics::World& w) { return ringsToList(w.obstacles); },
+          "The obstacles present at t, a list of (n, 2) arrays: they occlude and are not "
+          "covered (obstacle i here is the scene's obstacle obstacle_ids[i]).")
       // Recorded tracks come and go: which of the scene's objects each ring is.
-      .def_property_readonly("target_ids",
-                             [](const kinematics::World& w) {
-                               std::vector<std::uint32_t> ids;
-                               for (std::size_t i = 0; i < w.targets.size(); ++i)
-                                 ids.push_back(kinematics::targetId(w, i));
-                               return ids;
-                             })
-      .def_property_readonly("obstacle_ids", [](const kinematics::World& w) {
-        std::vector<std::uint32_t> ids;
-        for (std::size_t i = 0; i < w.obstacles.size(); ++i)
-          ids.push_back(kinematics::obstacleId(w, i));
-        return ids;
-      });
+      .def_property_readonly(
+          "target_ids",
+          [](const kinematics::World& w) {
+            std::vector<std::uint32_t> ids;
+            for (std::size_t i = 0; i < w.targets.size(); ++i)
+              ids.push_back(kinematics::targetId(w, i));
+            return ids;
+          },
+          "For each ring of `targets`, its index in the scene file's "
+          "targets (recorded people come and go; otherwise 0, 1, 2, ...).")
+      .def_property_readonly(
+          "obstacle_ids",
+          [](const kinematics::World& w) {
+            std::vector<std::uint32_t> ids;
+            for (std::size_t i = 0; i < w.obstacles.size(); ++i)
+              ids.push_back(kinematics::obstacleId(w, i));
+            return ids;
+          },
+          "For each ring of `obstacles`, its index in the scene file's obstacles.");
 
   py::class_<PythonScene, std::shared_ptr<PythonScene>>(
       m, "Scene", "A validated scene (camcov.load_scene, camcov.parse_scene).")
-      .def_property_readonly("name", [](const PythonScene& s) { return s.scene.name; })
-      .def_property_readonly("description",
-                             [](const PythonScene& s) { return s.scene.description; })
-      .def_property_readonly("file", [](const PythonScene& s) { return s.file; })
-      .def_property_readonly("hash", [](const PythonScene& s) { return s.hash; })
-      .def_property_readonly("boundary",
-                             [](const PythonScene& s) { return ringToArray(s.scene.boundary); })
-      .def_property_readonly("target_count",
-                             [](const PythonScene& s) { return s.scene.targets.size(); })
-      .def_property_readonly("obstacle_count",
-                             [](const PythonScene& s) { return s.scene.obstacles.size(); })
+      .def_property_readonly(
+          "name", [](const PythonScene& s) { return s.scene.name; },
+          "The file's stem, e.g. 'dynamic9': how runs and reports name the scene.")
+      .def_property_readonly(
+          "description", [](const PythonScene& s) { return s.scene.description; },
+          "The file's optional one-line description ('' without one).")
+      .def_property_readonly(
+          "file", [](const PythonScene& s) { return s.file; },
+          "The path it was loaded from ('' for camcov.parse_scene).")
+      .def_property_readonly(
+          "hash", [](const PythonScene& s) { return s.hash; },
+          "FNV-1a hash of the file's bytes, as batch.json records it (0 for parse_scene).")
+      .def_property_readonly(
+          "boundary", [](const PythonScene& s) { return ringToArray(s.scene.boundary); },
+          "The boundary B, (n, 2) in metres, open and counter-clockwise.")
+      .def_property_readonly(
+          "target_count", [](const PythonScene& s) { return s.scene.targets.size(); },
+          "How many targets the file has (world_at(t).targets holds those present at t).")
+      .def_property_readonly(
+          "obstacle_count", [](const PythonScene& s) { return s.scene.obstacles.size(); },
+          "How many obstacles the file has.")
       .def_property_readonly(
           "cameras",
           [](const PythonScene& s) {
@@ -91,19 +116,26 @@ void bindScene(py::module_& m) {
               out.append(cameraDict(c));
             return out;
           },
-          "Each camera's initial pose (x, y, yaw), limits and half-angle θ_j (radians).")
-      .def_property_readonly("initial_poses",
-                             [](const PythonScene& s) {
-                               std::vector<geometry::Pose> poses;
-                               for (const auto& c : s.scene.cameras)
-                                 poses.push_back(c.initial);
-                               return posesToArray(poses);
-                             })
-      .def_property_readonly("half_fovs",
-                             [](const PythonScene& s) {
-                               const auto thetas = scene::halfFovs(s.scene);
-                               return Array(static_cast<py::ssize_t>(thetas.size()), thetas.data());
-                             })
+          "One dict per camera: pose (x m, y m, yaw rad), max_velocity (m/s), "
+          "max_angular_velocity (rad/s), half_fov (the half-angle θ_j, radians: the field of "
+          "view is 2θ_j wide; the file's cameraFoV is θ in degrees).")
+      .def_property_readonly(
+          "initial_poses",
+          [](const PythonScene& s) {
+            std::vector<geometry::Pose> poses;
+            for (const auto& c : s.scene.cameras)
+              poses.push_back(c.initial);
+            return posesToArray(poses);
+          },
+          "The cameras' poses at t = 0, (M, 3): x, y in metres, yaw in radians (the file's "
+          "angle is in degrees).")
+      .def_property_readonly(
+          "half_fovs",
+          [](const PythonScene& s) {
+            const auto thetas = scene::halfFovs(s.scene);
+            return Array(static_cast<py::ssize_t>(thetas.size()), thetas.data());
+          },
+          "Each camera's half-angle θ_j, radians, (M,): what camcov.Visibility takes.")
       .def(
           "world_at",
           [](const PythonScene& s, double t) {
@@ -113,11 +145,14 @@ void bindScene(py::module_& m) {
                   fmt::format("world_at: t = {}: expected a finite time within ±1e9 s", t));
             return s.kinematics.worldAt(t);
           },
-          py::arg("t"), "The world at time t (SPEC section 2's motion).")
+          py::arg("t"),
+          "The world at time t, seconds (a camcov.World: boundary, targets, obstacles as "
+          "they stand then).")
       .def("__repr__", [](const PythonScene& s) {
-        return fmt::format("<camcov.Scene {}: {} targets, {} obstacles, {} cameras>", s.scene.name,
-                           s.scene.targets.size(), s.scene.obstacles.size(),
-                           s.scene.cameras.size());
+        return fmt::format("<camcov.Scene {}: {}, {}, {}>", s.scene.name,
+                           counted(s.scene.targets.size(), "target", "targets"),
+                           counted(s.scene.obstacles.size(), "obstacle", "obstacles"),
+                           counted(s.scene.cameras.size(), "camera", "cameras"));
       });
 
   m.def(

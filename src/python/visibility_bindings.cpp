@@ -127,7 +127,10 @@ void bindVisibility(py::module_& m) {
                          "Visibility and reward at one instant for cameras with the given "
                          "half-angles θ_j (radians): scene.half_fovs for the scene's team.")
       .def(py::init(&makeVisibility), py::arg("world"), py::arg("half_fovs"),
-           py::arg("params") = py::none())
+           py::arg("params") = py::none(),
+           "Visibility(world, half_fovs, params=None): the world (a camcov.World), one "
+           "half-angle θ_j in radians per camera, and parameters ({'reward.lambda1': ...}, as "
+           "camcov.parameters takes them) for the reward's weights.")
       .def(
           "segments",
           [](Visibility& v, const py::handle& poses) {
