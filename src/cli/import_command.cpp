@@ -16,6 +16,7 @@
 #include "records/atomic_file.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
+#include "util/counted.h"
 #include "util/input_error.h"
 
 namespace camcov::cli {
@@ -39,9 +40,10 @@ int writeImported(const import::BuiltScene& built, const ImportOptions& o) {
   for (const auto& note : built.notes)
     std::cerr << "note: " << note << "\n";
   records::writeFileAtomically(o.out, text);
-  std::cout << fmt::format(
-      "{}: {} targets over {:.1f} s (at most {} at once), {} obstacles, {} cameras\n", o.out,
-      s.targets.size(), built.duration, built.mostAtOnce, s.obstacles.size(), s.cameras.size());
+  std::cout << fmt::format("{}: {} over {:.1f} s (at most {} at once), {}, {}\n", o.out,
+                           counted(s.targets.size(), "target", "targets"), built.duration,
+                           built.mostAtOnce, counted(s.obstacles.size(), "obstacle", "obstacles"),
+                           counted(s.cameras.size(), "camera", "cameras"));
   return 0;
 }
 

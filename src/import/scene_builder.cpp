@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "geometry/ring.h"
+#include "util/counted.h"
 #include "util/input_error.h"
 
 namespace camcov::import {
@@ -182,18 +183,19 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
   if (ballsLeftOut > 0)
     built.notes.push_back("the ball is left out (--ball target|obstacle keeps it)");
   if (outside > 0)
-    built.notes.push_back(fmt::format("{} tracks have no sample in the window", outside));
+    built.notes.push_back(
+        fmt::format("{} no sample in the window", counted(outside, "track has", "tracks have")));
   if (split > 0) {
     built.notes.push_back(
-        fmt::format("{} tracks vanish for more than {} s and come back: each return is a new "
-                    "target (id#2, ...)",
-                    split, o.maxGap));
+        fmt::format("{} for more than {} s and {} back: each return is a new target (id#2, ...)",
+                    counted(split, "track vanishes", "tracks vanish"), o.maxGap,
+                    split == 1 ? "comes" : "come"));
   }
   if (crossing > 0) {
     built.notes.push_back(fmt::format(
-        "{} tracks cross a wall (recording noise): kept as recorded; walls occlude and block "
-        "cameras but do not stop people",
-        crossing));
+        "{} a wall (recording noise): kept as recorded; walls occlude and block cameras but do "
+        "not stop people",
+        counted(crossing, "track crosses", "tracks cross")));
   }
 
   // The boundary: the box around everything plus the margin, and on a pitch at least the pitch

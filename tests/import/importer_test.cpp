@@ -146,11 +146,23 @@ TEST(ImportEthUcy, ATrackThatComesBackAfterAGapIsANewTargetAndSaysSo) {
   const auto r = runCamcov("import ethucy " + (dir / "gap").string() + " --fps 25 -o " +
                            (dir / "gap.json").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("1 tracks vanish for more than 1 s and come back"), std::string::npos)
+  EXPECT_NE(r.err.find("1 track vanishes for more than 1 s and comes back"), std::string::npos)
       << r.err;
   const auto scene = nlohmann::json::parse(readFile(dir / "gap.json"));
   ASSERT_EQ(scene["targets"].size(), 2u);
   EXPECT_NEAR(scene["targets"][1]["track"]["samples"][0][0].get<double>(), 4.0, 1e-9);
+}
+
+TEST(ImportEthUcy, OnePersonAndOneCameraAreCountedInTheSingular) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "one");
+  std::ofstream(dir / "one" / "obsmat.txt") << "1 7 0 0 1 0 0 0\n11 7 1 0 1 0 0 0\n";
+  const auto r = runCamcov("import ethucy " + (dir / "one").string() + " --fps 25 --cameras 1 -o " +
+                           (dir / "one.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find(": 1 target over 0.4 s (at most 1 at once), 0 obstacles, 1 camera\n"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
