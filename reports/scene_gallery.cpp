@@ -215,16 +215,19 @@ std::string objects(const WorldToSvg& map, const std::vector<scene::MovingObject
   return paths + shapes;
 }
 
-// "field of view 60°", or the range of a team of unlike cameras: "fields of view 40°–90°".
+// "field of view 60° (half-angle θ 30°)", or the range of a team of unlike cameras: "fields of
+// view 40°–90° (θ 20°–45°)". The file's cameraFoV is θ, half the width, so both are named.
 std::string fieldsOfView(const scene::Scene& s) {
   double lo = s.cameras.front().halfFov, hi = lo;
   for (const auto& c : s.cameras) {
     lo = std::min(lo, c.halfFov);
     hi = std::max(hi, c.halfFov);
   }
-  const auto degrees = [](double halfFov) { return 2 * halfFov * 180.0 / std::numbers::pi; };
-  if (lo == hi) return fmt::format("field of view {:g}°", degrees(lo));
-  return fmt::format("fields of view {:g}°–{:g}°", degrees(lo), degrees(hi));
+  const auto degrees = [](double halfFov) { return halfFov * 180.0 / std::numbers::pi; };
+  if (lo == hi)
+    return fmt::format("field of view {:g}° (half-angle θ {:g}°)", 2 * degrees(lo), degrees(lo));
+  return fmt::format("fields of view {:g}°–{:g}° (half-angles θ {:g}°–{:g}°)", 2 * degrees(lo),
+                     2 * degrees(hi), degrees(lo), degrees(hi));
 }
 
 // Field-of-view wedges and camera bodies; their labels go to `labels`.
