@@ -3,7 +3,7 @@
 // a change that breaks determinism between two runs of the same build. When a change is meant
 // to change results, update them with
 //   scripts/update_golden_runs.sh
-// and say in the commit what changed and why (README, "Development").
+// and say in the commit what changed and why (docs/reliability.md, "Development").
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
