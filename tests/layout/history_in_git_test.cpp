@@ -18,23 +18,30 @@ namespace fs = std::filesystem;
 std::string issueNumbers(const fs::path& root) {
   const std::regex number(R"(\bissues?\s+#?[0-9]+)", std::regex::icase);
   std::string found;
-  for (const char* top : {"src", "viz", "reports", "tests", "examples", "scripts", "docs"}) {
+  const auto scan = [&](const fs::path& file) {
+    const std::string ext = file.extension().string();
+    if (ext != ".h" && ext != ".cpp" && ext != ".py" && ext != ".js" && ext != ".sh" &&
+        ext != ".md" && ext != ".txt" && ext != ".css" && ext != ".html" && ext != ".json" &&
+        ext != ".toml" && file.filename() != "run")
+      return;
+    std::ifstream in(file);
+    int line = 0;
+    for (std::string text; std::getline(in, text);) {
+      ++line;
+      if (std::regex_search(text, number))
+        found +=
+            fs::relative(file, root).string() + ":" + std::to_string(line) + ": " + text + "\n";
+    }
+  };
+  for (const char* top :
+       {"src", "viz", "reports", "tests", "examples", "scripts", "docs", "scenes", ".ci"}) {
     if (!fs::exists(root / top)) continue;
     for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-      const std::string ext = entry.path().extension().string();
-      if (!entry.is_regular_file() ||
-          (ext != ".h" && ext != ".cpp" && ext != ".py" && ext != ".js" && ext != ".sh" &&
-           ext != ".md" && ext != ".txt" && ext != ".css" && ext != ".html"))
-        continue;
-      std::ifstream in(entry.path());
-      int line = 0;
-      for (std::string text; std::getline(in, text);) {
-        ++line;
-        if (std::regex_search(text, number))
-          found += fs::relative(entry.path(), root).string() + ":" + std::to_string(line) + ": " +
-                   text + "\n";
-      }
+      if (entry.is_regular_file()) scan(entry.path());
     }
+  }
+  for (const char* file : {"README.md", "CMakeLists.txt"}) {
+    if (fs::exists(root / file)) scan(root / file);
   }
   return found;
 }
@@ -52,6 +59,15 @@ TEST(HistoryInGit, APlantedIssueNumberIsFound) {
   EXPECT_EQ(issueNumbers(dir.path()),
             "src/sim/a.h:2: // as Iss"
             "ue 7 asked\n");
+  // A scene's description and the README are read too.
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "s.json") << "{\"description\": \"for iss"
+                                              "ues #12\"}\n";
+  std::ofstream(dir / "README.md") << "see Iss"
+                                      "ue 3\n";
+  const std::string found = issueNumbers(dir.path());
+  EXPECT_NE(found.find("scenes/s.json:1:"), std::string::npos) << found;
+  EXPECT_NE(found.find("README.md:1:"), std::string::npos) << found;
 }
 
 }  // namespace
