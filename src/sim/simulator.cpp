@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "kinematics/kinematics.h"
@@ -108,139 +109,192 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
 
 }  // namespace
 
-RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
-                    control::Controller& controller, Recorder& recorder) {
-  const kinematics::Kinematics kinematics(scene);
-  reward::RewardModel measure(params.reward, scene::halfFovs(scene));
-  safety::SafetyFilter safety(scene, params);
-  const safety::StepAccounting accounting(kinematics, params.sim.delta);
-  const double dt = params.sim.dt;
-  const int steps = static_cast<int>(std::llround(params.sim.duration / dt));
+// Everything a run keeps between its instants.
+struct Simulation::State {
+  State(const scene::Scene& scene, const params::Parameters& params)
+      : scene(scene),
+        kinematics(scene),
+        measure(params.reward, scene::halfFovs(scene)),
+        safety(scene, params),
+        accounting(kinematics, params.sim.delta),
+        dt(params.sim.dt),
+        comesAndGoes(scene.hasPresenceWindows()) {}
 
-  std::vector<geometry::Pose> cameras;
-  for (const auto& c : scene.cameras)
-    cameras.push_back(c.initial);
-  std::vector<kinematics::CameraCommand> commands(cameras.size());
-  std::vector<char> nonFiniteBefore(cameras.size(), 0);  // was camera j's last command so?
-  std::vector<geometry::Vec2> velocities(cameras.size());
-  std::vector<std::optional<geometry::Pose>> goals(cameras.size());
-  std::vector<control::ControlEvent> events;
-  std::vector<Contact> contacts(cameras.size());
+  const scene::Scene& scene;
+  const kinematics::Kinematics kinematics;
+  reward::RewardModel measure;
+  safety::SafetyFilter safety;
+  const safety::StepAccounting accounting;
+  const double dt;
+  const bool comesAndGoes;
+
   kinematics::World world;
+  StepRecord record;  // the present instant's, as measured so far
+  std::vector<kinematics::CameraCommand> commands;
+  std::vector<char> nonFiniteBefore;  // was camera j's last command so?
+  std::vector<geometry::Vec2> velocities;
+  std::vector<Contact> contacts;
   safety::Sample previousSample;
-
-  RunSummary summary;
-  summary.duration = steps * dt;
-  const bool comesAndGoes = scene.hasPresenceWindows();
   std::vector<std::uint32_t> presentBefore;  // the targets present one step before
   int intervalsWithoutTargets = 0;
-  summary.minObjectDistance = summary.minCameraDistance = kInf;
   reward::RewardTerms previous;
-  for (int k = 0; k <= steps; ++k) {
-    throwIfInterrupted();     // a caller that can be interrupted (Python) stops within a step
-    const double t = k * dt;  // not accumulated: no drift over long runs
-    kinematics.worldAt(t, world);
-    measure.setWorld(world);
+  RunSummary summary;
+};
 
-    StepRecord record;
-    record.index = k;
-    record.time = t;
-    record.terms = measure.evaluate(cameras);
-    if (comesAndGoes) {
-      record.targetsPresent = static_cast<int>(world.targets.size());
-      if (world.targets.empty()) ++summary.stepsWithoutTargets;
-    }
-    safety::Sample sample = accounting.sample(world, cameras);
-    record.minObjectDistance = sample.minObjectDistance;
-    record.minCameraDistance = sample.minCameraDistance;
-    events.clear();
-    if (k == 0) {
-      record.minObjectDistanceInStep = record.minObjectDistance;
-      record.minCameraDistanceInStep = record.minCameraDistance;
-      summary.minObjectDistance = record.minObjectDistance;
-      summary.minCameraDistance = record.minCameraDistance;
+Simulation::Simulation(const scene::Scene& scene, const params::Parameters& params)
+    : state_(std::make_unique<State>(scene, params)),
+      steps_(static_cast<int>(std::llround(params.sim.duration / params.sim.dt))) {
+  for (const auto& c : scene.cameras)
+    cameras_.push_back(c.initial);
+  State& s = *state_;
+  s.commands.resize(cameras_.size());
+  s.nonFiniteBefore.assign(cameras_.size(), 0);
+  s.velocities.resize(cameras_.size());
+  s.contacts.resize(cameras_.size());
+  s.summary.duration = steps_ * s.dt;
+  s.summary.minObjectDistance = s.summary.minCameraDistance = kInf;
+  measure();
+}
+
+Simulation::~Simulation() = default;
+
+double Simulation::time() const {
+  return k_ * state_->dt;
+}  // not accumulated: no drift
+
+control::Observation Simulation::observation() const {
+  const State& s = *state_;
+  return {time(), s.world, cameras_, s.measure.segments(), s.record.terms, &s.measure};
+}
+
+// Measures instant k_: the world, the terms, the distances, the step that led here (contacts,
+// in continuous time) and the targets that came or went.
+void Simulation::measure() {
+  State& s = *state_;
+  const int k = k_;
+  const double t = time();
+  s.kinematics.worldAt(t, s.world);
+  s.measure.setWorld(s.world);
+
+  StepRecord& record = s.record;
+  record = StepRecord{};
+  record.index = k;
+  record.time = t;
+  record.terms = s.measure.evaluate(cameras_);
+  RunSummary& summary = s.summary;
+  if (s.comesAndGoes) {
+    record.targetsPresent = static_cast<int>(s.world.targets.size());
+    if (s.world.targets.empty()) ++summary.stepsWithoutTargets;
+  }
+  safety::Sample sample = s.accounting.sample(s.world, cameras_);
+  record.minObjectDistance = sample.minObjectDistance;
+  record.minCameraDistance = sample.minCameraDistance;
+  events_.clear();
+  if (k == 0) {
+    record.minObjectDistanceInStep = record.minObjectDistance;
+    record.minCameraDistanceInStep = record.minCameraDistance;
+    summary.minObjectDistance = record.minObjectDistance;
+    summary.minCameraDistance = record.minCameraDistance;
+  } else {
+    // The layer's verdicts are still those of the step's start: apply() comes in command().
+    accountStep(s.accounting.measure(s.previousSample, sample), s.safety.verdicts(),
+                s.previousSample.time, s.contacts, record, summary, events_);
+    if (s.comesAndGoes && (s.presentBefore.empty() || s.world.targets.empty())) {
+      ++s.intervalsWithoutTargets;  // nothing to cover at one end: left out of the averages
     } else {
-      // The layer's verdicts are still those of the step's start: apply() comes below.
-      accountStep(accounting.measure(previousSample, sample), safety.verdicts(),
-                  previousSample.time, contacts, record, summary, events);
-      if (comesAndGoes && (presentBefore.empty() || world.targets.empty())) {
-        ++intervalsWithoutTargets;  // nothing to cover at one end: left out of the averages
-      } else {
-        // trapezoid rule, eq. (4)
-        summary.averageCoverage += 0.5 * (previous.coverage + record.terms.coverage) * dt;
-        summary.averageUtilization += 0.5 * (previous.utilization + record.terms.utilization) * dt;
-        summary.averageReward += 0.5 * (previous.reward + record.terms.reward) * dt;
-      }
-    }
-    if (comesAndGoes) {
-      // Entering and leaving, as events of this step (ids ascend in both lists).
-      const auto& now = world.targetIds;
-      for (const std::uint32_t id : now) {
-        if (!std::binary_search(presentBefore.begin(), presentBefore.end(), id) && k > 0)
-          events.push_back({t,
-                            std::string(kTargetAppears),
-                            -1,
-                            "target " + std::to_string(id) + " enters the scene",
-                            {},
-                            ""});
-      }
-      for (const std::uint32_t id : presentBefore) {
-        if (!std::binary_search(now.begin(), now.end(), id))
-          events.push_back({t,
-                            std::string(kTargetLeaves),
-                            -1,
-                            "target " + std::to_string(id) + " leaves the scene",
-                            {},
-                            ""});
-      }
-      presentBefore = now;
-    }
-    previous = record.terms;
-    previousSample = std::move(sample);
-
-    if (k < steps) {
-      // The controller acts on the present; its events belong to this step's record.
-      controller.control({t, world, cameras, measure.segments(), record.terms, &measure}, commands);
-      for (std::size_t j = 0; j < cameras.size(); ++j) {
-        const bool finite = isFinite(commands[j]);
-        if (!finite && !nonFiniteBefore[j]) {
-          events.push_back(
-              {t,
-               std::string(kNonFiniteCommand),
-               static_cast<int>(j),
-               fmt::format("camera {}'s command (vx {}, vy {}, yaw rate {}) is not finite: it "
-                           "holds still",
-                           j, commands[j].velocity.x, commands[j].velocity.y,
-                           commands[j].angularVelocity),
-               {},
-               ""});
-        }
-        nonFiniteBefore[j] = !finite;
-        commands[j] = saturate(commands[j], scene.cameras[j]);
-        velocities[j] = commands[j].velocity;
-      }
-      safety.apply(world, cameras, velocities);
-    }
-    controller.takeEvents(events);
-    for (std::size_t j = 0; j < cameras.size(); ++j)
-      goals[j] = controller.goal(j);
-    record.cameras = cameras;
-    record.goals = goals;
-    record.events = events;
-    recorder.step(record);
-    if (k == steps) break;
-
-    for (std::size_t j = 0; j < cameras.size(); ++j) {
-      geometry::Vec2 next = cameras[j].position() + velocities[j] * dt;
-      if (moveInside(world.boundary, cameras[j].position(), next)) ++summary.boundaryClamps;
-      cameras[j] = {next.x, next.y,
-                    geometry::wrapAngle(cameras[j].yaw + commands[j].angularVelocity * dt)};
+      // trapezoid rule, eq. (4)
+      const double dt = s.dt;
+      summary.averageCoverage += 0.5 * (s.previous.coverage + record.terms.coverage) * dt;
+      summary.averageUtilization += 0.5 * (s.previous.utilization + record.terms.utilization) * dt;
+      summary.averageReward += 0.5 * (s.previous.reward + record.terms.reward) * dt;
     }
   }
-  summary.steps = steps + 1;
-  summary.finalCoverage = previous.coverage;
+  if (s.comesAndGoes) {
+    // Entering and leaving, as events of this step (ids ascend in both lists).
+    const auto& now = s.world.targetIds;
+    for (const std::uint32_t id : now) {
+      if (!std::binary_search(s.presentBefore.begin(), s.presentBefore.end(), id) && k > 0)
+        events_.push_back({t,
+                           std::string(kTargetAppears),
+                           -1,
+                           "target " + std::to_string(id) + " enters the scene",
+                           {},
+                           ""});
+    }
+    for (const std::uint32_t id : s.presentBefore) {
+      if (!std::binary_search(now.begin(), now.end(), id))
+        events_.push_back({t,
+                           std::string(kTargetLeaves),
+                           -1,
+                           "target " + std::to_string(id) + " leaves the scene",
+                           {},
+                           ""});
+    }
+    s.presentBefore = now;
+  }
+  s.previous = record.terms;
+  s.previousSample = std::move(sample);
+}
+
+void Simulation::command(std::span<const kinematics::CameraCommand> commands) {
+  if (atLastInstant() || finished())
+    throw std::logic_error("Simulation::command: the last instant takes no commands");
+  State& s = *state_;
+  const double t = time();
+  for (std::size_t j = 0; j < cameras_.size(); ++j) {
+    kinematics::CameraCommand u = j < commands.size() ? commands[j] : kinematics::CameraCommand{};
+    const bool finite = isFinite(u);
+    if (!finite && !s.nonFiniteBefore[j]) {
+      events_.push_back(
+          {t,
+           std::string(kNonFiniteCommand),
+           static_cast<int>(j),
+           fmt::format("camera {}'s command (vx {}, vy {}, yaw rate {}) is not finite: it "
+                       "holds still",
+                       j, u.velocity.x, u.velocity.y, u.angularVelocity),
+           {},
+           ""});
+    }
+    s.nonFiniteBefore[j] = !finite;
+    s.commands[j] = saturate(u, s.scene.cameras[j]);
+    s.velocities[j] = s.commands[j].velocity;
+  }
+  s.safety.apply(s.world, cameras_, s.velocities);
+}
+
+void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, Recorder& recorder) {
+  if (finished()) throw std::logic_error("Simulation::advance: the run is finished");
+  State& s = *state_;
+  StepRecord& record = s.record;
+  record.cameras = cameras_;
+  record.goals = goals;
+  record.events = events_;
+  recorder.step(record);
+  if (k_ == steps_) {
+    ++k_;
+    return;
+  }
+  for (std::size_t j = 0; j < cameras_.size(); ++j) {
+    geometry::Vec2 next = cameras_[j].position() + s.velocities[j] * s.dt;
+    if (moveInside(s.world.boundary, cameras_[j].position(), next)) ++s.summary.boundaryClamps;
+    cameras_[j] = {next.x, next.y,
+                   geometry::wrapAngle(cameras_[j].yaw + s.commands[j].angularVelocity * s.dt)};
+  }
+  // The commands were for this step only: a caller that gives none next holds still.
+  std::fill(s.commands.begin(), s.commands.end(), kinematics::CameraCommand{});
+  std::fill(s.velocities.begin(), s.velocities.end(), geometry::Vec2{});
+  ++k_;
+  measure();
+}
+
+RunSummary Simulation::summary() const {
+  const State& s = *state_;
+  RunSummary summary = s.summary;
+  if (!finished()) return summary;
+  summary.steps = steps_ + 1;
+  summary.finalCoverage = s.previous.coverage;
   // Without gaps this is steps · dt exactly, so runs without tracks keep their bytes.
-  const double measured = (steps - intervalsWithoutTargets) * dt;
+  const double measured = (steps_ - s.intervalsWithoutTargets) * s.dt;
   if (measured > 0.0) {
     summary.averageCoverage /= measured;
     summary.averageUtilization /= measured;
@@ -248,11 +302,31 @@ RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
   } else if (summary.duration > 0.0) {
     summary.averageCoverage = summary.averageUtilization = summary.averageReward = 0.0;
   } else {
-    summary.averageCoverage = previous.coverage;
-    summary.averageUtilization = previous.utilization;
-    summary.averageReward = previous.reward;
+    summary.averageCoverage = s.previous.coverage;
+    summary.averageUtilization = s.previous.utilization;
+    summary.averageReward = s.previous.reward;
   }
   return summary;
+}
+
+RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
+                    control::Controller& controller, Recorder& recorder) {
+  Simulation simulation(scene, params);
+  std::vector<kinematics::CameraCommand> commands(scene.cameras.size());
+  std::vector<std::optional<geometry::Pose>> goals(scene.cameras.size());
+  while (!simulation.finished()) {
+    throwIfInterrupted();  // a caller that can be interrupted (Python) stops within a step
+    if (!simulation.atLastInstant()) {
+      // The controller acts on the present; its events belong to this step's record.
+      controller.control(simulation.observation(), commands);
+      simulation.command(commands);
+    }
+    controller.takeEvents(simulation.events());
+    for (std::size_t j = 0; j < goals.size(); ++j)
+      goals[j] = controller.goal(j);
+    simulation.advance(goals, recorder);
+  }
+  return simulation.summary();
 }
 
 }  // namespace camcov::sim

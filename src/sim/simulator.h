@@ -5,6 +5,7 @@
 // step is measured — at the samples and, for distances and contacts, in continuous time over
 // the step — and handed to a recorder. Computation takes no simulated time, so a run depends
 // only on its inputs.
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -84,6 +85,51 @@ class Recorder {
   virtual void step(const StepRecord& record) = 0;
 };
 
+// One run, a step at a time, for callers that choose the commands themselves (a learning
+// environment, an interactive page) as well as for simulate(). At each instant t_k = k · dt,
+// k = 0 … steps: observation() is the present, measured; command() takes the cameras'
+// commands for [t_k, t_k+1) (none at the last instant); events() holds what the simulator
+// raised at t_k, to which the caller may append (a controller's events); advance() hands the
+// instant to the recorder, then moves the cameras and measures t_k+1.
+class Simulation {
+ public:
+  Simulation(const scene::Scene& scene, const params::Parameters& params);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  int index() const { return k_; }
+  double time() const;
+  int steps() const { return steps_; }
+  // The last instant is recorded without commands; after it the run is finished.
+  bool atLastInstant() const { return k_ == steps_; }
+  bool finished() const { return k_ > steps_; }
+
+  // The present instant as a controller sees it; valid until advance().
+  control::Observation observation() const;
+  std::span<const geometry::Pose> cameras() const { return cameras_; }
+  // Commands for the present instant: a non-finite one is an event and holds the camera
+  // still, each is saturated to its camera's limits (constraint 3 of Problem 2.2) and passed
+  // through the safety layer. Not at the last instant; once per instant.
+  void command(std::span<const kinematics::CameraCommand> commands);
+  std::vector<control::ControlEvent>& events() { return events_; }
+  // Records the present instant (with each camera's goal, if any) and, unless it is the last,
+  // integrates ṗ_j = u_j over dt (kept inside the boundary) and measures the next instant.
+  void advance(std::span<const std::optional<geometry::Pose>> goals, Recorder& recorder);
+  // The whole run's; the averages only once finished().
+  RunSummary summary() const;
+
+ private:
+  struct State;
+  void measure();
+  std::unique_ptr<State> state_;
+  int k_ = 0;
+  int steps_ = 0;
+  std::vector<geometry::Pose> cameras_;
+  std::vector<control::ControlEvent> events_;
+};
+
+// A whole run with `controller` choosing the commands: Simulation stepped to the end.
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
                     control::Controller& controller, Recorder& recorder);
 

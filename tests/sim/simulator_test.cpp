@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "support/small_worlds.h"
 
@@ -203,6 +206,83 @@ TEST(Simulate, MeasuresCollisionTimeBelowDelta) {
   EXPECT_NEAR(summary.objectCollisionTime, 1.5, 1e-9);
   EXPECT_TRUE(std::isinf(summary.minCameraDistance));
   EXPECT_EQ(summary.cameraCollisionTime, 0.0);
+}
+
+// Records every field of every step, to compare two runs byte for byte.
+class FingerprintRecorder final : public Recorder {
+ public:
+  void step(const StepRecord& r) override {
+    char line[256];
+    std::snprintf(line, sizeof line, "%d %a %a %a %a %zu", r.index, r.time, r.terms.coverage,
+                  r.terms.reward, r.minObjectDistanceInStep, r.events.size());
+    text += line;
+    for (const auto& c : r.cameras) {
+      std::snprintf(line, sizeof line, " %a,%a,%a", c.x, c.y, c.yaw);
+      text += line;
+    }
+    text += "\n";
+  }
+  std::string text;
+};
+
+TEST(Simulation, SteppedByHandIsTheSameRunAsSimulate) {
+  params::Parameters p;
+  p.sim.duration = 1.5;
+  const kinematics::CameraCommand u{{0.7, -0.4}, 0.3};
+  ConstantController a(u), b(u);
+  FingerprintRecorder whole, stepped;
+  const RunSummary expected = simulate(oneTargetScene(), p, a, whole);
+
+  Simulation simulation(oneTargetScene(), p);
+  std::vector<kinematics::CameraCommand> commands(2);
+  std::vector<std::optional<geometry::Pose>> goals(2, geometry::Pose{1, 2, 3});
+  int instants = 0;
+  while (!simulation.finished()) {
+    EXPECT_DOUBLE_EQ(simulation.observation().time, instants * p.sim.dt);
+    if (!simulation.atLastInstant()) {
+      b.control(simulation.observation(), commands);
+      simulation.command(commands);
+    }
+    b.takeEvents(simulation.events());
+    simulation.advance(goals, stepped);
+    ++instants;
+  }
+  EXPECT_EQ(instants, 16);
+  EXPECT_EQ(stepped.text, whole.text);
+  const RunSummary got = simulation.summary();
+  EXPECT_EQ(got.steps, expected.steps);
+  EXPECT_EQ(got.averageCoverage, expected.averageCoverage);
+  EXPECT_EQ(got.averageReward, expected.averageReward);
+  EXPECT_EQ(got.finalCoverage, expected.finalCoverage);
+  EXPECT_EQ(got.minObjectDistance, expected.minObjectDistance);
+}
+
+TEST(Simulation, ACallerCommandsEachStepAndWithoutCommandsTheCamerasHoldStill) {
+  params::Parameters p;
+  p.sim.duration = 0.3;
+  p.safety.enabled = false;
+  Simulation simulation(oneTargetScene(), p);
+  FingerprintRecorder recorder;
+  const geometry::Pose start = simulation.cameras()[1];
+  // Camera 1 (2 m/s, 1 rad/s) asked for 5 m/s along x and 0.5 rad/s: saturated to 2 m/s.
+  const std::vector<kinematics::CameraCommand> fast{{{0, 0}, 0}, {{5, 0}, 0.5}};
+  simulation.command(fast);
+  simulation.advance({}, recorder);
+  EXPECT_NEAR(simulation.cameras()[1].x - start.x, 2.0 * p.sim.dt, 1e-12);
+  EXPECT_NEAR(simulation.cameras()[1].yaw - start.yaw, 0.5 * p.sim.dt, 1e-12);
+  // No command this step: the camera stays where it is.
+  const geometry::Pose after = simulation.cameras()[1];
+  simulation.advance({}, recorder);
+  EXPECT_EQ(simulation.cameras()[1], after);
+  simulation.command(fast);
+  simulation.advance({}, recorder);
+  EXPECT_TRUE(simulation.atLastInstant());
+  EXPECT_THROW(simulation.command(fast), std::logic_error);
+  simulation.advance({}, recorder);
+  EXPECT_TRUE(simulation.finished());
+  EXPECT_THROW(simulation.advance({}, recorder), std::logic_error);
+  EXPECT_EQ(simulation.summary().steps, 4);
+  EXPECT_EQ(std::count(recorder.text.begin(), recorder.text.end(), '\n'), 4);
 }
 
 }  // namespace
