@@ -5,6 +5,7 @@
 #include "camcov/version.h"
 #include "control/methods.h"
 #include "scene/scene_loader.h"
+#include "sim/simulator.h"
 
 namespace camcov::batch {
 
@@ -17,7 +18,16 @@ records::RunRecord runJob(const JobSpec& job) {
   records::RunMetadata metadata{scene.name, job.sceneFile.string(), file.hash, job.method,
                                 job.seed,   job.parameters,         kVersion};
   const auto controller = method.make(scene, job.parameters, job.seed);
-  return records::recordRun(scene, std::move(metadata), *controller);
+  return recordRun(scene, std::move(metadata), *controller);
+}
+
+records::RunRecord recordRun(const scene::Scene& scene, records::RunMetadata metadata,
+                             control::Controller& controller) {
+  records::RunRecord run;
+  run.metadata = std::move(metadata);
+  records::RunRecorder recorder(run);
+  run.summary = sim::simulate(scene, run.metadata.parameters, controller, recorder);
+  return run;
 }
 
 }  // namespace camcov::batch

@@ -7,6 +7,7 @@
 #include "control/methods.h"
 #include "params/parameters.h"
 #include "records/run_record.h"
+#include "scene/scene.h"
 
 namespace camcov::batch {
 
@@ -22,5 +23,10 @@ struct JobSpec {
 
 // Throws InputError for an unknown method or a bad scene.
 records::RunRecord runJob(const JobSpec& job);
+
+// Simulates `scene` with `controller` (made with metadata.parameters and metadata.seed) and
+// records every step: what runJob and the benchmark programs do.
+records::RunRecord recordRun(const scene::Scene& scene, records::RunMetadata metadata,
+                             control::Controller& controller);
 
 }  // namespace camcov::batch

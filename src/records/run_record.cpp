@@ -21,13 +21,4 @@ void RunRecorder::step(const sim::StepRecord& step) {
   record_.events.insert(record_.events.end(), step.events.begin(), step.events.end());
 }
 
-RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
-                    control::Controller& controller) {
-  RunRecord run;
-  run.metadata = std::move(metadata);
-  RunRecorder recorder(run);
-  run.summary = sim::simulate(scene, run.metadata.parameters, controller, recorder);
-  return run;
-}
-
 }  // namespace camcov::records

@@ -1,6 +1,8 @@
 #pragma once
 // One run in memory: what it was (metadata) and what happened (every step, every event).
-// The recorder side fills it from the simulator; writers and readers turn it into files.
+// The recorder side fills it from the simulator's steps; writers and readers turn it into
+// files. Only the simulator's types are used here, never the simulator itself (running a run
+// is the batch stage's job: batch/run_job.h), so a reader of results links no algorithm.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -8,7 +10,6 @@
 
 #include "control/controller.h"
 #include "params/parameters.h"
-#include "scene/scene.h"
 #include "sim/simulator.h"
 
 namespace camcov::records {
@@ -53,10 +54,5 @@ class RunRecorder final : public sim::Recorder {
  private:
   RunRecord& record_;
 };
-
-// Simulates `scene` with `controller` (made with metadata.parameters and metadata.seed) and
-// records every step: what `camcov run` and the video benchmark both do.
-RunRecord recordRun(const scene::Scene& scene, RunMetadata metadata,
-                    control::Controller& controller);
 
 }  // namespace camcov::records

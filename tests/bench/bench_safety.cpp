@@ -14,9 +14,9 @@
 #include <memory>
 #include <string>
 
+#include "batch/run_job.h"
 #include "control/methods.h"
 #include "kinematics/kinematics.h"
-#include "records/run_record.h"
 #include "safety/safety_filter.h"
 #include "safety/step_contacts.h"
 #include "scene/scene_loader.h"
@@ -32,7 +32,7 @@ records::RunRecord record(const scene::Scene& scene, const std::string& method, 
   metadata.seed = 1;
   metadata.parameters.safety.enabled = layer;
   const auto controller = control::requireMethod(method).make(scene, metadata.parameters, 1);
-  return records::recordRun(scene, metadata, *controller);
+  return batch::recordRun(scene, metadata, *controller);
 }
 
 void run(benchmark::State& state, const scene::Scene& scene, const std::string& method,

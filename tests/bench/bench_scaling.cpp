@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "batch/run_job.h"
 #include "control/methods.h"
-#include "records/run_record.h"
 #include "reports/svg_plot.h"
 #include "scene/scene_generator.h"
 #include "scene/scene_loader.h"
@@ -107,7 +107,7 @@ double timeRun(const scene::Scene& scene, const std::string& method, double dura
   metadata.parameters.sim.duration = duration;
   const auto start = std::chrono::steady_clock::now();
   const auto controller = control::requireMethod(method).make(scene, metadata.parameters, seed);
-  records::recordRun(scene, metadata, *controller);
+  batch::recordRun(scene, metadata, *controller);
   const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
   return wall.count();
 }

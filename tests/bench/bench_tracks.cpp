@@ -13,10 +13,10 @@
 #include <fstream>
 #include <numbers>
 
+#include "batch/run_job.h"
 #include "control/methods.h"
 #include "import/ethucy_reader.h"
 #include "import/scene_builder.h"
-#include "records/run_record.h"
 #include "scene/scene_loader.h"
 #include "support/splitmix64.h"
 
@@ -89,7 +89,7 @@ void Run(benchmark::State& state, const std::string& method) {
   int most = 0;
   for (auto _ : state) {
     const auto controller = control::requireMethod(method).make(scene, metadata.parameters, 1);
-    const records::RunRecord run = records::recordRun(scene, metadata, *controller);
+    const records::RunRecord run = batch::recordRun(scene, metadata, *controller);
     for (const auto& step : run.steps)
       most = std::max(most, step.targetsPresent);
   }

@@ -21,8 +21,8 @@
 #include <utility>
 #include <vector>
 
+#include "batch/run_job.h"
 #include "control/paper_controller.h"
-#include "records/run_record.h"
 #include "scene/scene_loader.h"
 #include "support/bench_scenes_dir.h"
 #include "viz/argb_to_yuv420.h"
@@ -60,7 +60,7 @@ records::RunRecord paperRun(const scene::Scene& scene) {
   metadata.method = "paper";
   metadata.seed = 1;
   control::PaperController controller(scene, metadata.parameters, metadata.seed);
-  return records::recordRun(scene, std::move(metadata), controller);
+  return batch::recordRun(scene, std::move(metadata), controller);
 }
 
 void replay(benchmark::State& state, const scene::Scene& scene) {
