@@ -80,6 +80,7 @@ figure.series { border-top: 1px solid var(--line); padding-top: .55rem; margin: 
 .scene-card { margin: 0; padding: 10px 12px; border: 1px solid var(--line); border-radius: 6px; }
 .scene-card svg { margin: 0 auto 8px; }
 .note { color: #9a3412; font-size: .85rem; margin: .3rem 0 0; }
+.left-out { color: var(--muted); }
 table.parameters tr.group th, table.settings-scenes tr.group th { background: #eceef2; }
 tr.override td { background: #fff3dc; }
 td.symbol { font-style: italic; white-space: nowrap; }
