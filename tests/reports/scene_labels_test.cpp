@@ -1,7 +1,7 @@
 // The labels of the scene pictures (Fig. 3) touch nothing: not each other, not the boundary,
 // an object, a path, a camera or its view, on every published scene and every scene of our
-// own. The check is this file's own geometry (segment crossings and point location from the
-// geometry stage), not the placer's, and a self-check shows it catches planted collisions.
+// own. The check is the tests' own geometry (support/label_checks.h), not the placer's, and a
+// self-check shows it catches planted collisions.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include "geometry/ring.h"
 #include "reports/scene_drawing.h"
 #include "scene/scene_loader.h"
+#include "support/label_checks.h"
 #include "support/test_paths.h"
 
 namespace camcov::reports {
@@ -21,46 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 using geometry::Box;
 using geometry::Vec2;
-
-std::vector<Vec2> cornersOf(const Box& b) {
-  return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
-}
-
-bool inside(const Box& b, Vec2 p) {
-  return b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y;
-}
-
-// The segment crosses a side of the box or lies in it.
-bool meetsSegment(const Box& b, Vec2 p, Vec2 q) {
-  const auto c = cornersOf(b);
-  for (std::size_t i = 0; i < 4; ++i) {
-    if (geometry::segmentsIntersect(p, q, c[i], c[(i + 1) % 4])) return true;
-  }
-  return inside(b, p);
-}
-
-bool meetsLine(const Box& b, const std::vector<Vec2>& line, bool closed) {
-  const std::size_t n = line.size(), edges = closed ? n : n - 1;
-  for (std::size_t i = 0; i < edges; ++i) {
-    if (meetsSegment(b, line[i], line[(i + 1) % n])) return true;
-  }
-  return false;
-}
-
-// Filled: its edges, or a corner of the box inside it, or a vertex of it inside the box.
-bool meetsArea(const Box& b, const std::vector<Vec2>& ring) {
-  if (meetsLine(b, ring, true)) return true;
-  for (const Vec2 c : cornersOf(b)) {
-    if (geometry::locate(ring, c) != geometry::Containment::Outside) return true;
-  }
-  return inside(b, ring.front());
-}
-
-bool meetsDisc(const Box& b, Vec2 centre, double radius) {
-  const Vec2 nearest{std::clamp(centre.x, b.min.x, b.max.x),
-                     std::clamp(centre.y, b.min.y, b.max.y)};
-  return geometry::distance(nearest, centre) <= radius;
-}
 
 // "label 'cam 0 · …' meets the boundary", one line per collision.
 std::vector<std::string> collisions(const SceneDrawing& d) {
@@ -74,22 +35,22 @@ std::vector<std::string> collisions(const SceneDrawing& d) {
       report("sticks out of the picture");
     for (std::size_t k = i + 1; k < d.labels.size(); ++k) {
       const Box& o = d.labels[k].box;
-      if (b.min.x <= o.max.x && o.min.x <= b.max.x && b.min.y <= o.max.y && o.min.y <= b.max.y)
-        report("overlaps label '" + d.labels[k].text + "'");
+      if (testing::boxesTouch(b, o)) report("overlaps label '" + d.labels[k].text + "'");
     }
-    if (meetsLine(b, d.boundary, true)) report("meets the boundary");
+    if (testing::boxMeetsLine(b, d.boundary, true)) report("meets the boundary");
     for (std::size_t k = 0; k < d.objects.size(); ++k) {
-      if (meetsArea(b, d.objects[k].ring)) report("meets object " + std::to_string(k));
+      if (testing::boxMeetsArea(b, d.objects[k].ring)) report("meets object " + std::to_string(k));
     }
     for (std::size_t k = 0; k < d.paths.size(); ++k) {
-      if (meetsLine(b, d.paths[k], true)) report("meets path " + std::to_string(k));
-      if (meetsDisc(b, d.pathStarts[k], SceneDrawing::kDotRadius))
+      if (testing::boxMeetsLine(b, d.paths[k], true)) report("meets path " + std::to_string(k));
+      if (testing::boxMeetsDisc(b, d.pathStarts[k], SceneDrawing::kDotRadius))
         report("meets the start of path " + std::to_string(k));
     }
     for (std::size_t j = 0; j < d.cameras.size(); ++j) {
       const DrawnCamera& c = d.cameras[j];
-      if (meetsArea(b, c.wedge) || meetsDisc(b, c.at, DrawnCamera::kBodyRadius) ||
-          meetsSegment(b, c.at, c.head))
+      if (testing::boxMeetsArea(b, c.wedge) ||
+          testing::boxMeetsDisc(b, c.at, DrawnCamera::kBodyRadius) ||
+          testing::boxMeetsSegment(b, c.at, c.head))
         report("meets camera " + std::to_string(j));
     }
   }
