@@ -18,7 +18,7 @@ namespace {
 using geometry::Box;
 using geometry::Vec2;
 
-constexpr double kMargin = 16.0;  // px around the boundary: room for a row of labels
+constexpr double kMargin = 18.0;  // px around the boundary: room for a row of labels
 constexpr double kFont = SceneDrawing::kFont;
 constexpr double kLabelGap = 2.0;  // px between a label and anything else: its white halo
 constexpr double kReach = 34.0;    // px, a wedge's radius: it shows a direction, not a range
@@ -50,11 +50,10 @@ Box boxAround(Vec2 centre, double radius) {
   return {{centre.x - radius, centre.y - radius}, {centre.x + radius, centre.y + radius}};
 }
 
-// Candidates for a label of `width` px around `around` (labels/label_placer.h).
-std::vector<Box> compassBoxes(const Box& around, double width, Vec2 first,
-                              std::initializer_list<double> gaps) {
-  const double height = (SceneDrawing::kAscent + SceneDrawing::kDescent) * kFont;
-  return labels::boxesAround(around, {width, height}, first, {gaps.begin(), gaps.size()});
+// Candidates for a label of `size` px around `around` (labels/label_placer.h).
+std::vector<Box> compassBoxes(const Box& around, Vec2 size, Vec2 first,
+                              const std::vector<double>& gaps) {
+  return labels::boxesAround(around, size, first, gaps);
 }
 
 std::string motionText(const scene::MovingObject& o) {
@@ -92,19 +91,28 @@ void avoidDrawn(const SceneDrawing& d, labels::LabelPlacer& placer) {
   }
 }
 
-// Places `text` at the first clear box of `candidates` (made for its width by `boxesFor`).
-bool placeLabel(SceneDrawing& d, labels::LabelPlacer& placer, const std::string& text,
+// Places a label of these lines at the first clear box of the candidates `boxesFor` makes
+// for its size.
+bool placeLabel(SceneDrawing& d, labels::LabelPlacer& placer, std::vector<std::string> lines,
                 std::string_view color, const auto& boxesFor) {
-  const std::vector<Box> candidates = boxesFor(textWidth(text, kFont));
+  double width = 0.0;
+  for (const std::string& line : lines)
+    width = std::max(width, textWidth(line, kFont));
+  const std::vector<Box> candidates =
+      boxesFor(Vec2{width, static_cast<double>(lines.size()) * SceneDrawing::lineHeight()});
   const std::optional<std::size_t> chosen = placer.place(candidates);
-  if (chosen) d.labels.push_back({text, color, candidates[*chosen]});
+  if (chosen) d.labels.push_back({std::move(lines), color, candidates[*chosen]});
   return chosen.has_value();
 }
 
-// Camera j's number, v_max, γ̇_max and heading.
-std::string cameraText(const scene::Scene& s, std::size_t j) {
+std::string cameraName(std::size_t j) {
+  return fmt::format("cam {}", j);
+}
+
+// Camera j's v_max, γ̇_max and heading.
+std::string cameraValues(const scene::Scene& s, std::size_t j) {
   const scene::CameraSpec& c = s.cameras[j];
-  return fmt::format("cam {} · {:g} m/s · {:g} rad/s · {}°", j, c.maxVelocity, c.maxAngularVelocity,
+  return fmt::format("{:g} m/s · {:g} rad/s · {}°", c.maxVelocity, c.maxAngularVelocity,
                      headingDegrees(c.initial.yaw));
 }
 
@@ -112,21 +120,30 @@ void labelCameras(const scene::Scene& s, SceneDrawing& d, labels::LabelPlacer& p
   std::vector<std::size_t> withoutValues;
   for (std::size_t j = 0; j < s.cameras.size(); ++j) {
     const DrawnCamera& c = d.cameras[j];
-    // Best behind the camera, where its own view is not; then ever further round.
-    const auto around = [&](double width) {
-      return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), width,
-                          (c.at - c.head) / kReach, {3.0, 12.0, 24.0});
+    // Best behind the camera, where its own view is not; then ever further round. On one
+    // line, else on two (narrower), near the camera before far from it.
+    const auto around = [&c](std::vector<double> gaps) {
+      return [&c, gaps = std::move(gaps)](Vec2 size) {
+        return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), size,
+                            (c.at - c.head) / kReach, gaps);
+      };
     };
-    if (!placeLabel(d, placer, cameraText(s, j), kCameraColor, around)) withoutValues.push_back(j);
+    const std::string name = cameraName(j), values = cameraValues(s, j);
+    const bool placed =
+        placeLabel(d, placer, {name + " · " + values}, kCameraColor, around({3.0, 12.0})) ||
+        placeLabel(d, placer, {name, values}, kCameraColor, around({3.0, 12.0})) ||
+        placeLabel(d, placer, {name + " · " + values}, kCameraColor, around({24.0})) ||
+        placeLabel(d, placer, {name, values}, kCameraColor, around({24.0, 36.0}));
+    if (!placed) withoutValues.push_back(j);
   }
   // Cameras whose values found no room still show their number; the caption has the rest.
   for (const std::size_t j : withoutValues) {
     const DrawnCamera& c = d.cameras[j];
-    placeLabel(d, placer, fmt::format("cam {}", j), kCameraColor, [&](double width) {
-      return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), width,
-                          (c.at - c.head) / kReach, {2.0, 8.0, 16.0});
+    placeLabel(d, placer, {cameraName(j)}, kCameraColor, [&](Vec2 size) {
+      return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), size, (c.at - c.head) / kReach,
+                          {2.0, 5.0, 8.0, 12.0, 16.0, 24.0});
     });
-    d.leftOut.push_back(cameraText(s, j));
+    d.leftOut.push_back(cameraName(j) + " · " + cameraValues(s, j));
   }
 }
 
@@ -142,12 +159,12 @@ void labelMotion(const std::vector<scene::MovingObject>& specs, std::string_view
     const Box shape = geometry::boundingBox(map(placed[i]));
     const std::vector<Vec2> path = map(o.path);
     const bool placedIt =
-        placeLabel(d, placer, text, o.path.size() > 1 ? kPathColor : fill, [&](double w) {
-          std::vector<Box> boxes = compassBoxes(shape, w, {0.0, -1.0}, {3.0, 10.0, 20.0});
+        placeLabel(d, placer, {text}, o.path.size() > 1 ? kPathColor : fill, [&](Vec2 size) {
+          std::vector<Box> boxes = compassBoxes(shape, size, {0.0, -1.0}, {3.0, 10.0, 20.0});
           for (std::size_t k = 0; path.size() > 1 && k < path.size(); ++k) {
             const Vec2 a = path[k], b = path[(k + 1) % path.size()];
             const auto beside =
-                compassBoxes(boxAround((a + b) * 0.5, 0.0), w, {0.0, -1.0}, {4.0, 10.0});
+                compassBoxes(boxAround((a + b) * 0.5, 0.0), size, {0.0, -1.0}, {4.0, 10.0});
             boxes.insert(boxes.end(), beside.begin(), beside.end());
           }
           return boxes;
@@ -157,6 +174,10 @@ void labelMotion(const std::vector<scene::MovingObject>& specs, std::string_view
 }
 
 }  // namespace
+
+std::string DrawnLabel::text() const {
+  return join(lines, " · ");
+}
 
 int headingDegrees(double yaw) {
   const long degrees = std::lround(yaw * 180.0 / std::numbers::pi);

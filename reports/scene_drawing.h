@@ -5,7 +5,8 @@
 //
 // Labels are placed by labels::LabelPlacer, clear of each other, the boundary, objects, paths
 // and cameras. Cameras come first (their labels carry the most), each by the longest of its
-// labels that finds room: "cam 2 · 1 m/s · 0.5 rad/s · 225°", else "cam 2"; moving objects
+// labels that finds room: "cam 2 · 1 m/s · 0.5 rad/s · 225°" on one line or on two, else
+// "cam 2"; moving objects
 // then get their speeds. What finds no room is listed in `leftOut` for the caption.
 #include <string>
 #include <string_view>
@@ -36,9 +37,12 @@ struct DrawnCamera {
 };
 
 struct DrawnLabel {
-  std::string text;
+  std::vector<std::string> lines;  // one, or two for a camera's label where one is too wide
   std::string_view color;
-  geometry::Box box;  // px, what the text covers: the baseline sits kAscent font sizes down
+  geometry::Box box;  // px, what the text covers: line i's baseline sits kAscent font sizes
+                      // below the top of its own row of lineHeight()
+
+  std::string text() const;  // the lines joined by " · "
 };
 
 struct SceneDrawing {
@@ -46,6 +50,7 @@ struct SceneDrawing {
   static constexpr double kAscent = 0.8;     // of the font size, above the baseline
   static constexpr double kDescent = 0.25;   // below it
   static constexpr double kDotRadius = 2.2;  // px, a path's start
+  static constexpr double lineHeight() { return (kAscent + kDescent) * kFont; }
 
   double width = 0.0;  // px
   double height = 0.0;

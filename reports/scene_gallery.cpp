@@ -61,10 +61,16 @@ std::string svgOf(const SceneDrawing& d, std::string_view name) {
   // White halos keep the text legible where a label comes close to a line.
   for (const DrawnLabel& l : d.labels) {
     out += fmt::format(
-        "<text class=\"label\" x=\"{}\" y=\"{}\" fill=\"{}\" stroke=\"#fff\" stroke-width=\"3\" "
-        "stroke-linejoin=\"round\" paint-order=\"stroke\">{}</text>\n",
-        px(l.box.min.x), px(l.box.min.y + SceneDrawing::kAscent * SceneDrawing::kFont), l.color,
-        escapeXml(l.text));
+        "<text class=\"label\" fill=\"{}\" stroke=\"#fff\" stroke-width=\"3\" "
+        "stroke-linejoin=\"round\" paint-order=\"stroke\">",
+        l.color);
+    for (std::size_t i = 0; i < l.lines.size(); ++i) {
+      out += fmt::format("<tspan x=\"{}\" y=\"{}\">{}</tspan>", px(l.box.min.x),
+                         px(l.box.min.y + i * SceneDrawing::lineHeight() +
+                            SceneDrawing::kAscent * SceneDrawing::kFont),
+                         escapeXml(l.lines[i]));
+    }
+    out += "</text>\n";
   }
   return out + "</svg>\n";
 }
