@@ -116,32 +116,46 @@ std::string cameraValues(const scene::Scene& s, std::size_t j) {
                      headingDegrees(c.initial.yaw));
 }
 
+double distanceToBox(Vec2 p, const Box& b) {
+  return geometry::distance(p,
+                            {std::clamp(p.x, b.min.x, b.max.x), std::clamp(p.y, b.min.y, b.max.y)});
+}
+
+// Boxes of `size` round camera j at each of `gaps` px from its body, behind it first (where
+// its own view is not), keeping only those nearer camera j than any other camera: a label
+// read as another camera's is worse than none.
+std::vector<Box> cameraBoxes(const SceneDrawing& d, std::size_t j, Vec2 size,
+                             const std::vector<double>& gaps) {
+  const DrawnCamera& c = d.cameras[j];
+  std::vector<Box> boxes =
+      compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), size, (c.at - c.head) / kReach, gaps);
+  std::erase_if(boxes, [&](const Box& box) {
+    const double own = distanceToBox(c.at, box);
+    return std::any_of(d.cameras.begin(), d.cameras.end(), [&](const DrawnCamera& other) {
+      return &other != &c && distanceToBox(other.at, box) < own;
+    });
+  });
+  return boxes;
+}
+
 void labelCameras(const scene::Scene& s, SceneDrawing& d, labels::LabelPlacer& placer) {
   std::vector<std::size_t> withoutValues;
   for (std::size_t j = 0; j < s.cameras.size(); ++j) {
-    const DrawnCamera& c = d.cameras[j];
-    // Best behind the camera, where its own view is not; then ever further round. On one
-    // line, else on two (narrower), near the camera before far from it.
-    const auto around = [&c](std::vector<double> gaps) {
-      return [&c, gaps = std::move(gaps)](Vec2 size) {
-        return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), size,
-                            (c.at - c.head) / kReach, gaps);
-      };
-    };
     const std::string name = cameraName(j), values = cameraValues(s, j);
-    const bool placed =
-        placeLabel(d, placer, {name + " · " + values}, kCameraColor, around({3.0, 12.0})) ||
-        placeLabel(d, placer, {name, values}, kCameraColor, around({3.0, 12.0})) ||
-        placeLabel(d, placer, {name + " · " + values}, kCameraColor, around({24.0})) ||
-        placeLabel(d, placer, {name, values}, kCameraColor, around({24.0, 36.0}));
-    if (!placed) withoutValues.push_back(j);
+    // Near the camera before far from it; at each distance on one line, else on two
+    // (narrower).
+    const auto placedAt = [&](double gap) {
+      const auto boxes = [&](Vec2 size) { return cameraBoxes(d, j, size, {gap}); };
+      return placeLabel(d, placer, {name + " · " + values}, kCameraColor, boxes) ||
+             placeLabel(d, placer, {name, values}, kCameraColor, boxes);
+    };
+    if (!(placedAt(3.0) || placedAt(12.0) || placedAt(24.0) || placedAt(36.0)))
+      withoutValues.push_back(j);
   }
   // Cameras whose values found no room still show their number; the caption has the rest.
   for (const std::size_t j : withoutValues) {
-    const DrawnCamera& c = d.cameras[j];
     placeLabel(d, placer, {cameraName(j)}, kCameraColor, [&](Vec2 size) {
-      return compassBoxes(boxAround(c.at, DrawnCamera::kBodyRadius), size, (c.at - c.head) / kReach,
-                          {2.0, 5.0, 8.0, 12.0, 16.0, 24.0});
+      return cameraBoxes(d, j, size, {2.0, 5.0, 8.0, 12.0, 16.0, 24.0});
     });
     d.leftOut.push_back(cameraName(j) + " · " + cameraValues(s, j));
   }
