@@ -3,8 +3,8 @@
 // objects, paths and their arrows, cameras, plans and goals, and of each other, by the placer
 // the report's scene pictures use too (labels/label_placer.h). The views are a pale tint under
 // the labels and a pitch's markings are the ground, so labels may lie on them. A speed with no
-// such place is left out of the frame: the report's scene pictures and the run explorer show
-// it. Internal to viz/: Cairo measures the text.
+// such place is left out of the frame: the report's scene pictures show it, and the run
+// explorer on pointing at the loop. Internal to viz/: Cairo measures the text.
 #include <cstddef>
 #include <string>
 #include <vector>
