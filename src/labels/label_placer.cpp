@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace camcov::labels {
@@ -50,8 +51,10 @@ std::vector<Box> boxesAround(const Box& around, Vec2 size, Vec2 first,
       const double a = start + step * 2.0 * std::numbers::pi / kDirections;
       const Vec2 u{std::cos(a), std::sin(a)};
       // Where the ray from the centre leaves the box grown by the gap.
-      const double reach = std::min(std::abs(u.x) > 1e-12 ? (half.x + gap) / std::abs(u.x) : 1e300,
-                                    std::abs(u.y) > 1e-12 ? (half.y + gap) / std::abs(u.y) : 1e300);
+      constexpr double kNever = std::numeric_limits<double>::infinity();
+      const double reach =
+          std::min(std::abs(u.x) > 1e-12 ? (half.x + gap) / std::abs(u.x) : kNever,
+                   std::abs(u.y) > 1e-12 ? (half.y + gap) / std::abs(u.y) : kNever);
       const Vec2 at = centre + u * reach;
       const double left = u.x > 0.4 ? at.x : u.x < -0.4 ? at.x - size.x : at.x - size.x / 2;
       const double top = u.y > 0.4 ? at.y : u.y < -0.4 ? at.y - size.y : at.y - size.y / 2;

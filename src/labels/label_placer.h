@@ -19,8 +19,8 @@ using geometry::Vec2;
 
 // Whether the closed segment [a, b] and the closed box share a point (Liang–Barsky clipping).
 bool segmentMeetsBox(Vec2 a, Vec2 b, const Box& box);
-// Whether the filled polygon (a ring, or a disc-like shape given by its outline) and the
-// closed box share a point: an edge meets the box, or one lies inside the other.
+// Whether the filled polygon (a ring) and the closed box share a point: an edge meets the
+// box, or one lies inside the other.
 bool polygonMeetsBox(std::span<const Vec2> ring, const Box& box);
 
 // Candidate boxes of `size` px (width, height) around `around`, at least `gap` px clear of it:
