@@ -28,9 +28,8 @@ std::string groupsSection(const ReportData& data) {
   const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
   std::string head = "<th scope=\"col\">Family or folder</th><th scope=\"col\">Scenes</th>";
   for (const auto& method : methods) {
-    head +=
-        fmt::format("<th scope=\"col\"><span class=\"method-dot\" style=\"--c:{}\"></span>{}</th>",
-                    methodStyle(method).color, escapeXml(method));
+    head += fmt::format("<th scope=\"col\">{}</th>",
+                        methodMark(methodStyle(method).color, escapeXml(method)));
   }
   for (const auto* tallies : {&s.tallies, &s.pairTallies}) {
     for (const auto& t : *tallies) {

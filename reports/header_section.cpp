@@ -47,9 +47,8 @@ std::string meanCoverageByMethod(const ReportData& data) {
       ++n;
     }
     if (n == 0) continue;
-    parts.push_back(fmt::format("<span class=\"method-dot\" style=\"--c:{}\"></span>{} {}",
-                                methodStyle(method).color, escapeXml(methodStyle(method).label),
-                                fixed(sum / n, 3)));
+    parts.push_back(methodMark(methodStyle(method).color,
+                               escapeXml(methodStyle(method).label) + " " + fixed(sum / n, 3)));
   }
   return join(parts, ", ");
 }

@@ -4,6 +4,8 @@
 #include <array>
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "control/methods.h"
 #include "util/fnv1a.h"
 
@@ -46,6 +48,12 @@ MethodStyle methodStyle(std::string_view method) {
   if (look == nullptr) return {method, color};
   return {look->description.empty() ? method : std::string_view(look->description),
           look->color.empty() ? color : std::string_view(look->color)};
+}
+
+std::string methodMark(std::string_view color, std::string_view html) {
+  return fmt::format(
+      "<span class=\"method-mark\"><span class=\"method-dot\" style=\"--c:{}\"></span>{}</span>",
+      color, html);
 }
 
 std::vector<std::string> orderedMethods(std::vector<std::string> methods) {

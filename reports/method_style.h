@@ -33,6 +33,10 @@ class BroughtMethodLooks {
  private:
   const std::map<std::string, records::MethodLook>* previous_;
 };
+// A method's colour dot before `html` (its name or label, escaped), the two kept on one line:
+// a narrow column or legend wraps before the dot, never between the dot and the name.
+std::string methodMark(std::string_view color, std::string_view html);
+
 // In the table's order, then any other, by name.
 std::vector<std::string> orderedMethods(std::vector<std::string> methods);
 

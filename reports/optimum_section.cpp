@@ -81,10 +81,8 @@ std::string optimumSection(const ReportData& data) {
   std::string head, subhead, foot;
   std::vector<std::string> verdicts;
   for (const std::string& method : methods) {
-    head += fmt::format(
-        "<th scope=\"colgroup\" colspan=\"2\"><span class=\"method-dot\" style=\"--c:{}\"></span>"
-        "{}</th>",
-        methodStyle(method).color, escapeXml(method));
+    head += fmt::format("<th scope=\"colgroup\" colspan=\"2\">{}</th>",
+                        methodMark(methodStyle(method).color, escapeXml(method)));
     subhead += "<th scope=\"col\">final, median</th><th scope=\"col\">of optimum</th>";
     foot += fmt::format("<td class=\"num\" colspan=\"2\">{} of {}</td>", near[method],
                         compared[method]);

@@ -88,10 +88,10 @@ std::string pairsSection(const ReportData& data) {
     for (const SceneGroup group : groups)
       cells += "<td class=\"num\">" + tallyText(tallies[{group, i}]) + "</td>";
     tallyRows += fmt::format(
-        "<tr data-pair=\"{}|{}\"><th scope=\"row\"><span class=\"method-dot\" style=\"--c:{}\">"
-        "</span>{}</th>{}<td class=\"num\"><b>{}</b></td></tr>\n",
-        escapeXml(pairs[i].method), escapeXml(pairs[i].against), methodStyle(pairs[i].method).color,
-        name, cells, tallyText(totals[i]));
+        "<tr data-pair=\"{}|{}\"><th scope=\"row\">{}</th>{}<td "
+        "class=\"num\"><b>{}</b></td></tr>\n",
+        escapeXml(pairs[i].method), escapeXml(pairs[i].against),
+        methodMark(methodStyle(pairs[i].method).color, name), cells, tallyText(totals[i]));
   }
   return fmt::format(
       "<section id=\"pairs\">\n<h2>Methods against each other</h2>\n<p>Every pair of methods "

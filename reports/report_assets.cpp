@@ -56,14 +56,20 @@ td.near-optimum { color: #1a7f37; font-weight: 600; }
 p.scene-warning { color: #9a6700; }
 .out-of-reach { color: #9a6700; font-size: 0.85em; white-space: nowrap; }
 table.summary tbody { border-top: 1px solid #b4bac3; }
-table.summary tbody th { font-weight: 600; white-space: nowrap; }
+table.summary tbody th { font-weight: 600; }
+/* Fourteen columns in the page's width (1124 px in a 1400 px window): narrower padding, and the
+   column titles wrap (the numbers below them do not); a scene's name may break after '_'. */
+table.summary th, table.summary td { padding: .3rem .45rem; }
+table.summary thead th:not([colspan]) { white-space: normal; }
 th button { font: inherit; font-weight: 600; color: inherit; background: none; border: 0;
             padding: 0; cursor: pointer; }
-th button::after { content: " \2195"; color: var(--muted); font-weight: 400; }
-th[data-dir="asc"] button::after { content: " \25B2"; }
-th[data-dir="desc"] button::after { content: " \25BC"; }
+/* A no-break space: the arrow stays with the title's last word when the title wraps. */
+th button::after { content: "\a0\2195"; color: var(--muted); font-weight: 400; }
+th[data-dir="asc"] button::after { content: "\a0\25B2"; }
+th[data-dir="desc"] button::after { content: "\a0\25BC"; }
 .badge { display: inline-block; padding: .02rem .5rem; border-radius: 999px; color: #fff;
          background: var(--c, #8a8f98); font-size: .78rem; font-weight: 600; }
+.method-mark { white-space: nowrap; }
 .method-dot { display: inline-block; width: .7em; height: .7em; border-radius: 50%;
               background: var(--c); margin-right: .4em; }
 .swatch { display: inline-block; width: 1.1em; height: .8em; margin: 0 .3em 0 .15em;
@@ -80,6 +86,7 @@ figure.series { border-top: 1px solid var(--line); padding-top: .55rem; margin: 
 .scene-card { margin: 0; padding: 10px 12px; border: 1px solid var(--line); border-radius: 6px; }
 .scene-card svg { margin: 0 auto 8px; }
 .note { color: #9a3412; font-size: .85rem; margin: .3rem 0 0; }
+.left-out { color: var(--muted); }
 table.parameters tr.group th, table.settings-scenes tr.group th { background: #eceef2; }
 tr.override td { background: #fff3dc; }
 td.symbol { font-style: italic; white-space: nowrap; }

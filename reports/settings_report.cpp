@@ -95,8 +95,7 @@ Overall overall(const SettingsData& data, const Verdicts& verdicts, std::size_t 
 
 std::string methodName(const std::string& method) {
   const MethodStyle style = methodStyle(method);
-  return fmt::format("<span class=\"method-dot\" style=\"--c:{}\"></span>{}", style.color,
-                     escapeXml(style.label));
+  return methodMark(style.color, escapeXml(style.label));
 }
 
 std::string settingHeading(const Setting& s, bool reference) {

@@ -14,6 +14,17 @@
 namespace camcov::reports {
 namespace {
 
+// The scene's name with a line break allowed after each '_': the longest own scene name
+// ("dynamic_fast_target_slow_cameras") would otherwise take a fifth of the table's width.
+std::string breakableName(const std::string& name) {
+  std::string out;
+  for (const char c : escapeXml(name)) {
+    out += c;
+    if (c == '_') out += "<wbr>";
+  }
+  return out;
+}
+
 std::string meanSd(const records::Description& d, bool best) {
   if (d.count == 0) return "—";
   const std::string text = fixed(d.mean, 3) + " ± " + fixed(d.sd, 3);
@@ -27,13 +38,13 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
     return m.runs == 0 ? std::string("—") : fixed(v, decimals);
   };
   return fmt::format(
-      "<td><span class=\"method-dot\" style=\"--c:{}\"></span>{}</td><td class=\"num\">{}</td>"
+      "<td>{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\" title=\"of which {} s near objects, {} s between cameras\">{} / {}</td>"
       "<td class=\"num\" title=\"{} runs had an unavoidable contact\">{} / {}</td>"
       "<td class=\"num\">{} / {}</td>",
-      style.color, escapeXml(m.method),
+      methodMark(style.color, escapeXml(m.method)),
       m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
       meanSd(m.coverage, bestCoverage), number(m.coverage.median, 3),
       meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3),
@@ -86,7 +97,7 @@ std::string sceneBody(const SceneData& scene, const records::BatchSummary& summa
     out += "<tr>";
     if (i == 0) {
       out += fmt::format("<th scope=\"rowgroup\" rowspan=\"{}\"><a href=\"#{}\">{}</a></th>",
-                         rows.size(), anchorId("ts", scene.name), escapeXml(scene.name));
+                         rows.size(), anchorId("ts", scene.name), breakableName(scene.name));
     }
     out += methodRow(m, rows.size() > 1 && &m == bestCoverage,
                      rows.size() > 1 && &m == bestUtilization);

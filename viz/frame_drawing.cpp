@@ -8,6 +8,7 @@
 #include <string>
 
 #include "viz/cairo_drawing.h"
+#include "viz/path_labels.h"
 
 namespace camcov::viz {
 
@@ -51,61 +52,31 @@ void drawObjectPaths(const Painter& p, std::span<const ObjectPath> paths) {
   cairo_set_dash(cr, nullptr, 0, 0.0);
 }
 
-// Where an object path's label and arrow go: the middle of its longest leg, the direction of
-// travel there (image space), the point itself for an object turning in place.
-struct PathAnchor {
-  Vec2 point;      // image px
-  Vec2 direction;  // unit, image space; zero for a turning object
-};
-
-PathAnchor anchorOf(const Painter& p, const ObjectPath& path) {
-  const auto& w = path.waypoints;
-  if (w.size() < 2) return {p.image(w.front()), {}};
-  std::size_t best = 0;
-  double bestLength = -1.0;
-  for (std::size_t i = 0; i < w.size(); ++i) {
-    const double length = geometry::distance(w[i], w[(i + 1) % w.size()]);
-    if (length > bestLength) {
-      bestLength = length;
-      best = i;
-    }
-  }
-  const Vec2 a = p.image(w[best]), b = p.image(w[(best + 1) % w.size()]);
-  const double length = geometry::distance(a, b);
-  return {(a + b) * 0.5, length > 0.0 ? (b - a) / length : Vec2{}};
-}
-
-// Drawn over every shape but the cameras and their plans, which matter more: text on a pale
-// box, beside the path.
-void drawPathLabels(const Painter& p, std::span<const ObjectPath> paths) {
+// Arrows in the direction of travel, and the speeds on pale boxes where path_labels.h puts
+// them: drawn over every shape but the cameras and their plans, which matter more.
+void drawPathLabels(const Painter& p, const Frame& frame, const PixelRect& area) {
   cairo_t* cr = p.cr();
-  const double em = p.em(), size = 0.78 * em;
-  for (const ObjectPath& path : paths) {
+  const double em = p.em();
+  for (const ObjectPath& path : frame.paths) {
     const PathAnchor anchor = anchorOf(p, path);
     const Vec2 d = anchor.direction;
-    if (d != Vec2{}) {  // arrowhead
-      const Vec2 n{-d.y, d.x};
-      const Vec2 tip = anchor.point + d * (0.35 * em);
-      const Vec2 back = anchor.point - d * (0.35 * em);
-      cairo_move_to(cr, tip.x, tip.y);
-      cairo_line_to(cr, back.x + n.x * 0.3 * em, back.y + n.y * 0.3 * em);
-      cairo_line_to(cr, back.x - n.x * 0.3 * em, back.y - n.y * 0.3 * em);
-      cairo_close_path(cr);
-      p.fill(kObjectPath);
-    }
-    // Beside the path on its left, or above a turning object's centre.
-    const Vec2 side = d != Vec2{} ? Vec2{d.y, -d.x} : Vec2{0.0, -1.0};
-    const Vec2 centre = anchor.point + side * (0.95 * em);
-    const std::string label = path.speedLabel();
-    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, label.c_str(), &e);
-    const double pad = 0.18 * em;
-    cairo_rectangle(cr, centre.x - e.x_advance / 2 - pad, centre.y - 0.5 * size - pad,
-                    e.x_advance + 2 * pad, size + 2 * pad);
+    if (d == Vec2{}) continue;  // an object turning in place: no arrow
+    const Vec2 n{-d.y, d.x};
+    const Vec2 tip = anchor.point + d * (0.35 * em);
+    const Vec2 back = anchor.point - d * (0.35 * em);
+    cairo_move_to(cr, tip.x, tip.y);
+    cairo_line_to(cr, back.x + n.x * 0.3 * em, back.y + n.y * 0.3 * em);
+    cairo_line_to(cr, back.x - n.x * 0.3 * em, back.y - n.y * 0.3 * em);
+    cairo_close_path(cr);
+    p.fill(kObjectPath);
+  }
+  const double size = kPathLabelSize * em;
+  for (const PathLabel& label : placePathLabels(p, frame, area)) {
+    const geometry::Box& box = label.box;
+    cairo_rectangle(cr, box.min.x, box.min.y, box.max.x - box.min.x, box.max.y - box.min.y);
     p.fill(kFloor, 0.8);
-    text(cr, {centre.x, centre.y + 0.36 * size}, label, size, kMutedText, Align::Centre);
+    const Vec2 centre = (box.min + box.max) * 0.5;
+    text(cr, {centre.x, centre.y + 0.36 * size}, label.text, size, kMutedText, Align::Centre);
   }
 }
 
@@ -325,7 +296,7 @@ void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, Fram
     drawViews(painter, frame.cameras, use);
     drawObjects(painter, frame.world, frame.targetColours);
     drawSegments(painter, frame.segments);
-    drawPathLabels(painter, frame.paths);
+    drawPathLabels(painter, frame, layout.worldArea);
     drawPlans(painter, frame.cameras);
     drawCameras(painter, frame.cameras);
   });

@@ -120,6 +120,22 @@ TEST(CliBench, VideosShowTheMedianSeedRunOfEachMethodAndAreNotMadeTwice) {
   EXPECT_EQ(fs::last_write_time(out / "videos" / *expected.begin()), before);
 }
 
+TEST(CliBench, NotesAndResultsKeepTheOrderTheyWereSaidInOnOnePipe) {
+  // Results go to stdout, notes to stderr; `2>&1 | cat` merges them into one pipe, where a
+  // block-buffered stdout would hold every result back until exit.
+  const fs::path out = freshDir("one_pipe");
+  const auto r = runCamcov(benchArgs(out, 1, "median") + " --explorer none --jobs 1 2>&1 | cat");
+  ASSERT_EQ(r.exitCode, 0) << r.out;
+  const auto summary = r.out.find("wrote " + (out / "summary.json").string());  // a result
+  const auto videos = r.out.find("videos: 6 to write");                         // then a note
+  const auto written = r.out.find("wrote 6 videos");                            // then a result
+  ASSERT_NE(summary, std::string::npos) << r.out;
+  ASSERT_NE(videos, std::string::npos) << r.out;
+  ASSERT_NE(written, std::string::npos) << r.out;
+  EXPECT_LT(summary, videos) << r.out;
+  EXPECT_LT(videos, written) << r.out;
+}
+
 TEST(CliBench, VideosNoneWritesNoVideosAndAllWritesOnePerRun) {
   const fs::path none = freshDir("videos_none");
   ASSERT_EQ(runCamcov(benchArgs(none, 2, "none")).exitCode, 0);

@@ -36,7 +36,8 @@ TEST(SceneSvg, DrawsBoundaryObjectsPathsAndCamerasWithSpeeds) {
   EXPECT_EQ(countOf(svg, "class=\"path\""), 1) << "the target shuttles";
   EXPECT_EQ(countOf(svg, "class=\"camera\""), 1);
   EXPECT_NE(svg.find(">1.5 m/s<"), std::string::npos) << "the target's speed";
-  EXPECT_NE(svg.find(">1 m/s · 0.5 rad/s · 0°<"), std::string::npos) << "v_max, γ̇_max, heading";
+  EXPECT_NE(svg.find(">cam 0 · 1 m/s · 0.5 rad/s · 0°<"), std::string::npos)
+      << "number, v_max, γ̇_max, heading";
 
   const auto still = scene::loadScene(testing::testDataDir() / "scenes" / "tiny_static.json");
   const std::string stillSvg = sceneSvg(still);

@@ -39,8 +39,12 @@ TEST(Report, BenchWritesItWithEverySceneInEverySection) {
   const std::string html = readFile(dir / "results" / "report.html");
   ASSERT_FALSE(html.empty());
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  // A scene's name in the summary may break after each '_' (<wbr>), as its column is narrow.
+  std::string summary = section(html, "summary");
+  for (auto at = summary.find("<wbr>"); at != std::string::npos; at = summary.find("<wbr>", at))
+    summary.erase(at, 5);
   for (const std::string scene : kFixtureScenes) {
-    EXPECT_NE(section(html, "summary").find(">" + scene + "</a>"), std::string::npos) << scene;
+    EXPECT_NE(summary.find(">" + scene + "</a>"), std::string::npos) << scene;
     EXPECT_EQ(countOf(section(html, "time-series"),
                       "data-figure=\"series\" data-scene=\"" + scene + "\""),
               1)

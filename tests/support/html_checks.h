@@ -36,7 +36,8 @@ inline std::string tagWith(const std::string& html, const std::string& needle) {
 // Empty if every element is closed in order (void elements, self-closing SVG elements and the
 // contents of <script> and <style> aside); else where nesting first breaks.
 inline std::string nestingError(const std::string& html) {
-  static const std::set<std::string> kVoid{"meta", "br", "img", "input", "link", "hr", "source"};
+  static const std::set<std::string> kVoid{"meta",  "br",   "wbr", "img",
+                                           "input", "link", "hr",  "source"};
   std::vector<std::string> open;
   for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
     if (html.compare(at, 2, "<!") == 0) continue;  // the doctype
