@@ -1,12 +1,11 @@
 """docs/tutorial.md runs as written: in a fresh folder, with the camcov just built on PATH, its
 files are written and its `sh run` blocks run in order; each succeeds, says what the tutorial
-says it says, and makes the files it promises; its C++ method compiles against the current
-headers; and nothing is left behind (the folder is removed, and no program wrote to TMPDIR)."""
-import json
+says it says, and makes the files it promises; its C++ method, built by the build as the reader
+builds it (tests/python/CMakeLists.txt), runs the C++ section's commands; and nothing is left
+behind (the folder is removed, and no program wrote to TMPDIR)."""
 import os
 import pathlib
 import re
-import shlex
 import subprocess
 import sys
 import tempfile
@@ -44,23 +43,17 @@ def camcov_environment(folder):
     return env
 
 
-def compile_only(source):
-    """Compiles `source` as the build compiles the C++ example method: syntax and types only."""
-    build = pathlib.Path(os.environ["CAMCOV_BINARY"]).resolve().parents[2]
-    commands = json.loads((build / "compile_commands.json").read_text())
-    example = next(c for c in commands if c["file"].endswith("examples/nearest_unseen_controller.cpp"))
-    words = shlex.split(example["command"])
-    out = words.index("-o")
-    del words[out:out + 2]
-    words[words.index("-c"):words.index("-c") + 2] = ["-fsyntax-only", str(source)]
-    return subprocess.run(words, cwd=example["directory"], capture_output=True, text=True)
+# The C++ section's build steps, which the build has already taken for the test.
+BUILD_STEPS = ["cp ~/camcov-tutorial/look_at_nearest_controller.cpp examples/",
+               "scripts/build.sh release camcov", "cd ~/camcov-tutorial"]
 
 
 def test_the_tutorial_marks_what_it_runs():
     found = blocks(TUTORIAL.read_text())
     marked = [marker for _, marker, _ in found if marker]
     assert marked.count("run") >= 5
-    assert all(m == "run" or m.startswith("file=") for m in marked), marked
+    assert all(m in ("run", "after-build") or m.startswith("file=") for m in marked), marked
+    assert marked.count("after-build") == 1
     text = flat(TUTORIAL.read_text())
     for name in PROMISED_FILES:
         assert name in text, f"the tutorial does not name {name}"
@@ -97,9 +90,19 @@ def test_the_tutorial_runs_as_written():
         assert quoted, "the tutorial quotes the error"
         assert flat(quoted.group(1)).replace("first.json", "wrong.json") in flat(refused.stdout)
 
-        # Its C++ method compiles as a file of examples/ would.
-        compiled = compile_only(folder / "look_at_nearest_controller.cpp")
-        assert compiled.returncode == 0, compiled.stderr
+        # Its C++ method, built as a file of examples/ is, runs the commands it gives.
+        body = next(body for _, marker, body in blocks(text) if marker == "after-build")
+        lines = body.splitlines()
+        assert lines[:len(BUILD_STEPS)] == BUILD_STEPS, lines
+        built = dict(env)
+        built["PATH"] = os.pathsep.join(
+            [str(pathlib.Path(os.environ["CAMCOV_TUTORIAL_BINARY"]).parent), env["PATH"]])
+        done = subprocess.run(["bash", "-euo", "pipefail", "-c",
+                               "\n".join(lines[len(BUILD_STEPS):])],
+                              cwd=folder, env=built, capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, f"{body}\n{done.stdout}\n{done.stderr}"
+        assert (folder / "results/first-look-at-nearest-cpp-seed1.json").is_file()
+        assert "look-at-nearest-cpp" in (folder / "compare-cpp/summary.json").read_text()
 
         assert list((folder / "tmp").iterdir()) == [], "a program left files in TMPDIR"
     assert not folder.exists()
