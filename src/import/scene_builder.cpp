@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "geometry/ring.h"
@@ -137,19 +138,14 @@ double busiestStart(const Recording& recording, double length, double maxGap) {
   return static_cast<double>(best) * kTick;
 }
 
-}  // namespace
-
-BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
-  SceneOptions o = options;
-  BuiltScene built;
-  if (o.busiest > 0.0) {
-    o.from = busiestStart(recording, o.busiest, o.maxGap);
-    o.to = o.from + o.busiest;
-    built.notes.push_back(
-        fmt::format("the busiest {} s: from {} s to {} s", o.busiest, o.from, o.to));
-  }
-  built.notes.insert(built.notes.begin(), recording.notes.begin(), recording.notes.end());
+// The tracks the window keeps, cut where they vanish too long, in order of appearance, then by
+// id (the same recording gives the same file); what was left out or cut is said in `notes`.
+struct Selected {
   std::vector<RecordedTrack> targets, movingObstacles;
+};
+Selected selectTracks(const Recording& recording, const SceneOptions& o,
+                      std::vector<std::string>& notes) {
+  Selected kept;
   int split = 0, outside = 0, crossing = 0, ballsLeftOut = 0;
   for (const RecordedTrack& track : recording.tracks) {
     const bool ball = track.kind == "ball";
@@ -162,54 +158,53 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     if (pieces.size() > 1) ++split;
     for (auto& piece : pieces) {
       if (crossesAWall(piece, recording.walls)) ++crossing;
-      (ball && o.ball == BallAs::Obstacle ? movingObstacles : targets).push_back(std::move(piece));
+      (ball && o.ball == BallAs::Obstacle ? kept.movingObstacles : kept.targets)
+          .push_back(std::move(piece));
     }
   }
-  if (targets.empty()) {
+  if (kept.targets.empty()) {
     throw InputError(fmt::format("{}: no {} in the window [{}, {}] s: nothing to cover",
                                  recording.source, recording.onPitch ? "player" : "person", o.from,
                                  o.to));
   }
-  // In order of appearance, then by id: the same recording gives the same file.
   const auto byAppearance = [](const RecordedTrack& a, const RecordedTrack& b) {
     return a.times.front() != b.times.front() ? a.times.front() < b.times.front() : a.id < b.id;
   };
-  std::stable_sort(targets.begin(), targets.end(), byAppearance);
-  const std::vector<int> present = presentPerTick(targets);
-  built.mostAtOnce = *std::max_element(present.begin(), present.end());
-  for (const auto& t : targets)
-    built.duration = std::max(built.duration, t.times.back());
-  std::stable_sort(movingObstacles.begin(), movingObstacles.end(), byAppearance);
-  if (ballsLeftOut > 0)
-    built.notes.push_back("the ball is left out (--ball target|obstacle keeps it)");
+  std::stable_sort(kept.targets.begin(), kept.targets.end(), byAppearance);
+  std::stable_sort(kept.movingObstacles.begin(), kept.movingObstacles.end(), byAppearance);
+  if (ballsLeftOut > 0) notes.push_back("the ball is left out (--ball target|obstacle keeps it)");
   if (outside > 0)
-    built.notes.push_back(
+    notes.push_back(
         fmt::format("{} no sample in the window", counted(outside, "track has", "tracks have")));
   if (split > 0) {
-    built.notes.push_back(
+    notes.push_back(
         fmt::format("{} for more than {} s and {} back: each return is a new target (id#2, ...)",
                     counted(split, "track vanishes", "tracks vanish"), o.maxGap,
                     split == 1 ? "comes" : "come"));
   }
   if (crossing > 0) {
-    built.notes.push_back(fmt::format(
+    notes.push_back(fmt::format(
         "{} a wall (recording noise): kept as recorded; walls occlude and block cameras but do "
         "not stop people",
         counted(crossing, "track crosses", "tracks cross")));
   }
+  return kept;
+}
 
-  // The boundary: the box around everything plus the margin, and on a pitch at least the pitch
-  // with its run-off (a player recorded beyond it, by noise or off the field, grows it: the
-  // boundary holds every object at all times, SPEC section 2).
+// The boundary: the box around everything plus the margin, and on a pitch at least the pitch
+// with its run-off (a player recorded beyond it, by noise or off the field, grows it: the
+// boundary holds every object at all times, SPEC section 2), on whole metres.
+geometry::Box boundaryBox(const Recording& recording, const Selected& kept, const SceneOptions& o,
+                          std::vector<std::string>& notes) {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   const auto grow = [&](Vec2 p, double r) {
     x0 = std::min(x0, p.x - r), y0 = std::min(y0, p.y - r);
     x1 = std::max(x1, p.x + r), y1 = std::max(y1, p.y + r);
   };
-  for (const auto& t : targets)
+  for (const auto& t : kept.targets)
     for (const Vec2 p : t.positions)
       grow(p, t.kind == "ball" ? o.ballRadius : o.personRadius);
-  for (const auto& t : movingObstacles)
+  for (const auto& t : kept.movingObstacles)
     for (const Vec2 p : t.positions)
       grow(p, o.ballRadius);
   for (const Wall& w : recording.walls) {
@@ -223,30 +218,94 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     const double runOff[] = {-o.margin, -o.margin, recording.pitch.length + o.margin,
                              recording.pitch.width + o.margin};
     if (x0 < runOff[0] || y0 < runOff[1] || x1 > runOff[2] || y1 > runOff[3]) {
-      built.notes.push_back(fmt::format(
+      notes.push_back(fmt::format(
           "someone is recorded beyond the pitch's {} m run-off: the boundary grows to hold them",
           o.margin));
     }
     x0 = std::min(x0, runOff[0]), y0 = std::min(y0, runOff[1]);
     x1 = std::max(x1, runOff[2]), y1 = std::max(y1, runOff[3]);
   }
-  x0 = std::floor(x0), y0 = std::floor(y0), x1 = std::ceil(x1), y1 = std::ceil(y1);
-  const geometry::Ring boundary{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  return {{std::floor(x0), std::floor(y0)}, {std::ceil(x1), std::ceil(y1)}};
+}
+
+std::string describeScene(const Recording& recording, const SceneOptions& o) {
+  if (!o.description.empty()) return o.description;
+  const std::string until = std::isinf(o.to) ? std::string("its end") : fmt::format("{} s", o.to);
+  return recording.onPitch
+             ? fmt::format(
+                   "Football players recorded in {} (Last Row, Friends of Tracking) on a {} m "
+                   "x {} m pitch, {} s to {}",
+                   recording.source, recording.pitch.length, recording.pitch.width, o.from, until)
+             : fmt::format(
+                   "Pedestrians recorded in {} (ETH/UCY via OpenTraj), {} s to {} of the "
+                   "recording",
+                   recording.source, o.from, until);
+}
+
+// The camera team unless the options give one: evenly along a rectangle kCameraInset inside the
+// boundary, each moved on until 0.5 m clear of `solid`, looking at the centre.
+std::vector<geometry::Pose> cameraTeam(const SceneOptions& o, const geometry::Box& box,
+                                       const std::vector<geometry::Ring>& solid) {
+  if (o.cameraPoses) return *o.cameraPoses;
+  const auto [x0, y0] = box.min;
+  const auto [x1, y1] = box.max;
+  const Vec2 centre{(x0 + x1) / 2, (y0 + y1) / 2};
+  const geometry::Ring inner{{x0 + kCameraInset, y0 + kCameraInset},
+                             {x1 - kCameraInset, y0 + kCameraInset},
+                             {x1 - kCameraInset, y1 - kCameraInset},
+                             {x0 + kCameraInset, y1 - kCameraInset}};
+  const double perimeter = geometry::perimeter(inner);
+  const auto along = [&](double s) {  // the point at arc length s of the inner rectangle
+    s = std::fmod(s, perimeter);
+    for (std::size_t i = 0;; i = (i + 1) % 4) {
+      const Vec2 a = inner[i], b = inner[(i + 1) % 4];
+      const double l = geometry::distance(a, b);
+      if (s <= l) return geometry::lerp(a, b, s / l);
+      s -= l;
+    }
+  };
+  const auto free = [&](Vec2 p) {
+    return std::none_of(solid.begin(), solid.end(), [&](const geometry::Ring& r) {
+      return geometry::distanceToPolygon(r, p) < 0.5;
+    });
+  };
+  std::vector<geometry::Pose> poses;
+  for (int j = 0; j < o.cameras; ++j) {
+    double s = perimeter * (j + 0.5) / o.cameras;
+    Vec2 p = along(s);
+    for (int tries = 0; !free(p) && tries < 1000; ++tries)
+      p = along(s += 0.25);
+    const Vec2 d = centre - p;
+    poses.push_back({mm(p.x), mm(p.y), std::atan2(d.y, d.x)});
+  }
+  return poses;
+}
+
+}  // namespace
+
+BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
+  SceneOptions o = options;
+  BuiltScene built;
+  if (o.busiest > 0.0) {
+    o.from = busiestStart(recording, o.busiest, o.maxGap);
+    o.to = o.from + o.busiest;
+    built.notes.push_back(
+        fmt::format("the busiest {} s: from {} s to {} s", o.busiest, o.from, o.to));
+  }
+  built.notes.insert(built.notes.begin(), recording.notes.begin(), recording.notes.end());
+  const Selected kept = selectTracks(recording, o, built.notes);
+  const std::vector<int> present = presentPerTick(kept.targets);
+  built.mostAtOnce = *std::max_element(present.begin(), present.end());
+  for (const auto& t : kept.targets)
+    built.duration = std::max(built.duration, t.times.back());
+  const geometry::Box box = boundaryBox(recording, kept, o, built.notes);
 
   nlohmann::json& scene = built.scene;
-  const std::string until = std::isinf(o.to) ? std::string("its end") : fmt::format("{} s", o.to);
-  scene["description"] =
-      !o.description.empty() ? o.description
-      : recording.onPitch
-          ? fmt::format(
-                "Football players recorded in {} (Last Row, Friends of Tracking) on a {} m "
-                "x {} m pitch, {} s to {}",
-                recording.source, recording.pitch.length, recording.pitch.width, o.from, until)
-          : fmt::format(
-                "Pedestrians recorded in {} (ETH/UCY via OpenTraj), {} s to {} of the "
-                "recording",
-                recording.source, o.from, until);
-  scene["boundary"] = wktRing(boundary);
+  scene["description"] = describeScene(recording, o);
+  scene["boundary"] = wktRing({{box.min.x, box.min.y},
+                               {box.max.x, box.min.y},
+                               {box.max.x, box.max.y},
+                               {box.min.x, box.max.y}});
   if (recording.onPitch)
     scene["pitch"] = {{"length", recording.pitch.length}, {"width", recording.pitch.width}};
   const auto tracked = [&](const RecordedTrack& t, double radius) {
@@ -259,7 +318,7 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     return object;
   };
   scene["targets"] = nlohmann::json::array();
-  for (const auto& t : targets)
+  for (const auto& t : kept.targets)
     scene["targets"].push_back(tracked(t, t.kind == "ball" ? o.ballRadius : o.personRadius));
   scene["obstacles"] = nlohmann::json::array();
   std::vector<geometry::Ring> solid;  // where a camera must not start
@@ -273,46 +332,12 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
         {{"shape", wktRing(disc({0.0, 0.0}, p.radius))},
          {"path", fmt::format("POLYGON(({} {}))", mm(p.centre.x), mm(p.centre.y))}});
   }
-  for (const auto& t : movingObstacles)
+  for (const auto& t : kept.movingObstacles)
     scene["obstacles"].push_back(tracked(t, o.ballRadius));
   scene["cameraFoV"] = o.cameraHalfFovDeg;
 
-  // The camera team.
-  std::vector<geometry::Pose> poses;
-  if (o.cameraPoses) {
-    poses = *o.cameraPoses;
-  } else {
-    const Vec2 centre{(x0 + x1) / 2, (y0 + y1) / 2};
-    const geometry::Ring inner{{x0 + kCameraInset, y0 + kCameraInset},
-                               {x1 - kCameraInset, y0 + kCameraInset},
-                               {x1 - kCameraInset, y1 - kCameraInset},
-                               {x0 + kCameraInset, y1 - kCameraInset}};
-    const double perimeter = geometry::perimeter(inner);
-    const auto along = [&](double s) {  // the point at arc length s of the inner rectangle
-      s = std::fmod(s, perimeter);
-      for (std::size_t i = 0;; i = (i + 1) % 4) {
-        const Vec2 a = inner[i], b = inner[(i + 1) % 4];
-        const double l = geometry::distance(a, b);
-        if (s <= l) return geometry::lerp(a, b, s / l);
-        s -= l;
-      }
-    };
-    const auto free = [&](Vec2 p) {
-      return std::none_of(solid.begin(), solid.end(), [&](const geometry::Ring& r) {
-        return geometry::distanceToPolygon(r, p) < 0.5;
-      });
-    };
-    for (int j = 0; j < o.cameras; ++j) {
-      double s = perimeter * (j + 0.5) / o.cameras;
-      Vec2 p = along(s);
-      for (int tries = 0; !free(p) && tries < 1000; ++tries)
-        p = along(s += 0.25);
-      const Vec2 d = centre - p;
-      poses.push_back({mm(p.x), mm(p.y), std::atan2(d.y, d.x)});
-    }
-  }
   scene["cameras"] = nlohmann::json::array();
-  for (const auto& p : poses) {
+  for (const auto& p : cameraTeam(o, box, solid)) {
     scene["cameras"].push_back(
         {{"pos", fmt::format("POINT({} {})", mm(p.x), mm(p.y))},
          {"angle", std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0},

@@ -142,98 +142,93 @@ std::vector<GroupSummary> groupScenes(const BatchSummary& summary,
   return groups;
 }
 
-}  // namespace
+// Scenes in natural order ("dynamic2" before "dynamic10"), then methods by name.
+struct SceneMethodLess {
+  bool operator()(const std::pair<std::string, std::string>& a,
+                  const std::pair<std::string, std::string>& b) const {
+    if (a.first != b.first) return naturalLess(a.first, b.first);
+    return a.second < b.second;
+  }
+};
+struct NaturalLess {
+  bool operator()(const std::string& a, const std::string& b) const { return naturalLess(a, b); }
+};
+// Scene -> method -> every run's average coverage, in seed order.
+using CoverageByScene =
+    std::map<std::string, std::map<std::string, std::vector<double>>, NaturalLess>;
 
-BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
-                       std::span<const std::string> order,
-                       const std::map<std::string, std::string>& groupOf) {
-  std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
-    if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
-    return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
-  });
-  BatchSummary summary;
-  // Scenes in natural order ("dynamic2" before "dynamic10"), then methods by name.
-  struct SceneMethodLess {
-    bool operator()(const std::pair<std::string, std::string>& a,
-                    const std::pair<std::string, std::string>& b) const {
-      if (a.first != b.first) return naturalLess(a.first, b.first);
-      return a.second < b.second;
+// One method on one scene, over its jobs (in seed order): counts, distributions, safety and
+// which seeds are the median and the best.
+MethodSummary summarizeMethod(const std::string& scene, const std::string& method,
+                              std::span<const JobOutcome* const> jobs,
+                              std::vector<double>& coverage) {
+  MethodSummary m;
+  m.scene = scene;
+  m.method = method;
+  m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
+  std::vector<double> utilization, finalCoverage;
+  std::vector<std::pair<double, std::uint64_t>> bySeed;
+  for (const JobOutcome* job : jobs) {
+    if (job->failed) {
+      ++m.failed;
+      continue;
     }
-  };
-  std::map<std::pair<std::string, std::string>, std::vector<const JobOutcome*>, SceneMethodLess>
-      groups;
-  for (const auto& o : outcomes) {
-    if (o.failed) summary.failures.push_back(o);
-    groups[{o.scene, o.method}].push_back(&o);
+    const sim::RunSummary& s = job->summary;
+    ++m.runs;
+    coverage.push_back(s.averageCoverage);
+    utilization.push_back(s.averageUtilization);
+    if (!std::isnan(s.finalCoverage)) finalCoverage.push_back(s.finalCoverage);
+    bySeed.push_back({s.averageCoverage, job->seed});
+    m.meanObjectCollisionTime += s.objectCollisionTime;
+    m.meanCameraCollisionTime += s.cameraCollisionTime;
+    if (s.objectCollisionTime > 0.0 || s.cameraCollisionTime > 0.0) ++m.runsWithCollision;
+    m.meanAvoidableContactTime += s.avoidableContactTime;
+    m.meanUnavoidableContactTime += s.unavoidableContactTime;
+    if (s.avoidableContactTime > 0.0) ++m.runsWithAvoidableContact;
+    if (s.unavoidableContactTime > 0.0) ++m.runsWithUnavoidableContact;
+    m.minObjectDistance = std::min(m.minObjectDistance, s.minObjectDistance);
+    m.minCameraDistance = std::min(m.minCameraDistance, s.minCameraDistance);
   }
-  struct NaturalLess {
-    bool operator()(const std::string& a, const std::string& b) const { return naturalLess(a, b); }
-  };
-  std::map<std::string, std::map<std::string, std::vector<double>>, NaturalLess> coverageByScene;
-  for (const auto& [key, jobs] : groups) {
-    MethodSummary m;
-    m.scene = key.first;
-    m.method = key.second;
-    m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
-    std::vector<double> coverage, utilization, finalCoverage;
-    std::vector<std::pair<double, std::uint64_t>> bySeed;
-    for (const JobOutcome* job : jobs) {
-      if (job->failed) {
-        ++m.failed;
-        continue;
-      }
-      const sim::RunSummary& s = job->summary;
-      ++m.runs;
-      coverage.push_back(s.averageCoverage);
-      utilization.push_back(s.averageUtilization);
-      if (!std::isnan(s.finalCoverage)) finalCoverage.push_back(s.finalCoverage);
-      bySeed.push_back({s.averageCoverage, job->seed});
-      m.meanObjectCollisionTime += s.objectCollisionTime;
-      m.meanCameraCollisionTime += s.cameraCollisionTime;
-      if (s.objectCollisionTime > 0.0 || s.cameraCollisionTime > 0.0) ++m.runsWithCollision;
-      m.meanAvoidableContactTime += s.avoidableContactTime;
-      m.meanUnavoidableContactTime += s.unavoidableContactTime;
-      if (s.avoidableContactTime > 0.0) ++m.runsWithAvoidableContact;
-      if (s.unavoidableContactTime > 0.0) ++m.runsWithUnavoidableContact;
-      m.minObjectDistance = std::min(m.minObjectDistance, s.minObjectDistance);
-      m.minCameraDistance = std::min(m.minCameraDistance, s.minCameraDistance);
-    }
-    if (m.runs > 0) {
-      m.meanObjectCollisionTime /= m.runs;
-      m.meanCameraCollisionTime /= m.runs;
-      m.meanAvoidableContactTime /= m.runs;
-      m.meanUnavoidableContactTime /= m.runs;
-      std::sort(bySeed.begin(), bySeed.end());
-      m.medianSeed = bySeed[(bySeed.size() - 1) / 2].second;
-      m.bestSeed = std::find_if(bySeed.begin(), bySeed.end(), [&](const auto& run) {
-                     return run.first == bySeed.back().first;
-                   })->second;
-    }
-    m.coverage = describe(coverage);
-    m.utilization = describe(utilization);
-    m.finalCoverage = describe(finalCoverage);
-    coverageByScene[m.scene][m.method] = coverage;
-    summary.methods.push_back(std::move(m));
+  if (m.runs > 0) {
+    m.meanObjectCollisionTime /= m.runs;
+    m.meanCameraCollisionTime /= m.runs;
+    m.meanAvoidableContactTime /= m.runs;
+    m.meanUnavoidableContactTime /= m.runs;
+    std::sort(bySeed.begin(), bySeed.end());
+    m.medianSeed = bySeed[(bySeed.size() - 1) / 2].second;
+    m.bestSeed = std::find_if(bySeed.begin(), bySeed.end(), [&](const auto& run) {
+                   return run.first == bySeed.back().first;
+                 })->second;
   }
-  summary.reference = reference;
-  // One method against another on one scene, counted in `tally`.
-  const auto compare = [](const std::string& scene, const std::string& method,
+  m.coverage = describe(coverage);
+  m.utilization = describe(utilization);
+  m.finalCoverage = describe(finalCoverage);
+  return m;
+}
+
+// One method against another on one scene, counted in `tally`.
+Comparison compareOnScene(const std::string& scene, const std::string& method,
                           const std::string& against, const std::vector<double>& runs,
                           const std::vector<double>* others, Tally& tally) {
-    Comparison c;
-    c.scene = scene;
-    c.method = method;
-    if (others == nullptr || others->empty() || runs.empty()) return c;
-    const RunsComparison r = compareRuns(runs, *others);
-    static_cast<RunsComparison&>(c) = r;
-    tally.method = method;
-    c.winner = r.verdict == Verdict::Undecided ? "undecided"
-               : r.verdict == Verdict::Tie     ? "tie"
-               : r.verdict == Verdict::Better  ? method
-                                               : against;
-    count(tally, c, against);
-    return c;
-  };
+  Comparison c;
+  c.scene = scene;
+  c.method = method;
+  if (others == nullptr || others->empty() || runs.empty()) return c;
+  const RunsComparison r = compareRuns(runs, *others);
+  static_cast<RunsComparison&>(c) = r;
+  tally.method = method;
+  c.winner = r.verdict == Verdict::Undecided ? "undecided"
+             : r.verdict == Verdict::Tie     ? "tie"
+             : r.verdict == Verdict::Better  ? method
+                                             : against;
+  count(tally, c, against);
+  return c;
+}
+
+// Every scene's comparisons against the reference and between every other pair of methods,
+// and their tallies, into `summary`; methods ranked by their place in `order`.
+void compareMethods(const CoverageByScene& coverageByScene, const std::string& reference,
+                    std::span<const std::string> order, BatchSummary& summary) {
   // The batch's order: a method's position in `order`, else after, by name.
   const auto rank = [&order](const std::string& m) {
     return std::make_pair(
@@ -252,7 +247,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
     for (const auto& [method, coverage] : byMethod) {
       if (method == reference) continue;
       summary.comparisons.push_back(
-          compare(scene, method, reference, coverage, runsOf(reference), tallies[method]));
+          compareOnScene(scene, method, reference, coverage, runsOf(reference), tallies[method]));
       others.push_back(method);
     }
     std::sort(others.begin(), others.end(),
@@ -263,7 +258,7 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
         Tally& t = pairTallies[{method, against}];
         t.against = against;
         summary.pairs.push_back(
-            {against, compare(scene, method, against, *runsOf(method), runsOf(against), t)});
+            {against, compareOnScene(scene, method, against, *runsOf(method), runsOf(against), t)});
       }
     }
   }
@@ -280,6 +275,31 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
               return std::make_pair(rank(a.against), rank(a.method)) <
                      std::make_pair(rank(b.against), rank(b.method));
             });
+}
+
+}  // namespace
+
+BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
+                       std::span<const std::string> order,
+                       const std::map<std::string, std::string>& groupOf) {
+  std::sort(outcomes.begin(), outcomes.end(), [](const JobOutcome& a, const JobOutcome& b) {
+    if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
+    return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
+  });
+  BatchSummary summary;
+  std::map<std::pair<std::string, std::string>, std::vector<const JobOutcome*>, SceneMethodLess>
+      jobsOf;
+  for (const auto& o : outcomes) {
+    if (o.failed) summary.failures.push_back(o);
+    jobsOf[{o.scene, o.method}].push_back(&o);
+  }
+  CoverageByScene coverageByScene;
+  for (const auto& [key, jobs] : jobsOf) {
+    std::vector<double>& coverage = coverageByScene[key.first][key.second];
+    summary.methods.push_back(summarizeMethod(key.first, key.second, jobs, coverage));
+  }
+  summary.reference = reference;
+  compareMethods(coverageByScene, reference, order, summary);
   summary.groups = groupScenes(summary, groupOf);
   return summary;
 }
