@@ -1,5 +1,7 @@
 #include "reports/report_data.h"
 
+#include "control/event_kind.h"
+
 #include <algorithm>
 
 #include "kinematics/object_overlaps.h"
@@ -35,7 +37,9 @@ void foldRange(SeriesBand& band, const std::vector<double>& values, bool first) 
 }
 
 bool isContact(const control::ControlEvent& e) {
-  return e.kind == sim::kAvoidableContact || e.kind == sim::kUnavoidableContact;
+  const control::EventMark mark = control::markOf(e);
+  return mark == control::EventMark::AvoidableContact ||
+         mark == control::EventMark::UnavoidableContact;
 }
 
 MethodRuns loadMethodRuns(const records::BatchFolder& folder, const std::string& scene,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 
+#include "control/event_kind.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -25,20 +26,25 @@ struct Mark {
   std::string tooltip;
 };
 
+// How the coverage plots draw the marks of the median runs.
+Swatch markSwatch(control::EventMark mark) {
+  return mark == control::EventMark::Stop ? Swatch::Cross : Swatch::Triangle;
+}
+
 std::vector<std::pair<double, Mark>> eventMarks(const std::string& method, const MethodRuns& runs) {
-  std::map<std::pair<double, bool>, Mark> marks;  // (time, aborted)
+  std::map<std::pair<double, bool>, Mark> marks;  // (time, stop)
   for (const auto& e : runs.events) {
-    const bool replan = (e.kind == "global" && e.reason == "replan") || e.kind == "plan";
-    const bool aborted = e.kind == "plan-aborted" || e.kind == "plan-failed";
-    if (!replan && !aborted) continue;
-    Mark& m = marks[{e.time, aborted}];
+    // The one rule of marks (control/event_kind.h); contacts come from every seed, below.
+    const control::EventMark mark = control::markOf(e);
+    if (mark != control::EventMark::Move && mark != control::EventMark::Stop) continue;
+    const bool stop = mark == control::EventMark::Stop;
+    Mark& m = marks[{e.time, stop}];
     if (m.tooltip.empty()) {
-      m = {aborted ? Swatch::Cross : Swatch::Triangle, std::string(methodStyle(method).color),
+      m = {markSwatch(mark), std::string(methodStyle(method).color),
            fmt::format("t = {} s, {}", fixed(e.time, 1), method)};
     }
-    m.tooltip +=
-        fmt::format("\n{}{}: {}", e.kind,
-                    e.camera >= 0 ? fmt::format(" camera {}", e.camera + 1) : "", e.detail);
+    m.tooltip += fmt::format("\n{}{}: {}", e.kind,
+                             e.camera >= 0 ? fmt::format(" camera {}", e.camera) : "", e.detail);
   }
   std::vector<std::pair<double, Mark>> out;
   for (auto& [key, mark] : marks)
@@ -56,13 +62,13 @@ std::vector<std::pair<double, Mark>> contactMarks(const std::string& method,
                                                   const MethodRuns& runs) {
   std::map<std::pair<double, bool>, Mark> marks;  // (time, unavoidable)
   for (const auto& [seed, e] : runs.contacts) {
-    const bool unavoidable = e.kind == sim::kUnavoidableContact;
+    const bool unavoidable = control::markOf(e) == control::EventMark::UnavoidableContact;
     Mark& m = marks[{e.time, unavoidable}];
     if (m.tooltip.empty()) {
       m = {Swatch::Diamond, std::string(unavoidable ? kUnavoidableColour : kAvoidableColour),
            fmt::format("t = {} s, {}", fixed(e.time, 2), method)};
     }
-    m.tooltip += fmt::format("\nseed {}, {} camera {}{}: {}", seed, e.kind, e.camera + 1,
+    m.tooltip += fmt::format("\nseed {}, {} camera {}{}: {}", seed, e.kind, e.camera,
                              e.reason.empty() ? "" : " (" + e.reason + ")", e.detail);
   }
   std::vector<std::pair<double, Mark>> out;
@@ -93,18 +99,20 @@ std::string chart(const SceneData& scene, const std::vector<std::string>& method
       marks.push_back(std::move(mark));
   }
   // One legend entry per mark shape, in the colour of the first method that has it.
-  for (const auto& [shape, text] :
-       {std::pair{Swatch::Triangle, "replan"}, std::pair{Swatch::Cross, "plan aborted"}}) {
-    const auto it = std::find_if(marks.begin(), marks.end(), [shape = shape](const auto& m) {
-      return m.second.shape == shape;
-    });
-    if (it != marks.end()) spec.legend.push_back({text, it->second.color, shape});
+  for (const control::EventMark mark : {control::EventMark::Move, control::EventMark::Stop}) {
+    const Swatch shape = markSwatch(mark);
+    const auto it = std::find_if(marks.begin(), marks.end(),
+                                 [shape](const auto& m) { return m.second.shape == shape; });
+    if (it != marks.end())
+      spec.legend.push_back({std::string(control::markInfo(mark).label), it->second.color, shape});
   }
-  for (const auto& [color, text] : {std::pair{kAvoidableColour, "avoidable contact < δ"},
-                                    std::pair{kUnavoidableColour, "unavoidable contact < δ"}}) {
+  for (const auto& [color, mark] :
+       {std::pair{kAvoidableColour, control::EventMark::AvoidableContact},
+        std::pair{kUnavoidableColour, control::EventMark::UnavoidableContact}}) {
     if (std::any_of(marks.begin(), marks.end(),
                     [color = color](const auto& m) { return m.second.color == color; }))
-      spec.legend.push_back({text, std::string(color), Swatch::Diamond});
+      spec.legend.push_back({std::string(control::markInfo(mark).label) + " < δ",
+                             std::string(color), Swatch::Diamond});
   }
   Chart c(spec);
   // Guides under the bands, bands under the lines, the first method's line on top.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/event_kind.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 #include "viz/frame_renderer.h"
@@ -20,7 +21,10 @@ bool startsPlan(const control::ControlEvent& e) {
 }
 
 bool endsPlan(const control::ControlEvent& e) {
-  return e.kind == "plan-completed" || e.kind == "plan-aborted" || e.kind == "plan-failed";
+  using control::EventKind;
+  const auto kind = control::eventKindNamed(e.kind);
+  return kind == EventKind::PlanCompleted || kind == EventKind::PlanAborted ||
+         kind == EventKind::PlanFailed;
 }
 
 // The part of `path` still ahead of a camera at `position`: from it, through the waypoints

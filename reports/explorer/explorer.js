@@ -194,6 +194,11 @@
     html("span", {class: "swatch"}, null, item).style.background = P.seenBy[n];
     item.appendChild(document.createTextNode(`seen by ${n}${n === 3 ? " or more" : ""} cameras`));
   });
+  // The timeline's marks, as the report's plots mark the same events (control/event_kind.h).
+  for (const [name, mark] of Object.entries(data.marks)) {
+    const item = html("span", {class: `item mark-${name}`}, null, legend);
+    item.appendChild(document.createTextNode(`${mark.glyph} ${mark.label}`));
+  }
 
   // ---- drawing one step ---------------------------------------------------------------------
   function drawWorld(panel, k) {
@@ -349,8 +354,6 @@
     el("text", {x: tx(t), y: T.height - T.bottom + 14, "text-anchor": "middle", class: "tick"},
        timeline).textContent = `${t} s`;
   }
-  const kindMark = {global: "▲", replan: "△", "plan-aborted": "×", "plan-failed": "×",
-                    "avoidable-contact": "●", "unavoidable-contact": "○"};
   runs.forEach((run, i) => {
     for (const [key, dash] of [["coverage", ""], ["utilization", "5 3"]]) {
       el("polyline", {points: run.series.time.map((t, k) => `${tx(t).toFixed(1)},` +
@@ -359,11 +362,11 @@
                       "stroke-dasharray": dash, class: `curve ${key}`, "data-run": String(i)}, timeline);
     }
     for (const e of run.events) {
-      const mark = kindMark[e.kind];
+      const mark = data.marks[e.mark];  // which events get marks: control/event_kind.h
       if (!mark) continue;
       const m = el("text", {x: tx(e.time), y: T.height - T.bottom - 3 - 9 * i, "text-anchor": "middle",
-                            class: `event ${e.kind}`, fill: run.color}, timeline);
-      m.textContent = mark;
+                            class: `event ${e.kind} mark-${e.mark}`, fill: run.color}, timeline);
+      m.textContent = mark.glyph;
       const title = el("title", {}, m);
       title.textContent = `${run.label}, t = ${e.time.toFixed(2)} s: ${e.kind}` +
                           `${e.camera >= 0 ? ` (camera ${e.camera})` : ""} — ${e.detail}`;

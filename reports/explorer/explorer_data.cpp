@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "control/event_kind.h"
 #include "reports/explorer/packed_stream.h"
 #include "reports/method_style.h"
 #include "reward/metrics.h"
@@ -204,6 +205,14 @@ class StepPacker {
   std::vector<std::optional<std::array<std::int64_t, 3>>> goals_;
 };
 
+// Every mark an event may get: its glyph and its legend's words.
+nlohmann::json marksJson() {
+  nlohmann::json marks = nlohmann::json::object();
+  for (const control::EventMarkInfo& m : control::eventMarks())
+    marks[std::string(m.name)] = {{"glyph", m.glyph}, {"label", m.label}};
+  return marks;
+}
+
 nlohmann::json paletteJson() {
   nlohmann::json legend = nlohmann::json::array();
   for (const viz::Legend entry : viz::kLegendEntries)
@@ -288,11 +297,14 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
   }
   nlohmann::json events = nlohmann::json::array();
   for (const auto& e : run.events) {
+    // The mark by the one rule of control/event_kind.h, so the timeline marks what the
+    // report's plots mark.
     events.push_back({{"time", e.time},
                       {"kind", e.kind},
                       {"camera", e.camera},
                       {"detail", e.detail},
-                      {"reason", e.reason}});
+                      {"reason", e.reason},
+                      {"mark", control::markInfo(control::markOf(e)).name}});
   }
   PackedStream packed;
   StepPacker packer(scene);
@@ -328,6 +340,7 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
         {"colors",
          {{"targets", colours(scene.targets)}, {"obstacles", colours(scene.obstacles)}}}}},
       {"palette", paletteJson()},
+      {"marks", marksJson()},
       {"units",
        {{"millimetres", kMillimetres},
         {"terms", kTermUnits},

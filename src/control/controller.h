@@ -44,9 +44,9 @@ inline void takeInstant(reward::RewardModel& model, const Observation& observati
   }
 }
 
-// Something worth a line in the results: "global", "plan", "plan-failed", "plan-aborted",
-// "plan-completed", ... (see docs of each controller), and the simulator's
-// "unavoidable-contact" and "avoidable-contact" (the safety layer's accounting).
+// Something worth a line in the results. The kinds the simulator and the built-in methods
+// raise, their names and which get marks, are control::EventKind (event_kind.h); a method of
+// one's own may name kinds of its own.
 struct ControlEvent {
   double time = 0.0;
   std::string kind;
@@ -54,7 +54,7 @@ struct ControlEvent {
   std::string detail;                // human-readable
   std::vector<geometry::Pose> path;  // the planned path, for "plan" events
   // Machine-readable, for programs (the report) to act on instead of parsing `detail`: a
-  // global optimization's decision ("replan", "keep", "no-valid-pose"), a contact's cause
+  // global optimization's decision (kDecisionReplan, …), a contact's cause
   // ("outpaced", "cornered", "within-delta"); empty where the kind says all.
   std::string reason;
 };

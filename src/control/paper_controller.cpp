@@ -50,10 +50,10 @@ void PaperController::takeEvents(std::vector<ControlEvent>& out) {
   events_.clear();
 }
 
-void PaperController::raise(double t, std::string kind, int camera, std::string detail,
+void PaperController::raise(double t, EventKind kind, int camera, std::string detail,
                             std::vector<geometry::Pose> path, std::string reason) {
-  events_.push_back(
-      {t, std::move(kind), camera, std::move(detail), std::move(path), std::move(reason)});
+  events_.push_back({t, std::string(eventName(kind)), camera, std::move(detail), std::move(path),
+                     std::move(reason)});
 }
 
 std::vector<geometry::Pose> PaperController::committedTeam(
@@ -73,8 +73,8 @@ void PaperController::globalOptimization(const Observation& observation) {
   if (ours() && result) return judge(observation, result->poses, result->reward);
   const double current = model_.reward(committedTeam(observation.cameras));
   if (!result) {
-    raise(observation.time, "global", -1, "no valid pose found for some camera", {},
-          "no-valid-pose");
+    raise(observation.time, EventKind::Global, -1, "no valid pose found for some camera", {},
+          std::string(kDecisionNoValidPose));
     return;
   }
   const GoalAssignment assignment = assignGoals(scene_, observation.cameras, result->poses);
@@ -83,10 +83,10 @@ void PaperController::globalOptimization(const Observation& observation) {
     candidate *= std::max(0.0, 1.0 - assignment.travelTime / params_.global.horizon);
   }
   const bool better = improves(candidate, current, params_.global.tau);
-  raise(observation.time, "global", -1,
+  raise(observation.time, EventKind::Global, -1,
         fmt::format("global reward {:.4f} (travel {:.1f} s) vs current {:.4f}: {}", result->reward,
-                    assignment.travelTime, current, better ? "replan" : "keep"),
-        {}, better ? "replan" : "keep");
+                    assignment.travelTime, current, better ? kDecisionReplan : kDecisionKeep),
+        {}, std::string(better ? kDecisionReplan : kDecisionKeep));
   if (better) plan(observation, result->poses, assignment);
 }
 
@@ -134,11 +134,12 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   const double stay =
       averageCoverageAhead(model_, {keepPaths, keepTravel}, horizon, ours.transitSamples);
   const bool better = go > stay + ours.margin * std::abs(stay);
-  raise(observation.time, "global", -1,
+  raise(observation.time, EventKind::Global, -1,
         fmt::format("global reward {:.4f} ({:.4f} sampled, travel {:.1f} s); coverage over the "
                     "next {:g} s: {:.4f} vs {:.4f} kept: {}",
-                    reward, sampled, longest, horizon, go, stay, better ? "replan" : "keep"),
-        {}, better ? "replan" : "keep");
+                    reward, sampled, longest, horizon, go, stay,
+                    better ? kDecisionReplan : kDecisionKeep),
+        {}, std::string(better ? kDecisionReplan : kDecisionKeep));
   if (better) startPlans(observation, goals, std::move(routes));
 }
 
@@ -213,12 +214,12 @@ void PaperController::startPlans(const Observation& observation,
     const geometry::Pose& target = goals[j];
     if (!routes[j]) {
       executors_[j].stop();
-      raise(observation.time, "plan-failed", static_cast<int>(j),
+      raise(observation.time, EventKind::PlanFailed, static_cast<int>(j),
             "goal not reachable in the roadmap");
       continue;
     }
     Route& route = *routes[j];
-    raise(observation.time, "plan", static_cast<int>(j),
+    raise(observation.time, EventKind::Plan, static_cast<int>(j),
           fmt::format("{} waypoints to ({:.2f}, {:.2f}, {:.1f}°), {}", route.poses.size(), target.x,
                       target.y, geometry::radToDeg(target.yaw), route.how),
           route.poses);
@@ -255,7 +256,8 @@ void PaperController::refineGoals(const Observation& observation) {
     auto path = straightPath(observation, j, team[j]);
     if (!path && roadmapOf_[j]) path = roadmapOf_[j]->query(observation.cameras[j], team[j]);
     if (path) {
-      raise(observation.time, "replan", static_cast<int>(j), "refined goal moved beyond d1", *path);
+      raise(observation.time, EventKind::Replan, static_cast<int>(j),
+            "refined goal moved beyond d1", *path);
       executor.start(std::move(*path), observation.time);
     }
   }
@@ -288,9 +290,9 @@ void PaperController::control(const Observation& observation,
         commands[j].angularVelocity = lookWhileMoving(team, j, commands[j].angularVelocity);
       }
       if (executor.status() == planners::PlanExecutor::Status::Completed) {
-        raise(t, "plan-completed", static_cast<int>(j), "goal reached");
+        raise(t, EventKind::PlanCompleted, static_cast<int>(j), "goal reached");
       } else if (executor.status() == planners::PlanExecutor::Status::Aborted) {
-        raise(t, "plan-aborted", static_cast<int>(j),
+        raise(t, EventKind::PlanAborted, static_cast<int>(j),
               fmt::format("no progress for T3 = {} s", params_.potential.T3));
       }
     }

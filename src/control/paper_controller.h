@@ -7,16 +7,16 @@
 // artificial potentials while the local optimizer keeps refining their goals; the others do
 // local optimization (gradient ascent) directly.
 //
-// Events raised: "global" (every global optimization, with both rewards; its reason is the
-// decision: "replan", "keep" or "no-valid-pose"), "plan" (a path),
-// "plan-failed" (no path in the roadmap), "plan-completed", "plan-aborted" (no progress for
-// T3), "replan" (the refined goal drifted more than d1 from the path: queried again).
+// Events raised (event_kind.h): Global at every global optimization, with both rewards, its
+// reason the decision; Plan, PlanFailed, PlanCompleted, PlanAborted; Replan when the refined
+// goal drifted more than d1 from the path.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "control/camcov_choices.h"
 #include "control/controller.h"
+#include "control/event_kind.h"
 #include "control/goal_assignment.h"
 #include "params/parameters.h"
 #include "planners/local_optimizer.h"
@@ -84,7 +84,7 @@ class PaperController final : public Controller {
   void startPlans(const Observation& observation, std::span<const geometry::Pose> goals,
                   std::vector<std::optional<Route>> routes);
   void refineGoals(const Observation& observation);
-  void raise(double t, std::string kind, int camera, std::string detail,
+  void raise(double t, EventKind kind, int camera, std::string detail,
              std::vector<geometry::Pose> path = {}, std::string reason = {});
   std::vector<geometry::Pose> committedTeam(std::span<const geometry::Pose> cameras) const;
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/event_kind.h"
 #include "kinematics/kinematics.h"
 #include "reward/reward_model.h"
 #include "safety/safety_filter.h"
@@ -84,7 +85,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
       if (c.unavoidable) {
         ++summary.unavoidableContacts;
         events.push_back({stepStart + step.contactStart[j],
-                          std::string(kUnavoidableContact),
+                          std::string(control::eventName(control::EventKind::UnavoidableContact)),
                           camera,
                           verdicts[j].detail,
                           {},
@@ -92,7 +93,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
       } else {
         ++summary.avoidableContacts;
         events.push_back({stepStart + step.contactStart[j],
-                          std::string(kAvoidableContact),
+                          std::string(control::eventName(control::EventKind::AvoidableContact)),
                           camera,
                           "camera " + std::to_string(j) +
                               " came closer than δ although an admissible velocity kept δ",
@@ -215,7 +216,7 @@ void Simulation::measure() {
     for (const std::uint32_t id : now) {
       if (!std::binary_search(s.presentBefore.begin(), s.presentBefore.end(), id) && k > 0)
         events_.push_back({t,
-                           std::string(kTargetAppears),
+                           std::string(control::eventName(control::EventKind::TargetAppears)),
                            -1,
                            "target " + std::to_string(id) + " enters the scene",
                            {},
@@ -224,7 +225,7 @@ void Simulation::measure() {
     for (const std::uint32_t id : s.presentBefore) {
       if (!std::binary_search(now.begin(), now.end(), id))
         events_.push_back({t,
-                           std::string(kTargetLeaves),
+                           std::string(control::eventName(control::EventKind::TargetLeaves)),
                            -1,
                            "target " + std::to_string(id) + " leaves the scene",
                            {},
@@ -247,7 +248,7 @@ void Simulation::command(std::span<const kinematics::CameraCommand> commands) {
     if (!finite && !s.nonFiniteBefore[j]) {
       events_.push_back(
           {t,
-           std::string(kNonFiniteCommand),
+           std::string(control::eventName(control::EventKind::NonFiniteCommand)),
            static_cast<int>(j),
            fmt::format("camera {}'s command (vx {}, vy {}, yaw rate {}) is not finite: it "
                        "holds still",

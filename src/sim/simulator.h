@@ -39,19 +39,6 @@ struct StepRecord {
   std::span<const control::ControlEvent> events;
 };
 
-// The kinds of the events that mark where a camera came closer than δ (see RunSummary).
-inline constexpr std::string_view kAvoidableContact = "avoidable-contact";
-inline constexpr std::string_view kUnavoidableContact = "unavoidable-contact";
-// A recorded target entering or leaving the scene, at the first step it is present
-// or absent.
-inline constexpr std::string_view kTargetAppears = "target-appears";
-inline constexpr std::string_view kTargetLeaves = "target-leaves";
-// A camera's command that is not a finite number (a controller's bug): the camera holds still
-// (position, or turning, whichever part is not finite) for as long as it lasts. Raised at the
-// first step of each such stretch, so that the bug shows in the results instead of hiding in
-// them.
-inline constexpr std::string_view kNonFiniteCommand = "non-finite-command";
-
 struct RunSummary {
   int steps = 0;          // recorded steps, including t = 0
   double duration = 0.0;  // simulated seconds
@@ -108,9 +95,11 @@ class Simulation {
   // The present instant as a controller sees it; valid until advance().
   control::Observation observation() const;
   std::span<const geometry::Pose> cameras() const { return cameras_; }
-  // Commands for the present instant: a non-finite one is an event and holds the camera
-  // still, each is saturated to its camera's limits (constraint 3 of Problem 2.2) and passed
-  // through the safety layer. Not at the last instant; once per instant.
+  // Commands for the present instant: a non-finite one holds the camera still and is a
+  // NonFiniteCommand event at the first step of each such stretch (a controller's bug shows in
+  // the results instead of hiding in them); each is saturated to its camera's limits
+  // (constraint 3 of Problem 2.2) and passed through the safety layer. Not at the last
+  // instant; once per instant.
   void command(std::span<const kinematics::CameraCommand> commands);
   std::vector<control::ControlEvent>& events() { return events_; }
   // Records the present instant (with each camera's goal, if any) and, unless it is the last,

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/event_kind.h"
 #include "support/small_worlds.h"
 
 namespace camcov::sim {
@@ -108,7 +109,7 @@ TEST(Simulate, ANonFiniteCommandHoldsTheCameraAndIsAnEventAtTheStartOfEachStretc
   simulate(oneTargetScene(), p, controller, recorder);
   std::vector<control::ControlEvent> found;
   for (const auto& e : recorder.events)
-    if (e.kind == kNonFiniteCommand) found.push_back(e);
+    if (e.kind == control::eventName(control::EventKind::NonFiniteCommand)) found.push_back(e);
   ASSERT_EQ(found.size(), 2u);
   EXPECT_NEAR(found[0].time, 0.3, 1e-12);
   EXPECT_NEAR(found[1].time, 0.8, 1e-12);
