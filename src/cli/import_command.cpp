@@ -1,4 +1,4 @@
-// `camcov import lastrow FILE.csv -o scene.json` and `camcov import ethucy DIR --fps F -o
+// `camcov import lastrow FILE.csv -o scene.json` and `camcov import ethucy DIR [--fps F] -o
 // scene.json`: recorded tracks as a self-contained scene (src/import). The scene is
 // validated by the loader before it is written, atomically: bad input leaves no file behind.
 #include <fmt/format.h>
@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/number_options.h"
@@ -29,7 +30,7 @@ struct ImportOptions {
   std::string ball = "none";
   std::vector<double> pitch{105.0, 68.0};
   double rate = 20.0;  // Last Row frames per second
-  double fps = 0.0;    // ETH/UCY video frames per second
+  double fps = 0.0;    // ETH/UCY video frames per second; 0: from the recorded velocities
   import::SceneOptions scene;
 };
 
@@ -70,7 +71,8 @@ int importLastRow(ImportOptions o) {
 
 int importEthUcy(ImportOptions o) {
   resolveCommonOptions(o);
-  const import::Recording recording = import::readEthUcy(o.input, o.fps);
+  const import::Recording recording =
+      import::readEthUcy(o.input, o.fps > 0.0 ? std::optional(o.fps) : std::nullopt);
   return writeImported(import::buildScene(recording, o.scene), o);
 }
 
@@ -150,8 +152,8 @@ Registration addImportCommand(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   e->add_option(
        "--fps", ethucy->fps,
-       "video frames per second of the recording (eth_univ 15, eth_hotel and ucy_zara01 25)")
-      ->required()
+       "video frames per second of the recording (eth_univ 15, eth_hotel and ucy_zara01 25); "
+       "default: from the recorded velocities, said in a note")
       ->check(within(0.0, 1e4, false));
   e->add_option("--radius", ethucy->scene.personRadius, "pedestrian disc radius, m")
       ->check(within(0.0, 1e2, false))

@@ -10,6 +10,7 @@
 
 #include "import/text_fields.h"
 #include "import/track_collector.h"
+#include "util/counted.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
 
@@ -133,9 +134,53 @@ void parseMap(std::string xml, const std::string& file, Recording& recording) {
   }
 }
 
+// A row of obsmat.txt: frame, id, position (x, y) and velocity (vx, vy), m and m/s.
+struct Row {
+  double frame;
+  std::string id;
+  geometry::Vec2 p;
+  geometry::Vec2 v;
+  std::size_t line;
+};
+
+struct FrameRate {
+  double fps = 0.0;     // frames per second, to two significant figures
+  double median = 0.0;  // the estimate before rounding
+  std::size_t steps = 0;
+};
+
+// Over each step of one person between consecutive rows, Δframe · |v| / |Δp| frames per second,
+// with v the mean of the step's two recorded velocities; only steps of someone walking (at
+// least 5 cm at 5 cm/s), where both are far from zero. The median of them, to two significant
+// figures: video rates are round numbers (15, 25, 2.5 for an annotation rate), and the
+// velocities are estimates themselves (within 1 % of the rate on the shared recordings).
+FrameRate frameRateFromVelocities(std::vector<Row> rows) {
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+    return a.id != b.id ? a.id < b.id : a.frame < b.frame;
+  });
+  std::vector<double> estimates;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const Row &a = rows[i - 1], &b = rows[i];
+    if (a.id != b.id || !(b.frame > a.frame)) continue;
+    const double moved = geometry::distance(a.p, b.p);
+    const double speed = geometry::norm((a.v + b.v) * 0.5);
+    if (moved < 0.05 || speed < 0.05) continue;
+    estimates.push_back((b.frame - a.frame) * speed / moved);
+  }
+  FrameRate rate;
+  rate.steps = estimates.size();
+  if (estimates.empty()) return rate;
+  const auto middle = estimates.begin() + static_cast<std::ptrdiff_t>(estimates.size() / 2);
+  std::nth_element(estimates.begin(), middle, estimates.end());
+  rate.median = *middle;
+  const double unit = std::pow(10.0, std::floor(std::log10(rate.median)) - 1.0);
+  rate.fps = std::round(rate.median / unit) * unit;
+  return rate;
+}
+
 }  // namespace
 
-Recording readEthUcy(const std::string& folder, double fps) {
+Recording readEthUcy(const std::string& folder, std::optional<double> fps) {
   namespace fs = std::filesystem;
   const fs::path obsmat = fs::path(folder) / "obsmat.txt";
   if (!fs::exists(obsmat)) throw InputError(folder + ": no obsmat.txt in the folder");
@@ -145,16 +190,10 @@ Recording readEthUcy(const std::string& folder, double fps) {
 }
 
 Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const std::string& folder,
-                      double fps) {
+                      std::optional<double> fps) {
   namespace fs = std::filesystem;
   const std::string file = (fs::path(folder) / "obsmat.txt").string();
   const std::vector<std::string> lines = splitLines(std::move(obsmat), file);
-  struct Row {
-    double frame;
-    std::string id;
-    geometry::Vec2 p;
-    std::size_t line;
-  };
   std::vector<Row> rows;
   double first = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -173,15 +212,30 @@ Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const 
       v[k] = parseNumber(f[static_cast<std::size_t>(k)], where, names[k], limits[k]);
     if (v[1] != std::floor(v[1]))
       throw InputError(fmt::format("{}id {} is not a whole number", where.prefix(), v[1]));
-    rows.push_back({v[0], fmt::format("{}", static_cast<long long>(v[1])), {v[2], v[4]}, i + 1});
+    rows.push_back(
+        {v[0], fmt::format("{}", static_cast<long long>(v[1])), {v[2], v[4]}, {v[5], v[7]}, i + 1});
     first = std::min(first, v[0]);
   }
   if (rows.empty()) throw InputError(file + ": empty file: no rows \"frame id x z y vx vz vy\"");
   Recording recording;
   recording.source = folder;
+  if (!fps) {
+    const FrameRate rate = frameRateFromVelocities(rows);
+    if (rate.steps < kStepsForFrameRate) {
+      throw InputError(fmt::format(
+          "{}: give --fps: the velocities of the rows do not tell the frame rate ({} of "
+          "someone walking, {} needed)",
+          file, counted(rate.steps, "step", "steps"), kStepsForFrameRate));
+    }
+    fps = rate.fps;
+    recording.notes.push_back(
+        fmt::format("{} frames per second, from the recorded velocities (median {:.4g} over {}); "
+                    "--fps sets it",
+                    rate.fps, rate.median, counted(rate.steps, "step", "steps")));
+  }
   TrackCollector tracks;
   for (const Row& r : rows)
-    tracks.add(r.id, (r.frame - first) / fps, r.p, {file, r.line});
+    tracks.add(r.id, (r.frame - first) / *fps, r.p, {file, r.line});
   recording.tracks = tracks.take();
   if (map) parseMap(std::move(*map), (fs::path(folder) / "map.xml").string(), recording);
   return recording;

@@ -165,6 +165,50 @@ TEST(ImportEthUcy, OnePersonAndOneCameraAreCountedInTheSingular) {
       << r.out;
 }
 
+TEST(ImportEthUcy, WithoutFpsTheRateFollowsFromTheRecordedVelocities) {
+  const ScratchDir dir;
+  // The extract of UCY zara01: the velocities say 25 frames per second, the same file as
+  // with --fps 25.
+  const std::string folder = (kTracks / "ethucy_extract").string();
+  const auto given =
+      runCamcov("import ethucy " + folder + " --fps 25 -o " + (dir / "given.json").string());
+  const auto told = runCamcov("import ethucy " + folder + " -o " + (dir / "told.json").string());
+  ASSERT_EQ(given.exitCode, 0) << given.err;
+  ASSERT_EQ(told.exitCode, 0) << told.err;
+  EXPECT_EQ(readFile(dir / "told.json"), readFile(dir / "given.json"));
+  EXPECT_NE(told.err.find("note: 25 frames per second, from the recorded velocities"),
+            std::string::npos)
+      << told.err;
+  // By hand: one person walks 1 m every 10 frames at a recorded 2 m/s, so a step is 0.5 s and
+  // the rate 20 frames per second; another stands (left out of the estimate).
+  fs::create_directories(dir / "walk");
+  std::ofstream walk(dir / "walk" / "obsmat.txt");
+  for (int k = 0; k < 12; ++k) {
+    walk << 100 + 10 * k << " 1 " << k << " 0 5 2 0 0\n";
+    walk << 100 + 10 * k << " 2 3 0 8 0 0 0\n";
+  }
+  walk.close();
+  const nlohmann::json scene = importScene("ethucy " + (dir / "walk").string(), dir / "walk.json");
+  const auto& samples = scene["targets"][0]["track"]["samples"];
+  ASSERT_EQ(samples.size(), 12u);
+  EXPECT_NEAR(samples[3][0].get<double>(), 1.5, 1e-12) << "frame 130: 30 frames at 20 fps";
+  EXPECT_NEAR(samples[11][0].get<double>(), 5.5, 1e-12);
+}
+
+TEST(ImportEthUcy, WithoutFpsAndWithoutWalkersItAsksForTheRateAndWritesNothing) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "still");
+  std::ofstream(dir / "still" / "obsmat.txt") << "1 7 0 0 1 0 0 0\n11 7 1 0 1 0 0 0\n";
+  const auto r = runCamcov("import ethucy " + (dir / "still").string() + " -o " +
+                           (dir / "still.json").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("give --fps: the velocities of the rows do not tell the frame rate (0 "
+                       "steps of someone walking, 10 needed)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "still.json"));
+}
+
 TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
   // Player 3 stands at 150 % of the pitch's length (157.5 m) and -10 % of its width (-6.8 m):
   // the boundary is the pitch with its run-off (5 m for Last Row) grown to hold them with their
