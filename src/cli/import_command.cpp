@@ -154,7 +154,7 @@ Registration addImportCommand(CLI::App& app) {
        "--fps", ethucy->fps,
        "video frames per second of the recording (eth_univ 15, eth_hotel and ucy_zara01 25); "
        "default: from the recorded velocities, said in a note")
-      ->check(within(0.0, 1e4, false));
+      ->check(within(0.0, import::kMaxFrameRate, false));
   e->add_option("--radius", ethucy->scene.personRadius, "pedestrian disc radius, m")
       ->check(within(0.0, 1e2, false))
       ->capture_default_str();

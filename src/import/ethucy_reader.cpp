@@ -227,6 +227,12 @@ Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const 
           "someone walking, {} needed)",
           file, counted(rate.steps, "step", "steps"), kStepsForFrameRate));
     }
+    if (!(std::isfinite(rate.fps) && rate.fps > 0.0 && rate.fps <= kMaxFrameRate)) {
+      throw InputError(
+          fmt::format("{}: give --fps: the velocities of the rows tell {} frames per "
+                      "second, beyond (0, {:g}]",
+                      file, rate.median, kMaxFrameRate));
+    }
     fps = rate.fps;
     recording.notes.push_back(
         fmt::format("{} frames per second, from the recorded velocities (median {:.4g} over {}); "

@@ -17,7 +17,8 @@ namespace camcov::import {
 // InputError, naming the file and line, for an empty obsmat.txt, a row without 8 numbers, a
 // number that is not finite, time that does not move forward for one id, or malformed XML (an
 // unclosed or mismatched tag, a Line or Circle without its numbers), or no fps given where the
-// velocities do not tell it (fewer than kStepsForFrameRate steps of someone walking).
+// velocities do not tell it (fewer than kStepsForFrameRate steps of someone walking, or a rate
+// beyond (0, kMaxFrameRate]).
 Recording readEthUcy(const std::string& folder, std::optional<double> fps);
 
 // The same for the files' text, read already: obsmat.txt's and, when the folder has one,
@@ -25,6 +26,8 @@ Recording readEthUcy(const std::string& folder, std::optional<double> fps);
 Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const std::string& folder,
                       std::optional<double> fps);
 
+// Frames per second, given or told by the velocities: within (0, kMaxFrameRate].
+inline constexpr double kMaxFrameRate = 1e4;
 // Steps of someone walking (moving at least 5 cm at 5 cm/s or more) needed to tell the rate.
 inline constexpr std::size_t kStepsForFrameRate = 10;
 

@@ -207,6 +207,19 @@ TEST(ImportEthUcy, WithoutFpsAndWithoutWalkersItAsksForTheRateAndWritesNothing) 
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "still.json"));
+  // Velocities of 1e300 m/s tell a rate that overflows: refused the same way, not taken.
+  fs::create_directories(dir / "wild");
+  std::ofstream wild(dir / "wild" / "obsmat.txt");
+  for (int k = 0; k < 12; ++k)
+    wild << 1000000 * k << " 1 " << k << " 0 5 1e300 0 1e300\n";
+  wild.close();
+  const auto w =
+      runCamcov("import ethucy " + (dir / "wild").string() + " -o " + (dir / "wild.json").string());
+  EXPECT_EQ(w.exitCode, 2);
+  EXPECT_NE(w.err.find("give --fps: the velocities of the rows tell inf frames per second"),
+            std::string::npos)
+      << w.err;
+  EXPECT_FALSE(fs::exists(dir / "wild.json"));
 }
 
 TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
