@@ -43,6 +43,17 @@ py::dict cameraDict(const scene::CameraSpec& c) {
   return d;
 }
 
+// For each of a world's `count` targets or obstacles, its index in the scene (`index`:
+// kinematics::targetId or obstacleId).
+std::vector<std::uint32_t> sceneIndices(const kinematics::World& w, std::size_t count,
+                                        std::uint32_t (*index)(const kinematics::World&,
+                                                               std::size_t)) {
+  std::vector<std::uint32_t> ids(count);
+  for (std::size_t i = 0; i < count; ++i)
+    ids[i] = index(w, i);
+  return ids;
+}
+
 }  // namespace
 
 void bindScene(py::module_& m) {
@@ -68,20 +79,14 @@ void bindScene(py::module_& m) {
       .def_property_readonly(
           "target_ids",
           [](const kinematics::World& w) {
-            std::vector<std::uint32_t> ids;
-            for (std::size_t i = 0; i < w.targets.size(); ++i)
-              ids.push_back(kinematics::targetId(w, i));
-            return ids;
+            return sceneIndices(w, w.targets.size(), kinematics::targetId);
           },
           "For each ring of `targets`, its index in the scene file's "
           "targets (recorded people come and go; otherwise 0, 1, 2, ...).")
       .def_property_readonly(
           "obstacle_ids",
           [](const kinematics::World& w) {
-            std::vector<std::uint32_t> ids;
-            for (std::size_t i = 0; i < w.obstacles.size(); ++i)
-              ids.push_back(kinematics::obstacleId(w, i));
-            return ids;
+            return sceneIndices(w, w.obstacles.size(), kinematics::obstacleId);
           },
           "For each ring of `obstacles`, its index in the scene file's obstacles.");
 
