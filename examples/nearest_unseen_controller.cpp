@@ -33,8 +33,7 @@ class NearestUnseenController final : public control::Controller {
         standoff_(params.reward.d2),
         goals_(scene.cameras.size()) {}
 
-  void control(const control::Observation& o,
-               std::span<kinematics::CameraCommand> commands) override {
+  void control(const control::Observation& o, std::span<scene::CameraCommand> commands) override {
     for (std::size_t j = 0; j < o.cameras.size(); ++j) {
       const geometry::Pose& p = o.cameras[j];
       const visibility::Segment* nearest = nearestUnseen(o.seen, j, p.position());

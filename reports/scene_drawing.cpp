@@ -70,7 +70,7 @@ std::vector<Vec2> wedgeOf(Vec2 at, const scene::CameraSpec& c) {
   std::vector<Vec2> wedge{at};
   constexpr int kArcSteps = 12;
   for (int k = 0; k <= kArcSteps; ++k) {
-    const double a = c.initial.yaw - c.halfFov + 2 * c.halfFov * k / kArcSteps;
+    const double a = c.initial.yaw - c.lens.halfFov + 2 * c.lens.halfFov * k / kArcSteps;
     wedge.push_back(at + Vec2{std::cos(a), -std::sin(a)} * kReach);
   }
   return wedge;

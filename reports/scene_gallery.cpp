@@ -78,10 +78,10 @@ std::string svgOf(const SceneDrawing& d, std::string_view name) {
 // "field of view 60° (half-angle θ 30°)", or the range of a team of unlike cameras: "fields of
 // view 40°–90° (θ 20°–45°)". The file's cameraFoV is θ, half the width, so both are named.
 std::string fieldsOfView(const scene::Scene& s) {
-  double lo = s.cameras.front().halfFov, hi = lo;
+  double lo = s.cameras.front().lens.halfFov, hi = lo;
   for (const auto& c : s.cameras) {
-    lo = std::min(lo, c.halfFov);
-    hi = std::max(hi, c.halfFov);
+    lo = std::min(lo, c.lens.halfFov);
+    hi = std::max(hi, c.lens.halfFov);
   }
   const auto degrees = [](double halfFov) { return halfFov * 180.0 / std::numbers::pi; };
   if (lo == hi)

@@ -31,7 +31,7 @@ std::string ObjectPath::speedLabel() const {
 }
 
 FrameBuilder::FrameBuilder(const scene::Scene& scene)
-    : kinematics_(scene), sceneName_(scene.name), halfFovs_(scene::halfFovs(scene)) {
+    : kinematics_(scene), sceneName_(scene.name), lenses_(scene::lenses(scene)) {
   addPaths(scene.targets, paths_);
   addPaths(scene.obstacles, paths_);
   for (const auto& t : scene.targets)
@@ -45,13 +45,13 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   for (std::size_t i = 0; i < out.world.targets.size(); ++i)
     out.targetColours[i] = colours_[kinematics::targetId(out.world, i)];
   occluders_.build(out.world);
-  sweep_.segments(occluders_, cameras, halfFovs_, out.segments);
+  sweep_.segments(occluders_, cameras, lenses_, out.segments);
 
   out.cameras.resize(cameras.size());
   for (std::size_t j = 0; j < cameras.size(); ++j) {
     CameraView& c = out.cameras[j];
     c.pose = cameras[j];
-    sweep_.fieldOfViewPolygon(occluders_, c.pose, halfFovs_[j], c.view);
+    sweep_.fieldOfViewPolygon(occluders_, c.pose, lenses_[j], c.view);
     c.goal.reset();
     c.plan.clear();
   }
@@ -62,7 +62,7 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.caption.subtitle.clear();
   out.caption.time = time;
   out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
-  out.caption.utilization = reward::utilization(out.segments, cameras, halfFovs_);
+  out.caption.utilization = reward::utilization(out.segments, cameras, lenses_);
 }
 
 }  // namespace camcov::viz

@@ -73,7 +73,7 @@ class FrameBuilder {
  private:
   kinematics::Kinematics kinematics_;
   std::string sceneName_;
-  std::vector<double> halfFovs_;             // θ_j
+  std::vector<scene::Lens> lenses_;          // of camera j
   std::vector<std::optional<Rgb>> colours_;  // of each scene target
   std::vector<ObjectPath> paths_;
   std::vector<std::vector<geometry::Vec2>> markings_;

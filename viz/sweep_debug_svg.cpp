@@ -228,7 +228,7 @@ std::vector<std::string> headerOf(const SweepDebug& d) {
   std::vector<std::string> h;
   h.push_back(d.title);
   h.push_back(fmt::format("camera {} at ({:.3f}, {:.3f}), yaw {:.2f}°, θ = {:.2f}°", d.camera, c.x,
-                          c.y, geometry::radToDeg(c.yaw), geometry::radToDeg(t.halfFov)));
+                          c.y, geometry::radToDeg(c.yaw), geometry::radToDeg(t.lens.halfFov)));
   if (t.blind) {
     h.push_back("sees nothing (inside an object or outside the boundary): no events");
   } else {
@@ -274,7 +274,7 @@ void drawFieldOfViewRays(const Painter& p, const visibility::SweepTrace& t, doub
   cairo_set_dash(cr, dash, 2, 0.0);
   const Vec2 c = t.camera.position();
   for (const double side : {-1.0, 1.0})
-    p.linePath(c, c + length * geometry::unitVector(t.camera.yaw + side * t.halfFov));
+    p.linePath(c, c + length * geometry::unitVector(t.camera.yaw + side * t.lens.halfFov));
   p.stroke(kView, 0.12);
   cairo_set_dash(cr, nullptr, 0, 0.0);
 }
@@ -530,9 +530,9 @@ SweepDebug buildSweepDebug(const scene::Scene& scene, double time,
   d.camera = camera;
   const visibility::Occluders occluders(d.world);
   visibility::Sweep sweep;
-  const std::vector<double> halfFovs = scene::halfFovs(scene);
-  sweep.segments(occluders, cameras, halfFovs, d.segments);
-  sweep.trace(occluders, cameras[camera], halfFovs[camera], d.trace);
+  const std::vector<scene::Lens> lenses = scene::lenses(scene);
+  sweep.segments(occluders, cameras, lenses, d.segments);
+  sweep.trace(occluders, cameras[camera], lenses[camera], d.trace);
   sweep.visibilityPolygon(occluders, cameras[camera].position(), d.visibility);
   return d;
 }

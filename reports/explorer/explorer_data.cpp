@@ -45,7 +45,7 @@ void putPoints(PackedStream& out, std::span<const Vec2> points, double units, Ve
 class StepPacker {
  public:
   explicit StepPacker(const scene::Scene& scene)
-      : halfFovs_(scene::halfFovs(scene)),
+      : lenses_(scene::lenses(scene)),
         targetCount_(scene.targets.size()),
         objects_(scene.targets.size() + scene.obstacles.size()),
         poses_(scene.cameras.size(), {0, 0, 0}),
@@ -159,12 +159,12 @@ class StepPacker {
       s.visibleBy = 1;  // it is camera 0 of a team of one
       own_.push_back(s);
     }
-    const double halfFov[] = {halfFovs_[j]};
+    const scene::Lens lens[] = {lenses_[j]};
     const geometry::Pose alone[] = {c.pose};
     out.putUnsigned(static_cast<std::uint64_t>(
         std::llround(reward::coverage(own_, reward::targetPerimeter(frame.world)) * kTermUnits)));
     out.putUnsigned(static_cast<std::uint64_t>(
-        std::llround(reward::utilization(own_, alone, halfFov) * kTermUnits)));
+        std::llround(reward::utilization(own_, alone, lens) * kTermUnits)));
   }
 
   void putSegments(const viz::Frame& frame, PackedStream& out) {
@@ -185,7 +185,7 @@ class StepPacker {
       for (std::size_t j = 0; j < frame.cameras.size(); ++j) {
         if ((s.visibleBy >> j & 1u) != 0) continue;
         visibility::UnseenReason r =
-            visibility::whyUnseen(frame.world, frame.cameras[j].pose, halfFovs_[j], s);
+            visibility::whyUnseen(frame.world, frame.cameras[j].pose, lenses_[j], s);
         if (r.blocker.kind == visibility::ObjectRef::Kind::Target)
           r.blocker.index = kinematics::targetId(frame.world, r.blocker.index);
         if (r.blocker.kind == visibility::ObjectRef::Kind::Obstacle)
@@ -197,7 +197,7 @@ class StepPacker {
     }
   }
 
-  std::vector<double> halfFovs_;
+  std::vector<scene::Lens> lenses_;
   std::vector<visibility::Segment> own_;  // one camera's segments, reused
   std::size_t targetCount_ = 0;
   std::vector<std::vector<std::int64_t>> objects_;  // by scene index: vertices the last time
@@ -293,7 +293,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
   for (const auto& c : scene.cameras) {
     cameras.push_back({{"maxVelocity", c.maxVelocity},
                        {"maxAngularVelocity", c.maxAngularVelocity},
-                       {"halfFov", c.halfFov}});
+                       {"halfFov", c.lens.halfFov}});
   }
   nlohmann::json events = nlohmann::json::array();
   for (const auto& e : run.events) {

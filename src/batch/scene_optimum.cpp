@@ -18,7 +18,7 @@ records::OptimumFile searchSceneOptimum(const std::filesystem::path& sceneFile,
   const scene::SceneFile file = scene::loadSceneFile(sceneFile);
   const scene::Scene& s = file.scene;
   const kinematics::World world = kinematics::Kinematics(s).worldAt(time);
-  reward::RewardModel model(parameters.reward, scene::halfFovs(s));
+  reward::RewardModel model(parameters.reward, scene::lenses(s));
   model.setWorld(world);
   planners::StateValidity validity(parameters.planner.d1);
   validity.setWorld(world);

@@ -58,7 +58,7 @@ int inspect(const InspectOptions& o) {
     records::writeFileAtomically(
         o.debugSvg, viz::sweepDebugSvg(viz::buildSweepDebug(s, o.time, cameras, o.camera)));
   }
-  reward::RewardModel model(p.reward, scene::halfFovs(s));
+  reward::RewardModel model(p.reward, scene::lenses(s));
   model.setWorld(kinematics::Kinematics(s).worldAt(o.time));
   const reward::RewardTerms terms = model.evaluate(cameras);
   const auto segments = model.segments();

@@ -67,7 +67,7 @@ Registration addStateCommand(CLI::App& app) {
                                         {"yawDeg", geometry::radToDeg(c.initial.yaw)},
                                         {"maxVelocity", c.maxVelocity},
                                         {"maxAngularVelocity", c.maxAngularVelocity},
-                                        {"fovHalfAngleDeg", geometry::radToDeg(c.halfFov)}});
+                                        {"fovHalfAngleDeg", geometry::radToDeg(c.lens.halfFov)}});
             }
             std::cout << out.dump(2) << "\n";
             return 0;

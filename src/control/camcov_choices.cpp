@@ -5,8 +5,6 @@
 #include <limits>
 #include <numbers>
 
-#include "control/travel_time.h"
-
 namespace camcov::control {
 
 namespace {
@@ -38,10 +36,9 @@ geometry::Pose along(std::span<const geometry::Pose> path, double u) {
 
 }  // namespace
 
-double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
-                      double maxAngularVelocity) {
-  return travelTime(pathLength(path), geometry::wrapAngle(path.back().yaw - path.front().yaw),
-                    maxVelocity, maxAngularVelocity);
+double pathTravelTime(std::span<const geometry::Pose> path, const scene::CameraSpec& camera) {
+  return camera.travelTime(pathLength(path),
+                           geometry::wrapAngle(path.back().yaw - path.front().yaw));
 }
 
 double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, double horizon,

@@ -11,6 +11,7 @@
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
 #include "reward/reward_model.h"
+#include "scene/camera.h"
 
 namespace camcov::control {
 
@@ -21,10 +22,9 @@ struct TeamMove {
   std::span<const double> travel;
 };
 
-// How long a path takes at the camera's limits: section V-B's estimate (travel_time.h) with the
-// path's length and the turn from its first yaw to its last.
-double pathTravelTime(std::span<const geometry::Pose> path, double maxVelocity,
-                      double maxAngularVelocity);
+// How long a path takes at the camera's limits: section V-B's estimate
+// (CameraSpec::travelTime) with the path's length and the turn from its first yaw to its last.
+double pathTravelTime(std::span<const geometry::Pose> path, const scene::CameraSpec& camera);
 
 // The coverage, eq. (3), the team would average over the next `horizon` seconds along `move`,
 // at the model's instant: the transit's coverage at its two ends and `samples` instants between

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "kinematics/camera_command.h"
 #include "kinematics/world.h"
 #include "reward/metrics.h"
 #include "reward/reward_model.h"
+#include "scene/camera.h"
 #include "visibility/segment.h"
 
 namespace camcov::control {
@@ -64,7 +64,7 @@ class Controller {
   virtual ~Controller() = default;
   // Fills one command per camera.
   virtual void control(const Observation& observation,
-                       std::span<kinematics::CameraCommand> commands) = 0;
+                       std::span<scene::CameraCommand> commands) = 0;
   // The goal camera j is heading for, if it follows a plan (drawn in frames).
   virtual std::optional<geometry::Pose> goal(std::size_t camera) const = 0;
   // Moves the events since the last call into `out`.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "control/travel_time.h"
 #include "planners/hungarian.h"
 
 namespace camcov::control {
@@ -15,9 +14,9 @@ GoalAssignment assignGoals(const scene::Scene& scene, std::span<const geometry::
   for (std::size_t j = 0; j < m; ++j) {
     const auto& camera = scene.cameras[j];
     for (std::size_t g = 0; g < m; ++g) {
-      cost[j * m + g] = scene.cameras[g].halfFov != camera.halfFov
+      cost[j * m + g] = scene.cameras[g].lens != camera.lens
                             ? kOtherFieldOfView
-                            : travelTime(camera, cameras[j], goals[g]);
+                            : camera.travelTime(cameras[j], goals[g]);
     }
   }
   GoalAssignment result;

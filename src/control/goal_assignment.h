@@ -1,6 +1,6 @@
 #pragma once
 // Section V-B: which camera goes to which goal. The Hungarian method on the estimated travel
-// times (travel_time.h: obstacles ignored); the team needs the longest of the chosen ones.
+// times (CameraSpec::travelTime: obstacles ignored); the team needs the longest of the chosen ones.
 #include <span>
 #include <vector>
 

@@ -2,15 +2,15 @@
 
 namespace camcov::control {
 
-kinematics::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
-                                         double dt) {
+scene::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
+                                    double dt) {
   return {(to.position() - from.position()) / dt, geometry::wrapAngle(to.yaw - from.yaw) / dt};
 }
 
-std::vector<planners::StepLimits> stepLimits(const scene::Scene& scene, double dt) {
-  std::vector<planners::StepLimits> limits;
+std::vector<scene::StepLimits> stepLimits(const scene::Scene& scene, double dt) {
+  std::vector<scene::StepLimits> limits;
   for (const auto& c : scene.cameras)
-    limits.push_back({c.maxVelocity * dt, c.maxAngularVelocity * dt});
+    limits.push_back(c.stepLimits(dt));
   return limits;
 }
 
@@ -21,11 +21,11 @@ std::uint64_t allCameras(std::size_t count) {
 LocalController::LocalController(const scene::Scene& scene, const params::Parameters& params)
     : limits_(stepLimits(scene, params.sim.dt)),
       dt_(params.sim.dt),
-      model_(params.reward, scene::halfFovs(scene)),
+      model_(params.reward, scene::lenses(scene)),
       local_(params.local) {}
 
 void LocalController::control(const Observation& observation,
-                              std::span<kinematics::CameraCommand> commands) {
+                              std::span<scene::CameraCommand> commands) {
   takeInstant(model_, observation);
   team_.assign(observation.cameras.begin(), observation.cameras.end());
   local_.improve(model_, team_, allCameras(team_.size()), limits_);

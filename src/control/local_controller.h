@@ -13,13 +13,12 @@ class LocalController final : public Controller {
  public:
   LocalController(const scene::Scene& scene, const params::Parameters& params);
 
-  void control(const Observation& observation,
-               std::span<kinematics::CameraCommand> commands) override;
+  void control(const Observation& observation, std::span<scene::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t) const override { return std::nullopt; }
   void takeEvents(std::vector<ControlEvent>&) override {}
 
  private:
-  std::vector<planners::StepLimits> limits_;
+  std::vector<scene::StepLimits> limits_;
   double dt_;
   reward::RewardModel model_;
   planners::LocalOptimizer local_;
@@ -27,10 +26,10 @@ class LocalController final : public Controller {
 };
 
 // The velocity that takes `from` to `to` in one step of dt (yaw the short way round).
-kinematics::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
-                                         double dt);
+scene::CameraCommand commandTowards(const geometry::Pose& from, const geometry::Pose& to,
+                                    double dt);
 // Per-step limits v_max·dt and γ̇_max·dt of every camera.
-std::vector<planners::StepLimits> stepLimits(const scene::Scene& scene, double dt);
+std::vector<scene::StepLimits> stepLimits(const scene::Scene& scene, double dt);
 // Bit mask with one bit per camera set.
 std::uint64_t allCameras(std::size_t count);
 

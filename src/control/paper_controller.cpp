@@ -6,7 +6,6 @@
 
 #include "control/goal_assignment.h"
 #include "control/local_controller.h"
-#include "control/travel_time.h"
 #include "planners/global_optimizer.h"
 #include "planners/team_improvement.h"
 #include "util/run_threads.h"
@@ -19,7 +18,7 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       params_(params),
       variant_(variant),
       limits_(stepLimits(scene, params.sim.dt)),
-      model_(params.reward, scene::halfFovs(scene)),
+      model_(params.reward, scene::lenses(scene)),
       validity_(params.planner.d1),
       local_(params.local, variant == Variant::Camcov && params.camcov.compass
                                ? planners::LocalOptimizer::Search::Compass
@@ -30,7 +29,7 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       // Ours waits one step to see whether anything moves.
       nextGlobalTime_(variant == Variant::Camcov ? params.sim.dt : 0.0) {
   for (unsigned t = 1; t < runThreads(); ++t)
-    helpers_.emplace_back(params.reward, scene::halfFovs(scene));
+    helpers_.emplace_back(params.reward, scene::lenses(scene));
 }
 
 PaperController::~PaperController() = default;
@@ -121,8 +120,8 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
     goPaths[j] = routes[j] ? routes[j]->poses : std::vector<geometry::Pose>{now};
     keepPaths[j] = executors_[j].executing() ? executors_[j].pathLeft(now)
                                              : std::vector<geometry::Pose>{now, kept[j]};
-    goTravel[j] = pathTravelTime(goPaths[j], camera.maxVelocity, camera.maxAngularVelocity);
-    keepTravel[j] = pathTravelTime(keepPaths[j], camera.maxVelocity, camera.maxAngularVelocity);
+    goTravel[j] = pathTravelTime(goPaths[j], camera);
+    keepTravel[j] = pathTravelTime(keepPaths[j], camera);
     longest = std::max(longest, goTravel[j]);
   }
   // The window is H, or the whole trip where the trip is longer: both options are judged over
@@ -146,7 +145,7 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
 double PaperController::lookWhileMoving(std::span<geometry::Pose> team, std::size_t j,
                                         double plannedTurnRate) {
   const auto& camera = scene_.cameras[j];
-  const double dt = params_.sim.dt, maxTurn = camera.maxAngularVelocity * dt;
+  const double dt = params_.sim.dt, maxTurn = camera.stepLimits(dt).maxRotation;
   const planners::PlanExecutor& executor = executors_[j];
   const double planned =
       geometry::wrapAngle(team[j].yaw + std::clamp(plannedTurnRate * dt, -maxTurn, maxTurn));
@@ -158,16 +157,15 @@ double PaperController::lookWhileMoving(std::span<geometry::Pose> team, std::siz
 
 planners::Roadmap& PaperController::roadmap(const Observation& observation, std::size_t j) {
   // Section V-C: one roadmap for this planning event, queried by every camera — one per
-  // field of view in a team of unlike cameras, since eq. (10)'s cost depends on θ.
+  // lens in a team of unlike cameras, since eq. (10)'s cost depends on θ.
   if (!roadmapOf_[j]) {
-    const double theta = scene_.cameras[j].halfFov;
+    const scene::Lens& lens = scene_.cameras[j].lens;
     for (std::size_t i = 0; i < roadmapOf_.size() && !roadmapOf_[j]; ++i) {
-      if (i != j && roadmapOf_[i] && scene_.cameras[i].halfFov == theta)
-        roadmapOf_[j] = roadmapOf_[i];
+      if (i != j && roadmapOf_[i] && scene_.cameras[i].lens == lens) roadmapOf_[j] = roadmapOf_[i];
     }
     if (!roadmapOf_[j]) {
       roadmapOf_[j] =
-          std::make_shared<planners::Roadmap>(observation.world, params_, theta, random_.fork());
+          std::make_shared<planners::Roadmap>(observation.world, params_, lens, random_.fork());
     }
   }
   return *roadmapOf_[j];
@@ -264,7 +262,7 @@ void PaperController::refineGoals(const Observation& observation) {
 }
 
 void PaperController::control(const Observation& observation,
-                              std::span<kinematics::CameraCommand> commands) {
+                              std::span<scene::CameraCommand> commands) {
   takeInstant(model_, observation);
   validity_.setWorld(observation.world);
   if (ours()) moving_ = motion_.see(observation.world);

@@ -47,8 +47,7 @@ class PaperController final : public Controller {
                   Variant variant = Variant::Paper);
   ~PaperController() override;
 
-  void control(const Observation& observation,
-               std::span<kinematics::CameraCommand> commands) override;
+  void control(const Observation& observation, std::span<scene::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t camera) const override;
   void takeEvents(std::vector<ControlEvent>& out) override;
 
@@ -93,7 +92,7 @@ class PaperController final : public Controller {
   Variant variant_;
   MotionWatch motion_;  // ours: does anything move?
   std::optional<bool> moving_;
-  std::vector<planners::StepLimits> limits_;
+  std::vector<scene::StepLimits> limits_;
   reward::RewardModel model_;
   // One more model per thread the run may use (util/run_threads.h), for Algorithm 2's scores.
   std::vector<reward::RewardModel> helpers_;

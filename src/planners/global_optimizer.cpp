@@ -29,7 +29,7 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
     // Lines 5, 7–9: the K samples, drawn in order from the run's generator.
     samples.clear();
     for (int k = 0; k < samplesPerCamera; ++k) {
-      if (const auto pose = sampler.sample(random, validity, model.halfFov(j))) {
+      if (const auto pose = sampler.sample(random, validity, model.lens(j))) {
         samples.push_back(*pose);
       }
     }

@@ -8,13 +8,12 @@
 #include "geometry/vec2.h"
 #include "params/parameters.h"
 #include "reward/reward_model.h"
+#include "scene/camera.h"
 
 namespace camcov::planners {
 
-struct StepLimits {
-  double maxTranslation = 0.0;  // m per step: v_max · dt
-  double maxRotation = 0.0;     // rad per step: γ̇_max · dt
-};
+// How far one step may go: the camera's own limits (scene/camera.h).
+using scene::StepLimits;
 
 class LocalOptimizer {
  public:

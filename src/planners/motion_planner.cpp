@@ -49,14 +49,14 @@ void fromPose(const geometry::Pose& p, ob::State* s) {
 
 // Everything the planner's callbacks share: the world at the planning instant.
 struct PlanningWorld {
-  PlanningWorld(const kinematics::World& w, const params::Parameters& params, double halfFov,
-                std::uint64_t seed)
+  PlanningWorld(const kinematics::World& w, const params::Parameters& params,
+                const scene::Lens& lens, std::uint64_t seed)
       : world(w),
         validity(params.planner.d1),
-        reward(params.reward, std::vector{halfFov}),
+        reward(params.reward, std::vector{lens}),
         random(seed),
         uniformProbability(params.planner.p),
-        halfFov(halfFov),
+        lens(lens),
         box(geometry::boundingBox(world.boundary)) {
     validity.setWorld(world);
     reward.setWorld(world);
@@ -69,7 +69,7 @@ struct PlanningWorld {
   reward::RewardModel reward;
   Random random;
   double uniformProbability;
-  double halfFov;
+  scene::Lens lens;
   geometry::Box box;
   std::vector<geometry::Ring> objects;
   VisibilitySampler sampler;
@@ -95,7 +95,7 @@ class CoverageSampler final : public ob::ValidStateSampler {
       }
     } else if (const auto q1 = samplePointOnRings(w_.objects, w_.random)) {
       if (w_.sampler.focus(w_.reward, *q1))
-        pose = w_.sampler.sample(w_.random, w_.validity, w_.halfFov);
+        pose = w_.sampler.sample(w_.random, w_.validity, w_.lens);
     }
     if (!pose) return false;
     fromPose(*pose, state);
@@ -202,9 +202,9 @@ class SharedRoadmap final : public og::PRMstar {
 }  // namespace
 
 struct Roadmap::Impl {
-  Impl(const kinematics::World& world, const params::Parameters& params, double halfFov,
+  Impl(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
        std::uint64_t seed)
-      : w(world, params, halfFov, seed), space(std::make_shared<ob::SE2StateSpace>()) {
+      : w(world, params, lens, seed), space(std::make_shared<ob::SE2StateSpace>()) {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ob::RealVectorBounds bounds(2);
     bounds.setLow(0, w.box.min.x);
@@ -246,9 +246,9 @@ struct Roadmap::Impl {
   std::shared_ptr<SharedRoadmap> planner;
 };
 
-Roadmap::Roadmap(const kinematics::World& world, const params::Parameters& params, double halfFov,
-                 std::uint64_t seed)
-    : impl_(std::make_unique<Impl>(world, params, halfFov, seed)) {}
+Roadmap::Roadmap(const kinematics::World& world, const params::Parameters& params,
+                 const scene::Lens& lens, std::uint64_t seed)
+    : impl_(std::make_unique<Impl>(world, params, lens, seed)) {}
 
 Roadmap::~Roadmap() = default;
 

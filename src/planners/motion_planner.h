@@ -17,14 +17,15 @@
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
 #include "params/parameters.h"
+#include "scene/camera.h"
 #include "util/random.h"
 
 namespace camcov::planners {
 
 class Roadmap {
  public:
-  // Builds the roadmap now (the expensive part). `halfFov` is θ.
-  Roadmap(const kinematics::World& world, const params::Parameters& params, double halfFov,
+  // Builds the roadmap now (the expensive part), sampled for a camera with `lens`.
+  Roadmap(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
           std::uint64_t seed);
   ~Roadmap();
   Roadmap(const Roadmap&) = delete;

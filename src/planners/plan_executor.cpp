@@ -110,10 +110,9 @@ double PlanExecutor::remaining(const geometry::Pose& pose) const {
   return distanceLeft(pose) + 0.5 * std::abs(geometry::wrapAngle(goal().yaw - pose.yaw));
 }
 
-kinematics::CameraCommand PlanExecutor::step(const geometry::Pose& pose,
-                                             const kinematics::World& world,
-                                             std::span<const geometry::Pose> otherCameras,
-                                             double maxVelocity, double dt, double t) {
+scene::CameraCommand PlanExecutor::step(const geometry::Pose& pose, const kinematics::World& world,
+                                        std::span<const geometry::Pose> otherCameras,
+                                        double maxVelocity, double dt, double t) {
   if (status_ != Status::Executing) return {};
   const geometry::Vec2 p = pose.position();
   if (geometry::distance(p, goal().position()) <= kArrivalDistance &&
@@ -134,7 +133,7 @@ kinematics::CameraCommand PlanExecutor::step(const geometry::Pose& pose,
 
   const geometry::Vec2 attractive = (intermediate_.position() - p) / dt;
   const geometry::Vec2 repulsive = repulsiveDirection(p, world, otherCameras, d2_) * maxVelocity;
-  kinematics::CameraCommand u;
+  scene::CameraCommand u;
   u.velocity = attractive * potential_.lambda4 - repulsive * potential_.lambda5;
   u.angularVelocity = geometry::wrapAngle(intermediate_.yaw - pose.yaw) / dt;
   return u;

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "kinematics/camera_command.h"
 #include "kinematics/world.h"
 #include "params/parameters.h"
+#include "scene/camera.h"
 
 namespace camcov::planners {
 
@@ -46,9 +46,9 @@ class PlanExecutor {
   std::vector<geometry::Pose> pathLeft(const geometry::Pose& pose) const;
 
   // The command for this step; updates the status (Completed, or Aborted after T3).
-  kinematics::CameraCommand step(const geometry::Pose& pose, const kinematics::World& world,
-                                 std::span<const geometry::Pose> otherCameras, double maxVelocity,
-                                 double dt, double t);
+  scene::CameraCommand step(const geometry::Pose& pose, const kinematics::World& world,
+                            std::span<const geometry::Pose> otherCameras, double maxVelocity,
+                            double dt, double t);
 
  private:
   void chooseIntermediateGoal(geometry::Vec2 p, double reach);

@@ -11,7 +11,7 @@ bool TeamImprovement::replace(std::vector<geometry::Pose>& team, std::size_t j, 
   const geometry::Pose kept = team[j];
   geometry::Pose best = kept;
   for (int k = 0; k < samples && !spent(); ++k) {
-    const auto pose = sampler_.sample(random, validity_, model_.halfFov(j));
+    const auto pose = sampler_.sample(random, validity_, model_.lens(j));
     if (!pose) continue;
     team[j] = *pose;
     const double r = reward(team);

@@ -110,10 +110,10 @@ bool VisibilitySampler::focusOnUnseen(reward::RewardModel& model, Random& random
 
 std::optional<geometry::Pose> VisibilitySampler::sample(Random& random,
                                                         const StateValidity& validity,
-                                                        double halfFov) const {
+                                                        const scene::Lens& lens) const {
   const auto q2 = area_.sample(random, validity, kAttemptsPerSample);
   if (!q2) return std::nullopt;
-  return geometry::Pose{q2->x, q2->y, sampleYawSeeing(*q2, q1_, halfFov, random)};
+  return geometry::Pose{q2->x, q2->y, sampleYawSeeing(*q2, q1_, lens.halfFov, random)};
 }
 
 }  // namespace camcov::planners

@@ -12,6 +12,7 @@
 #include "geometry/ring.h"
 #include "planners/state_validity.h"
 #include "reward/reward_model.h"
+#include "scene/camera.h"
 #include "util/random.h"
 #include "visibility/segment.h"
 
@@ -52,7 +53,7 @@ class VisibilitySampler {
   // unseen (all of ∂T seen: anywhere on it). False if there is no q1 or its polygon is empty.
   bool focusOnUnseen(reward::RewardModel& model, Random& random);
   std::optional<geometry::Pose> sample(Random& random, const StateValidity& validity,
-                                       double halfFov) const;
+                                       const scene::Lens& lens) const;
   geometry::Vec2 q1() const { return q1_; }
 
  private:

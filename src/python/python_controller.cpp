@@ -22,7 +22,7 @@ PythonController::~PythonController() {
 }
 
 void PythonController::control(const control::Observation& o,
-                               std::span<kinematics::CameraCommand> commands) {
+                               std::span<scene::CameraCommand> commands) {
   py::gil_scoped_acquire gil;
   try {
     auto observation = std::make_unique<PythonObservation>();

@@ -39,7 +39,7 @@ class PythonController final : public control::Controller {
   ~PythonController() override;
 
   void control(const control::Observation& observation,
-               std::span<kinematics::CameraCommand> commands) override;
+               std::span<scene::CameraCommand> commands) override;
   std::optional<geometry::Pose> goal(std::size_t camera) const override { return goals_[camera]; }
   void takeEvents(std::vector<control::ControlEvent>& out) override;
 

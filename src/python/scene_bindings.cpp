@@ -39,7 +39,7 @@ py::dict cameraDict(const scene::CameraSpec& c) {
   d["pose"] = posesToArray(std::span(&c.initial, 1))[py::int_(0)];
   d["max_velocity"] = c.maxVelocity;
   d["max_angular_velocity"] = c.maxAngularVelocity;
-  d["half_fov"] = c.halfFov;
+  d["half_fov"] = c.lens.halfFov;
   return d;
 }
 
@@ -137,8 +137,10 @@ void bindScene(py::module_& m) {
       .def_property_readonly(
           "half_fovs",
           [](const PythonScene& s) {
-            const auto thetas = scene::halfFovs(s.scene);
-            return Array(static_cast<py::ssize_t>(thetas.size()), thetas.data());
+            Array thetas(static_cast<py::ssize_t>(s.scene.cameras.size()));
+            for (std::size_t j = 0; j < s.scene.cameras.size(); ++j)
+              thetas.mutable_at(static_cast<py::ssize_t>(j)) = s.scene.cameras[j].lens.halfFov;
+            return thetas;
           },
           "Each camera's half-angle θ_j, radians, (M,): what camcov.Visibility takes.")
       .def(

@@ -28,9 +28,9 @@ struct Scratch {
 // several threads sweep in parallel.
 class Visibility {
  public:
-  Visibility(const kinematics::World& world, std::vector<double> halfFovs,
+  Visibility(const kinematics::World& world, std::vector<scene::Lens> lenses,
              const params::Parameters& params)
-      : cameras_(halfFovs.size()), model_(params.reward, std::move(halfFovs)) {
+      : cameras_(lenses.size()), model_(params.reward, std::move(lenses)) {
     model_.setWorld(world);
   }
 
@@ -99,7 +99,9 @@ std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
                                         j, halfAngles[j]));
     }
   }
-  return std::make_unique<Visibility>(world, std::move(halfAngles), parametersFrom(values));
+  return std::make_unique<Visibility>(
+      world, std::vector<scene::Lens>(halfAngles.begin(), halfAngles.end()),
+      parametersFrom(values));
 }
 
 // The terms of every team as arrays (N,).

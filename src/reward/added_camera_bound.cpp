@@ -65,8 +65,8 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
   const visibility::Occluders& occluders = model.occluders();
   if (occluders.buildId() != build_) takeInstant(model);
 
-  halfFov_ = model.halfFov(team.size());
-  theta0_ = team.empty() ? halfFov_ : model.halfFov(0);
+  halfFov_ = model.lens(team.size()).halfFov;
+  theta0_ = team.empty() ? halfFov_ : model.lens(0).halfFov;
   weight_ = theta0_ / halfFov_;
   // utilizationOf's sum, from its mean: Σ_j (θ_0/θ_j)·angles_j = utilization · 2θ_0 · M.
   teamAngles_ = teamTerms.utilization * (2.0 * theta0_) * static_cast<double>(team.size());

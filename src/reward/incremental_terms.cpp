@@ -50,7 +50,7 @@ void sortByEdge(std::vector<visibility::SeenInterval>& seen) {
 IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& occluders,
                                                    visibility::Sweep& sweep,
                                                    std::span<const geometry::Pose> cameras,
-                                                   std::span<const double> halfFovs,
+                                                   std::span<const scene::Lens> lenses,
                                                    double perimeter) {
   if (occluders.buildId() != build_) reset(occluders);
   const std::size_t kept = cameras_.size();
@@ -59,14 +59,13 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
   cameras_.resize(cameras.size());
   for (std::size_t j = 0; j < cameras.size(); ++j) {
     Camera& c = cameras_[j];
-    if (j < kept && geometry::sameBits(c.pose, cameras[j]) &&
-        geometry::sameBits(c.halfFov, halfFovs[j])) {
+    if (j < kept && geometry::sameBits(c.pose, cameras[j]) && scene::sameBits(c.lens, lenses[j])) {
       continue;
     }
-    const auto seen = sweep.seenBy(occluders, j, cameras[j], halfFovs[j]);
+    const auto seen = sweep.seenBy(occluders, j, cameras[j], lenses[j]);
     if (j < kept) leave(static_cast<std::uint32_t>(j));
     c.pose = cameras[j];
-    c.halfFov = halfFovs[j];
+    c.lens = lenses[j];
     see(occluders, static_cast<std::uint32_t>(j), seen);
   }
   for (const std::uint32_t e : dirty_) {
@@ -81,7 +80,7 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
   angles_.clear();
   for (const Camera& c : cameras_)
     angles_.push_back(c.angles);
-  return {coverageOf(visible_.value(), perimeter), utilizationOf(angles_, halfFovs)};
+  return {coverageOf(visible_.value(), perimeter), utilizationOf(angles_, lenses)};
 }
 
 void IncrementalTerms::reset(const visibility::Occluders& occluders) {

@@ -22,6 +22,7 @@
 
 #include "geometry/vec2.h"
 #include "reward/fixed_point_sum.h"
+#include "scene/camera.h"
 #include "visibility/occluders.h"
 #include "visibility/segment.h"
 #include "visibility/sweep.h"
@@ -35,17 +36,17 @@ class IncrementalTerms {
     double utilization = 0.0;
   };
 
-  // The terms of `cameras` (camera j with half-angle halfFovs[j]) at the instant of
+  // The terms of `cameras` (camera j with lens lenses[j]) at the instant of
   // `occluders`, whose targets' perimeter is `perimeter`. `sweep` answers the sweeps; a new
   // arrangement (Occluders::buildId()) starts afresh.
   Terms evaluate(const visibility::Occluders& occluders, visibility::Sweep& sweep,
-                 std::span<const geometry::Pose> cameras, std::span<const double> halfFovs,
+                 std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses,
                  double perimeter);
 
  private:
   struct Camera {
     geometry::Pose pose;
-    double halfFov = 0.0;
+    scene::Lens lens;
     std::vector<visibility::SeenInterval> seen;  // by edge and along it
     double angles = 0.0;                         // Σ subtendedAngle() over the runs of `seen`
   };

@@ -58,28 +58,28 @@ double subtendedAngle(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p) {
   return std::abs(std::atan2(geometry::cross(u, v), geometry::dot(u, v)));
 }
 
-double utilizationOf(std::span<const double> angles, std::span<const double> halfFovs) {
+double utilizationOf(std::span<const double> angles, std::span<const scene::Lens> lenses) {
   if (angles.empty()) return 0.0;
   // Σ_j angle_j / 2θ_j, summed as Σ_j (θ_0/θ_j) · angle_j, then over 2θ_0: for a team of
   // like cameras every weight θ_0/θ_0 is exactly 1 (IEEE division), so the sum is eq. (5)
   // as written, to the bit.
-  const double theta0 = halfFovs[0];
+  const double theta0 = lenses[0].halfFov;
   double weighted = 0.0;
   for (std::size_t j = 0; j < angles.size(); ++j)
-    weighted += theta0 / halfFovs[j] * angles[j];
+    weighted += theta0 / lenses[j].halfFov * angles[j];
   return weighted / (2.0 * theta0) / static_cast<double>(angles.size());
 }
 
 double utilization(std::span<const visibility::Segment> segments,
-                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs) {
+                   std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses) {
   // Per camera, the run it is in: its first point and its last segment (an index of S).
   constexpr std::size_t kNone = SIZE_MAX;
   struct Run {
     geometry::Vec2 a;
     std::size_t last = kNone;
   };
-  std::array<Run, visibility::Sweep::kMaxCameras> runs;
-  std::array<double, visibility::Sweep::kMaxCameras> angles{};
+  std::array<Run, scene::kMaxCameras> runs;
+  std::array<double, scene::kMaxCameras> angles{};
   const auto close = [&](std::size_t j) {
     if (runs[j].last == kNone) return;
     angles[j] += subtendedAngle(runs[j].a, segments[runs[j].last].b, cameras[j].position());
@@ -98,7 +98,7 @@ double utilization(std::span<const visibility::Segment> segments,
   }
   for (std::size_t j = 0; j < cameras.size(); ++j)
     close(j);
-  return utilizationOf(std::span(angles.data(), cameras.size()), halfFovs);
+  return utilizationOf(std::span(angles.data(), cameras.size()), lenses);
 }
 
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera) {

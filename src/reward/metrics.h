@@ -7,6 +7,7 @@
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
 #include "params/parameters.h"
+#include "scene/camera.h"
 #include "visibility/segment.h"
 
 namespace camcov::reward {
@@ -37,14 +38,14 @@ double coverage(std::span<const visibility::Segment> segments, double perimeter)
 // The same from vis(S).
 double coverageOf(double visibleLength, double perimeter);
 // Utilization, eq. (5): mean over cameras of the angle ∠ s¹ p_j s² of every segment camera j
-// sees, over its field of view 2θ_j (halfFovs[j]).
+// sees, over its field of view 2θ_j (lenses[j]).
 double utilization(std::span<const visibility::Segment> segments,
-                   std::span<const geometry::Pose> cameras, std::span<const double> halfFovs);
+                   std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses);
 // The angle ∠ a p b that a piece of target boundary from a to b subtends at p, in [0, π].
 double subtendedAngle(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p);
-// Utilization from each camera's sum of subtended angles (angles[j]: camera j, θ_j =
-// halfFovs[j]): Σ_j (θ_0/θ_j)·angles[j] / 2θ_0 / M.
-double utilizationOf(std::span<const double> angles, std::span<const double> halfFovs);
+// Utilization from each camera's sum of subtended angles (angles[j]: camera j, θ_j of
+// lenses[j]): Σ_j (θ_0/θ_j)·angles[j] / 2θ_0 / M.
+double utilizationOf(std::span<const double> angles, std::span<const scene::Lens> lenses);
 // Length of the target boundary camera j sees (what it contributes before overlaps).
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera);
 

@@ -4,11 +4,11 @@
 
 namespace camcov::reward {
 
-RewardModel::RewardModel(const params::RewardParams& params, std::vector<double> halfFovs)
-    : params_(params), halfFovs_(std::move(halfFovs)) {}
+RewardModel::RewardModel(const params::RewardParams& params, std::vector<scene::Lens> lenses)
+    : params_(params), lenses_(std::move(lenses)) {}
 
-RewardModel::RewardModel(const params::RewardParams& params, double halfFov)
-    : RewardModel(params, std::vector<double>(visibility::Sweep::kMaxCameras, halfFov)) {}
+RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
+    : RewardModel(params, std::vector<scene::Lens>(scene::kMaxCameras, lens)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
@@ -31,17 +31,17 @@ void RewardModel::setInstant(const RewardModel& measured) {
 }
 
 RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
-  sweep_.segments(*occluders_, cameras, halfFovs_, segments_);
+  sweep_.segments(*occluders_, cameras, lenses_, segments_);
   RewardTerms t;
   t.coverage = coverage(segments_, perimeter_);
-  t.utilization = utilization(segments_, cameras, halfFovs_);
+  t.utilization = utilization(segments_, cameras, lenses_);
   t.repulsion = repulsion(world_, objectBoxes_, cameras, params_.d2);
   t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
   return t;
 }
 
 RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
-  const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, halfFovs_, perimeter_);
+  const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, lenses_, perimeter_);
   RewardTerms t;
   t.coverage = kept.coverage;
   t.utilization = kept.utilization;

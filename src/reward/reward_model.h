@@ -19,10 +19,10 @@ namespace camcov::reward {
 
 class RewardModel {
  public:
-  // Camera j of every evaluated team has half-angle halfFovs[j] (θ_j, scene::halfFovs()).
-  RewardModel(const params::RewardParams& params, std::vector<double> halfFovs);
-  // For teams of like cameras (up to Sweep::kMaxCameras), every one with half-angle `halfFov`.
-  RewardModel(const params::RewardParams& params, double halfFov);
+  // Camera j of every evaluated team has lens lenses[j] (θ_j, …: scene::lenses()).
+  RewardModel(const params::RewardParams& params, std::vector<scene::Lens> lenses);
+  // For teams of like cameras (up to scene::kMaxCameras), every one with `lens`.
+  RewardModel(const params::RewardParams& params, scene::Lens lens);
 
   // The instant to evaluate at. The world is copied: callers may change theirs afterwards.
   void setWorld(const kinematics::World& world);
@@ -33,14 +33,14 @@ class RewardModel {
   void setInstant(const RewardModel& measured);
   const kinematics::World& world() const { return world_; }
   const visibility::Occluders& occluders() const { return *occluders_; }
-  double halfFov(std::size_t camera) const { return halfFovs_[camera]; }
+  const scene::Lens& lens(std::size_t camera) const { return lenses_[camera]; }
   // length(∂T) at this instant, and the bounding box of every target, then of every obstacle.
   double perimeter() const { return perimeter_; }
   std::span<const geometry::Box> objectBoxes() const { return objectBoxes_; }
   const params::RewardParams& params() const { return params_; }
 
-  // All terms for the camera set (camera j has θ_j; at most as many as there are θs); S is kept
-  // and readable through segments() until the next call.
+  // All terms for the camera set (camera j has lens j; at most as many as there are lenses); S is
+  // kept and readable through segments() until the next call.
   RewardTerms evaluate(std::span<const geometry::Pose> cameras);
   // evaluate(cameras)'s terms to the bit, for the optimizers' probes: from the terms kept of
   // the last call (IncrementalTerms), without making S; segments() still holds the last
@@ -54,7 +54,7 @@ class RewardModel {
 
  private:
   params::RewardParams params_;
-  std::vector<double> halfFovs_;
+  std::vector<scene::Lens> lenses_;
   kinematics::World world_;
   double perimeter_ = 0.0;
   std::vector<geometry::Box> objectBoxes_;            // for repulsion()

@@ -22,10 +22,10 @@ bool Scene::holdsStill() const {
          std::all_of(obstacles.begin(), obstacles.end(), isStatic);
 }
 
-std::vector<double> halfFovs(const Scene& scene) {
-  std::vector<double> out;
+std::vector<Lens> lenses(const Scene& scene) {
+  std::vector<Lens> out;
   for (const CameraSpec& camera : scene.cameras)
-    out.push_back(camera.halfFov);
+    out.push_back(camera.lens);
   return out;
 }
 

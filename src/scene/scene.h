@@ -8,6 +8,7 @@
 
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
+#include "scene/camera.h"
 
 namespace camcov::scene {
 
@@ -60,16 +61,6 @@ struct MovingObject {
   bool presentAt(double t) const { return !track || track->presentAt(t); }
 };
 
-// One camera: the only place that says what a camera is. Every stage reads a camera's field
-// of view and limits from here, so a team of unlike cameras (our extension: a camera's own
-// "cameraFoV" in the file) needs no change anywhere else.
-struct CameraSpec {
-  geometry::Pose initial;           // p_j(0); yaw γ in radians, wrapped to [-π, π]
-  double maxVelocity = 0.0;         // v_j^max, m/s, > 0
-  double maxAngularVelocity = 0.0;  // γ̇_j^max, rad/s, > 0
-  double halfFov = 0.0;             // θ_j, radians, in (0, π): the scene's θ unless its own
-};
-
 // Our extension for football scenes: a pitch from (0, 0) to (length, width), whose markings
 // are drawn under everything (scene/pitch_markings.h). Drawing only: nothing collides with it.
 struct Pitch {
@@ -96,8 +87,8 @@ struct Scene {
   bool holdsStill() const;
 };
 
-// θ_j of every camera, in camera order: what the visibility and reward stages take.
-std::vector<double> halfFovs(const Scene& scene);
+// Every camera's lens, in camera order: what the visibility and reward stages take.
+std::vector<Lens> lenses(const Scene& scene);
 
 // Placement of an object at t = 0: the shape about the first waypoint, unrotated, undeformed.
 geometry::Ring initialPolygon(const MovingObject& object);

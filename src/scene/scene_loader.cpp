@@ -352,7 +352,7 @@ double halfFov(const Node& node) {
 CameraSpec camera(const Node& node, double sceneHalfFov) {
   node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV"});
   CameraSpec camera;
-  camera.halfFov = node.has("cameraFoV") ? halfFov(node.child("cameraFoV")) : sceneHalfFov;
+  camera.lens = node.has("cameraFoV") ? halfFov(node.child("cameraFoV")) : sceneHalfFov;
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};

@@ -10,9 +10,6 @@
 
 namespace camcov::scene {
 
-// The visibility sweep keeps visibleBy(s_l) as a 64-bit mask.
-inline constexpr std::size_t kMaxCameras = 64;
-
 // Bounds on magnitudes: far beyond any camera scene, and small enough that nothing computed
 // from them overflows (areas and orientation tests multiply coordinates; placing an object
 // multiplies speeds by times up to 1e9 s) and that a run's work stays bounded (the continuous-

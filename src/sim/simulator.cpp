@@ -20,22 +20,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool isFinite(const kinematics::CameraCommand& u) {
-  return std::isfinite(u.velocity.x) && std::isfinite(u.velocity.y) &&
-         std::isfinite(u.angularVelocity);
-}
-
-// Constraint 3 of Problem 2.2: ‖[ẋ ẏ]‖ ≤ v_max and |γ̇| ≤ γ̇_max. Non-finite commands stop.
-kinematics::CameraCommand saturate(kinematics::CameraCommand u, const scene::CameraSpec& limits) {
-  if (!std::isfinite(u.velocity.x) || !std::isfinite(u.velocity.y)) u.velocity = {};
-  if (!std::isfinite(u.angularVelocity)) u.angularVelocity = 0.0;
-  const double speed = geometry::norm(u.velocity);
-  if (speed > limits.maxVelocity) u.velocity = u.velocity * (limits.maxVelocity / speed);
-  u.angularVelocity =
-      std::clamp(u.angularVelocity, -limits.maxAngularVelocity, limits.maxAngularVelocity);
-  return u;
-}
-
 // Moves from `from` towards `to`, stopping at the last point strictly inside the boundary
 // (bisection to 2^-40 of the step). Returns whether the move was cut short.
 bool moveInside(const geometry::Ring& boundary, geometry::Vec2 from, geometry::Vec2& to) {
@@ -115,7 +99,7 @@ struct Simulation::State {
   State(const scene::Scene& scene, const params::Parameters& params)
       : scene(scene),
         kinematics(scene),
-        measure(params.reward, scene::halfFovs(scene)),
+        measure(params.reward, scene::lenses(scene)),
         safety(scene, params),
         accounting(kinematics, params.sim.delta),
         dt(params.sim.dt),
@@ -131,7 +115,7 @@ struct Simulation::State {
 
   kinematics::World world;
   StepRecord record;  // the present instant's, as measured so far
-  std::vector<kinematics::CameraCommand> commands;
+  std::vector<scene::CameraCommand> commands;
   std::vector<char> nonFiniteBefore;  // was camera j's last command so?
   std::vector<geometry::Vec2> velocities;
   std::vector<Contact> contacts;
@@ -237,14 +221,14 @@ void Simulation::measure() {
   s.previousSample = std::move(sample);
 }
 
-void Simulation::command(std::span<const kinematics::CameraCommand> commands) {
+void Simulation::command(std::span<const scene::CameraCommand> commands) {
   if (atLastInstant() || finished())
     throw std::logic_error("Simulation::command: the last instant takes no commands");
   State& s = *state_;
   const double t = time();
   for (std::size_t j = 0; j < cameras_.size(); ++j) {
-    kinematics::CameraCommand u = j < commands.size() ? commands[j] : kinematics::CameraCommand{};
-    const bool finite = isFinite(u);
+    scene::CameraCommand u = j < commands.size() ? commands[j] : scene::CameraCommand{};
+    const bool finite = u.isFinite();
     if (!finite && !s.nonFiniteBefore[j]) {
       events_.push_back(
           {t,
@@ -257,7 +241,7 @@ void Simulation::command(std::span<const kinematics::CameraCommand> commands) {
            ""});
     }
     s.nonFiniteBefore[j] = !finite;
-    s.commands[j] = saturate(u, s.scene.cameras[j]);
+    s.commands[j] = s.scene.cameras[j].saturate(u);
     s.velocities[j] = s.commands[j].velocity;
   }
   s.safety.apply(s.world, cameras_, s.velocities);
@@ -276,13 +260,15 @@ void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, R
     return;
   }
   for (std::size_t j = 0; j < cameras_.size(); ++j) {
-    geometry::Vec2 next = cameras_[j].position() + s.velocities[j] * s.dt;
-    if (moveInside(s.world.boundary, cameras_[j].position(), next)) ++s.summary.boundaryClamps;
-    cameras_[j] = {next.x, next.y,
-                   geometry::wrapAngle(cameras_[j].yaw + s.commands[j].angularVelocity * s.dt)};
+    // The position as the safety layer left it, the turn as commanded.
+    const geometry::Pose next =
+        scene::moved(cameras_[j], {s.velocities[j], s.commands[j].angularVelocity}, s.dt);
+    geometry::Vec2 position = next.position();
+    if (moveInside(s.world.boundary, cameras_[j].position(), position)) ++s.summary.boundaryClamps;
+    cameras_[j] = {position.x, position.y, next.yaw};
   }
   // The commands were for this step only: a caller that gives none next holds still.
-  std::fill(s.commands.begin(), s.commands.end(), kinematics::CameraCommand{});
+  std::fill(s.commands.begin(), s.commands.end(), scene::CameraCommand{});
   std::fill(s.velocities.begin(), s.velocities.end(), geometry::Vec2{});
   ++k_;
   measure();
@@ -313,7 +299,7 @@ RunSummary Simulation::summary() const {
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
                     control::Controller& controller, Recorder& recorder) {
   Simulation simulation(scene, params);
-  std::vector<kinematics::CameraCommand> commands(scene.cameras.size());
+  std::vector<scene::CameraCommand> commands(scene.cameras.size());
   std::vector<std::optional<geometry::Pose>> goals(scene.cameras.size());
   while (!simulation.finished()) {
     throwIfInterrupted();  // a caller that can be interrupted (Python) stops within a step

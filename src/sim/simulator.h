@@ -100,7 +100,7 @@ class Simulation {
   // the results instead of hiding in them); each is saturated to its camera's limits
   // (constraint 3 of Problem 2.2) and passed through the safety layer. Not at the last
   // instant; once per instant.
-  void command(std::span<const kinematics::CameraCommand> commands);
+  void command(std::span<const scene::CameraCommand> commands);
   std::vector<control::ControlEvent>& events() { return events_; }
   // Records the present instant (with each camera's goal, if any) and, unless it is the last,
   // integrates ṗ_j = u_j over dt (kept inside the boundary) and measures the next instant.

@@ -159,10 +159,10 @@ bool finite(Vec2 v) {
   return std::isfinite(v.x) && std::isfinite(v.y);
 }
 
-void checkCamera(const geometry::Pose& camera, double halfFov) {
-  if (!(halfFov > 0.0 && halfFov < std::numbers::pi)) {
+void checkCamera(const geometry::Pose& camera, const scene::Lens& lens) {
+  if (!(lens.halfFov > 0.0 && lens.halfFov < std::numbers::pi)) {
     throw std::invalid_argument("visibility: field-of-view half-angle must lie in (0, pi), got " +
-                                std::to_string(halfFov));
+                                std::to_string(lens.halfFov));
   }
   if (!finite(camera.position()) || !std::isfinite(camera.yaw)) {
     throw std::invalid_argument("visibility: camera pose must be finite");
@@ -175,14 +175,14 @@ void checkCamera(const geometry::Pose& camera, double halfFov) {
 struct CameraMemo {
   std::uint64_t build = 0;  // Occluders::buildId(); 0: nothing kept
   geometry::Pose pose;
-  double halfFov = 0.0;
+  scene::Lens lens;
   std::uint64_t lastUse = 0;
   std::vector<SeenInterval> seen;
 
   // Bit for bit: a pose that differs in the last bit is swept again, so a kept sweep is
   // exactly the one a new sweep would make.
-  bool holds(std::uint64_t b, const geometry::Pose& p, double theta) const {
-    return build == b && geometry::sameBits(pose, p) && geometry::sameBits(halfFov, theta);
+  bool holds(std::uint64_t b, const geometry::Pose& p, const scene::Lens& l) const {
+    return build == b && geometry::sameBits(pose, p) && scene::sameBits(lens, l);
   }
 };
 
@@ -204,12 +204,12 @@ struct Sweep::Impl {
   // What camera slot j at `pose` sees: a kept sweep, or a new one kept in place of the
   // slot's least recently used.
   std::span<const SeenInterval> seenBy(const Occluders& occluders, std::size_t j,
-                                       const geometry::Pose& pose, double halfFov) {
+                                       const geometry::Pose& pose, const scene::Lens& lens) {
     if (memos.size() <= j) memos.resize(j + 1);
     auto& slot = memos[j];
     ++clock;
     for (CameraMemo& memo : slot) {
-      if (memo.holds(occluders.buildId(), pose, halfFov)) {
+      if (memo.holds(occluders.buildId(), pose, lens)) {
         memo.lastUse = clock;
         ++counts.reused;
         return memo.seen;
@@ -218,12 +218,12 @@ struct Sweep::Impl {
     CameraMemo& memo = *std::min_element(
         slot.begin(), slot.end(),
         [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
-    const FieldOfView fov{pose.yaw, halfFov};
+    const FieldOfView fov{pose.yaw, lens.halfFov};
     TargetSink sink(edges, memo.seen);
     sweepFrom(occluders, pose.position(), &fov, sink);
     memo.build = occluders.buildId();
     memo.pose = pose;
-    memo.halfFov = halfFov;
+    memo.lens = lens;
     memo.lastUse = clock;
     return memo.seen;
   }
@@ -279,40 +279,40 @@ const CullingCounts& Sweep::counts() const {
 }
 
 std::span<const SeenInterval> Sweep::seenBy(const Occluders& occluders, std::size_t slot,
-                                            const geometry::Pose& camera, double halfFov) {
-  if (slot >= kMaxCameras) {
+                                            const geometry::Pose& camera, const scene::Lens& lens) {
+  if (slot >= scene::kMaxCameras) {
     throw std::invalid_argument("visibility: camera slot " + std::to_string(slot) +
                                 " beyond the 64 of a mask");
   }
-  checkCamera(camera, halfFov);
-  return impl_->seenBy(occluders, slot, camera, halfFov);
+  checkCamera(camera, lens);
+  return impl_->seenBy(occluders, slot, camera, lens);
 }
 
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
-                     std::span<const double> halfFovs, std::vector<Segment>& out) {
-  if (cameras.size() > kMaxCameras) {
+                     std::span<const scene::Lens> lenses, std::vector<Segment>& out) {
+  if (cameras.size() > scene::kMaxCameras) {
     throw std::invalid_argument("visibility: at most 64 cameras, got " +
                                 std::to_string(cameras.size()));
   }
-  if (halfFovs.size() < cameras.size()) {
+  if (lenses.size() < cameras.size()) {
     throw std::invalid_argument("visibility: " + std::to_string(cameras.size()) + " cameras but " +
-                                std::to_string(halfFovs.size()) + " fields of view");
+                                std::to_string(lenses.size()) + " lenses");
   }
   for (std::size_t j = 0; j < cameras.size(); ++j)
-    checkCamera(cameras[j], halfFovs[j]);
+    checkCamera(cameras[j], lenses[j]);
   impl_->tessellation.clear();
   for (std::size_t j = 0; j < cameras.size(); ++j) {  // Algorithm 1, line 2
-    impl_->tessellation.add(impl_->seenBy(occluders, j, cameras[j], halfFovs[j]),
+    impl_->tessellation.add(impl_->seenBy(occluders, j, cameras[j], lenses[j]),
                             static_cast<unsigned>(j));
   }
   impl_->tessellation.build(occluders, out);
 }
 
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
-                     double halfFov, std::vector<Segment>& out) {
-  std::array<double, kMaxCameras> halfFovs;
-  halfFovs.fill(halfFov);
-  segments(occluders, cameras, halfFovs, out);
+                     const scene::Lens& lens, std::vector<Segment>& out) {
+  std::array<scene::Lens, scene::kMaxCameras> lenses;
+  lenses.fill(lens);
+  segments(occluders, cameras, lenses, out);
 }
 
 void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::Ring& out) {
@@ -323,24 +323,24 @@ void Sweep::visibilityPolygon(const Occluders& occluders, Vec2 point, geometry::
 }
 
 void Sweep::fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
-                               double halfFov, geometry::Ring& out) {
-  checkCamera(camera, halfFov);
-  const FieldOfView fov{camera.yaw, halfFov};
+                               const scene::Lens& lens, geometry::Ring& out) {
+  checkCamera(camera, lens);
+  const FieldOfView fov{camera.yaw, lens.halfFov};
   PolygonSink sink(impl_->edges, out);
   impl_->sweepFrom(occluders, camera.position(), &fov, sink);
   sink.finish();
 }
 
-void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, const scene::Lens& lens,
                   SweepTrace& out) {
-  checkCamera(camera, halfFov);
+  checkCamera(camera, lens);
   out.camera = camera;
-  out.halfFov = halfFov;
+  out.lens = lens;
   out.frontBefore = {};
   out.inFovBefore = false;
   out.events.clear();
   // The whole scene at once, every piece, so that every event is recorded.
-  const FieldOfView fov{camera.yaw, halfFov};
+  const FieldOfView fov{camera.yaw, lens.halfFov};
   impl_->edges.build(occluders, camera.position(), &fov, PolarEdges::Faces::All);
   TraceObserver observer(impl_->edges, out);
   PolygonSink sink(impl_->edges, out.fieldOfView);

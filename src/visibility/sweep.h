@@ -24,6 +24,7 @@
 
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
+#include "scene/camera.h"
 #include "visibility/occluders.h"
 #include "visibility/segment.h"
 #include "visibility/sweep_trace.h"
@@ -49,35 +50,33 @@ struct CullingCounts {
 
 class Sweep {
  public:
-  static constexpr std::size_t kMaxCameras = 64;  // bits of Segment::visibleBy
-
   explicit Sweep(Culling culling = {});
   ~Sweep();
   Sweep(Sweep&&) noexcept;
   Sweep& operator=(Sweep&&) noexcept;
 
   // S(T, O, C) and visibleBy(s_l) (paper equation (1), Algorithm 1) for `cameras` (camera j
-  // is bit j of visibleBy), camera j with half-angle halfFovs[j] = θ_j in radians. Writes into
+  // is bit j of visibleBy), camera j with lens lenses[j] (half-angle θ_j in radians). Writes into
   // `out` (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
   // Each camera slot j keeps its last six sweeps: a camera whose arrangement
-  // (Occluders::buildId()), pose and θ_j are bit for bit those of a kept sweep is not swept
+  // (Occluders::buildId()), pose and lens are bit for bit those of a kept sweep is not swept
   // again, so a call where one camera moved costs one sweep and the union, O(n log n + k log k)
   // for k seen intervals (the optimizers move one camera at a time).
-  // Throws std::invalid_argument for more than kMaxCameras cameras, fewer half-angles than
+  // Throws std::invalid_argument for more than scene::kMaxCameras cameras, fewer lenses than
   // cameras, θ_j outside (0, π), or a non-finite pose.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
-                std::span<const double> halfFovs, std::vector<Segment>& out);
-  // The same for a team of like cameras, every one with half-angle `halfFov`.
-  void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras, double halfFov,
-                std::vector<Segment>& out);
+                std::span<const scene::Lens> lenses, std::vector<Segment>& out);
+  // The same for a team of like cameras, every one with lens `lens`.
+  void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
+                const scene::Lens& lens, std::vector<Segment>& out);
 
-  // What camera slot `slot` (< kMaxCameras; bit `slot` of segments()) at `camera` with
-  // half-angle θ sees of the targets' edges: the intervals segments() unites into S, from the
+  // What camera slot `slot` (< scene::kMaxCameras; bit `slot` of segments()) at `camera` with
+  // `lens` sees of the targets' edges: the intervals segments() unites into S, from the
   // slot's kept sweeps when they hold this query. Valid until the slot's next sweep. Throws
   // like segments().
   std::span<const SeenInterval> seenBy(const Occluders& occluders, std::size_t slot,
-                                       const geometry::Pose& camera, double halfFov);
+                                       const geometry::Pose& camera, const scene::Lens& lens);
 
   const CullingCounts& counts() const;
   // Keeps the latest sweep of each of `other`'s camera slots (replacing this one's), for a
@@ -95,14 +94,14 @@ class Sweep {
 
   // What one camera sees: the visibility polygon cut to its field of view, "defined by p_j
   // itself and the event points inside the field of view" (section IV-B). For drawing.
-  void fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
-                          geometry::Ring& out);
+  void fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
+                          const scene::Lens& lens, geometry::Ring& out);
 
   // The sweep of one camera event by event, for debugging: fieldOfViewPolygon() with every ray
   // recorded (see SweepTrace). Same sweep, same event order and same active edges as
   // segments() in a scene swept whole; allocates while it records. Throws like
   // fieldOfViewPolygon().
-  void trace(const Occluders& occluders, const geometry::Pose& camera, double halfFov,
+  void trace(const Occluders& occluders, const geometry::Pose& camera, const scene::Lens& lens,
              SweepTrace& out);
 
  private:

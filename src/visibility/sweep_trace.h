@@ -8,6 +8,7 @@
 
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
+#include "scene/camera.h"
 #include "visibility/occluders.h"
 
 namespace camcov::visibility {
@@ -51,7 +52,7 @@ struct TracedEvent {
 
 struct SweepTrace {
   geometry::Pose camera;
-  double halfFov = 0.0;  // θ, radians
+  scene::Lens lens;  // θ, radians
   // The camera sees nothing (strictly inside an object or outside the boundary): no events.
   bool blind = false;
   // Before the first event: on the ray just below the +x axis, where the sweep starts.

@@ -49,8 +49,8 @@ double firstCrossing(std::span<const Vec2> ring, Vec2 p, Vec2 q, std::size_t ski
 
 }  // namespace
 
-UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& camera, double halfFov,
-                       const Segment& s) {
+UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& camera,
+                       const scene::Lens& lens, const Segment& s) {
   constexpr std::size_t kNoEdge = std::numeric_limits<std::size_t>::max();
   const Vec2 p = camera.position();
   using Kind = ObjectRef::Kind;
@@ -75,7 +75,7 @@ UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& cam
   if (geometry::orientSign(a, b, p) >= 0) return {UnseenKind::BehindItsTarget, {}};
   const Vec2 q = (s.a + s.b) * 0.5;
   const double off = std::abs(geometry::wrapAngle(std::atan2(q.y - p.y, q.x - p.x) - camera.yaw));
-  if (off > halfFov) return {UnseenKind::OutsideFieldOfView, {}};
+  if (off > lens.halfFov) return {UnseenKind::OutsideFieldOfView, {}};
 
   UnseenReason reason;
   double nearest = std::numeric_limits<double>::infinity();

@@ -10,6 +10,7 @@
 
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
+#include "scene/camera.h"
 #include "visibility/segment.h"
 
 namespace camcov::visibility {
@@ -38,9 +39,9 @@ struct UnseenReason {
   ObjectRef blocker;  // for InsideObject and Blocked
 };
 
-// Why the camera at `camera` with half-angle `halfFov` (θ, radians) does not see segment `s` of
-// S(world): s.target and s.edge name the edge it lies on.
-UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& camera, double halfFov,
-                       const Segment& s);
+// Why the camera at `camera` with `lens` does not see segment `s` of S(world): s.target and
+// s.edge name the edge it lies on.
+UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& camera,
+                       const scene::Lens& lens, const Segment& s);
 
 }  // namespace camcov::visibility

@@ -41,7 +41,7 @@ std::vector<geometry::Pose> randomPoses(const kinematics::World& world, int coun
 template <bool kCopySegments>
 void visibility(benchmark::State& state) {
   const kinematics::World world = kinematics::Kinematics(dynamic9()).worldAt(0.0);
-  reward::RewardModel model(params::RewardParams{}, scene::halfFovs(dynamic9()));
+  reward::RewardModel model(params::RewardParams{}, scene::lenses(dynamic9()));
   model.setWorld(world);
   const std::vector<geometry::Pose> poses = randomPoses(world, 1000);
   std::vector<visibility::Segment> all;

@@ -64,7 +64,7 @@ void Sweep(benchmark::State& state, const std::string& name) {
   const Setup s = setup(scenePath(name));
   visibility::Occluders occluders(s.world);
   visibility::Sweep sweep;
-  const double theta = s.scene.cameras[0].halfFov;
+  const double theta = s.scene.cameras[0].lens.halfFov;
   std::size_t i = 0, seen = 0;
   for (auto _ : state) {
     seen += sweep.seenBy(occluders, 0, s.poses[i++ % kPoses], theta).size();
@@ -74,7 +74,7 @@ void Sweep(benchmark::State& state, const std::string& name) {
 
 void Probe(benchmark::State& state, const std::string& name) {
   const Setup s = setup(scenePath(name));
-  reward::RewardModel model(params::RewardParams{}, scene::halfFovs(s.scene));
+  reward::RewardModel model(params::RewardParams{}, scene::lenses(s.scene));
   model.setWorld(s.world);
   std::vector<geometry::Pose> team = s.team;
   const std::size_t moved = team.size() / 2;
@@ -88,7 +88,7 @@ void Probe(benchmark::State& state, const std::string& name) {
 
 void Evaluate(benchmark::State& state, const std::string& name) {
   const Setup s = setup(scenePath(name));
-  reward::RewardModel model(params::RewardParams{}, scene::halfFovs(s.scene));
+  reward::RewardModel model(params::RewardParams{}, scene::lenses(s.scene));
   model.setWorld(s.world);
   std::vector<geometry::Pose> team = s.team;
   std::size_t i = 0;

@@ -11,7 +11,7 @@ scene::CameraSpec camera(double halfFov, double speed = 1.0) {
   scene::CameraSpec c;
   c.maxVelocity = speed;
   c.maxAngularVelocity = 1.0;
-  c.halfFov = halfFov;
+  c.lens.halfFov = halfFov;
   return c;
 }
 

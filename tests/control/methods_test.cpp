@@ -45,7 +45,7 @@ TEST(Methods, EveryMethodMakesAControllerThatCommandsEveryCamera) {
     SCOPED_TRACE(m.name);
     const auto controller = m.make(scene, p, 1);
     ASSERT_NE(controller, nullptr);
-    std::vector<kinematics::CameraCommand> commands(cameras.size(), {{1e9, 1e9}, 1e9});
+    std::vector<scene::CameraCommand> commands(cameras.size(), {{1e9, 1e9}, 1e9});
     controller->control({0.0, world, cameras}, commands);
     for (const auto& u : commands)
       EXPECT_LT(geometry::norm(u.velocity), 1e9) << "every command was written";

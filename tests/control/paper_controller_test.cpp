@@ -101,7 +101,7 @@ TEST(PaperController, GivesEachCameraAGoalSampledForItsOwnFieldOfView) {
     for (const auto& e : log.events) {
       if (e.kind != "plan") continue;
       ++plans;
-      reward::RewardModel alone(p.reward, s.cameras[e.camera].halfFov);
+      reward::RewardModel alone(p.reward, s.cameras[e.camera].lens.halfFov);
       kinematics::World w;
       kinematics::Kinematics(s).worldAt(e.time, w);
       alone.setWorld(w);

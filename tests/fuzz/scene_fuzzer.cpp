@@ -52,7 +52,7 @@ void exercise(const scene::Scene& s) {
     const kinematics::World world = kinematics.worldAt(t);
     checkWorld(world);
     const visibility::Occluders occluders(world);
-    sweep.segments(occluders, cameras, scene::halfFovs(s), segments);
+    sweep.segments(occluders, cameras, scene::lenses(s), segments);
     for (const visibility::Segment& segment : segments) {
       if (!std::isfinite(segment.a.x + segment.a.y + segment.b.x + segment.b.y))
         fail("non-finite segment");

@@ -87,7 +87,7 @@ std::vector<geometry::Pose> everySampleScored(reward::RewardModel& model,
     if (!sampler.focusOnUnseen(model, random)) return {};
     std::vector<geometry::Pose> samples;
     for (int k = 0; k < samplesPerCamera; ++k) {
-      if (const auto pose = sampler.sample(random, validity, model.halfFov(j)))
+      if (const auto pose = sampler.sample(random, validity, model.lens(j)))
         samples.push_back(*pose);
     }
     if (samples.empty()) return {};

@@ -16,7 +16,7 @@ struct Runner {
   double t = 0.0;
 
   void step(const kinematics::World& w, double vmax, double wmax) {
-    kinematics::CameraCommand u = executor.step(pose, w, {}, vmax, kDt, t);
+    scene::CameraCommand u = executor.step(pose, w, {}, vmax, kDt, t);
     const double speed = geometry::norm(u.velocity);
     if (speed > vmax) u.velocity = u.velocity * (vmax / speed);
     u.angularVelocity = std::clamp(u.angularVelocity, -wmax, wmax);

@@ -45,12 +45,12 @@ TEST(VisibilitySampler, SamplesAreValidAndSeeTheirPoint) {
     ASSERT_TRUE(q1);
     ASSERT_TRUE(sampler.focus(model, *q1));
     for (int k = 0; k < 10; ++k) {
-      const auto pose = sampler.sample(random, validity, model.halfFov(0));
+      const auto pose = sampler.sample(random, validity, model.lens(0));
       if (!pose) continue;
       ++samples;
       EXPECT_TRUE(validity.isValid(pose->position()));
       EXPECT_GE(validity.clearance(pose->position()), 1.0);
-      EXPECT_TRUE(sees(w, *pose, *q1, model.halfFov(0)))
+      EXPECT_TRUE(sees(w, *pose, *q1, model.lens(0).halfFov))
           << "q1 (" << q1->x << ", " << q1->y << ") pose (" << pose->x << ", " << pose->y << ", "
           << pose->yaw << ")";
     }

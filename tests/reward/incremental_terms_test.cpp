@@ -33,7 +33,7 @@ void expectSameBits(double expected, double actual, const char* what) {
 struct Caller {
   testing::SplitMix64 random;
   std::vector<Pose> team;
-  std::vector<double> thetas;
+  std::vector<scene::Lens> thetas;
   std::vector<Pose> before;  // the team before the last probe
 
   void next() {
@@ -66,7 +66,7 @@ TEST(IncrementalTerms, EqualTheTermsOfSToTheBitOverLongSequencesOfProbes) {
     visibility::Occluders occluders(randomWorld(random));
     visibility::Sweep afresh, kept;
     IncrementalTerms terms;
-    Caller caller{{seed * 7919}, {}, std::vector<double>(12, std::numbers::pi / 6), {}};
+    Caller caller{{seed * 7919}, {}, std::vector<scene::Lens>(12, std::numbers::pi / 6), {}};
     for (int j = 0; j < 4; ++j)
       caller.team.push_back(randomPose(random));
     std::vector<visibility::Segment> s;
@@ -89,7 +89,7 @@ TEST(IncrementalRepulsion, EqualsRepulsionToTheBit) {
     kinematics::World world = randomWorld(random);
     std::vector<geometry::Box> boxes = objectBoxes(world);
     IncrementalRepulsion repulsionKept;
-    Caller caller{{seed * 104729}, {}, std::vector<double>(12, 0.5), {}};
+    Caller caller{{seed * 104729}, {}, std::vector<scene::Lens>(12, 0.5), {}};
     for (int j = 0; j < 4; ++j)
       caller.team.push_back(randomPose(random));
     for (int call = 0; call < 400; ++call) {
@@ -118,7 +118,7 @@ TEST(RewardModel, ProbesGiveTheRewardOfEvaluateToTheBit) {
   RewardModel afresh(params::RewardParams{}, std::numbers::pi / 6);
   probing.setWorld(world);
   afresh.setWorld(world);
-  Caller caller{{5}, {}, std::vector<double>(12, std::numbers::pi / 6), {}};
+  Caller caller{{5}, {}, std::vector<scene::Lens>(12, std::numbers::pi / 6), {}};
   for (int j = 0; j < 5; ++j)
     caller.team.push_back(randomPose(random));
   for (int call = 0; call < 500; ++call) {
@@ -138,7 +138,7 @@ TEST(Metrics, RunSumsAreThePaperSumsOverSegments) {
     std::vector<Pose> team;
     for (int j = 0; j < 6; ++j)
       team.push_back(randomPose(random));
-    const std::vector<double> thetas{0.5, 0.5, 0.3, 0.5, 1.2, 0.5};
+    const std::vector<scene::Lens> thetas{0.5, 0.5, 0.3, 0.5, 1.2, 0.5};
     visibility::Sweep sweep;
     std::vector<visibility::Segment> s;
     sweep.segments(occluders, team, thetas, s);
@@ -147,13 +147,13 @@ TEST(Metrics, RunSumsAreThePaperSumsOverSegments) {
       if (segment.visibleBy != 0) length += visibility::length(segment);
       for (std::size_t j = 0; j < team.size(); ++j) {
         if ((segment.visibleBy >> j) & 1u) {
-          angles +=
-              thetas[0] / thetas[j] * subtendedAngle(segment.a, segment.b, team[j].position());
+          angles += thetas[0].halfFov / thetas[j].halfFov *
+                    subtendedAngle(segment.a, segment.b, team[j].position());
         }
       }
     }
     EXPECT_NEAR(visibleLength(s), length, 1e-12 * (1 + length));
-    EXPECT_NEAR(utilization(s, team, thetas), angles / (2 * thetas[0]) / 6.0, 1e-13);
+    EXPECT_NEAR(utilization(s, team, thetas), angles / (2 * thetas[0].halfFov) / 6.0, 1e-13);
   }
 }
 
@@ -172,7 +172,7 @@ TEST(Metrics, RunsJoinTouchingPiecesAndStopAtGapsAndEdgeEnds) {
   const double camera0 = subtendedAngle({0, 0}, {2, 0}, p0);
   const double camera1 = subtendedAngle({1, 0}, {2, 0}, p1) + subtendedAngle({3, 0}, {4, 0}, p1) +
                          subtendedAngle({4, 0}, {4, 4}, p1);
-  const std::vector<double> thetas{0.5, 0.5};
+  const std::vector<scene::Lens> thetas{0.5, 0.5};
   EXPECT_EQ(utilization(s, team, thetas), (camera0 + camera1) / (2 * 0.5) / 2);
 }
 

@@ -54,7 +54,7 @@ TEST(RewardModel, UnlikeCamerasEachSeeWithTheirOwnFieldOfViewAndUtilizationAvera
   const std::vector<Pose> cameras{{0.5, -5.0, std::numbers::pi / 2},
                                   {0.5 - 5.0 * std::tan(0.7), 6.0, -std::numbers::pi / 2}};
   const double wide = std::numbers::pi / 3;
-  RewardModel unlike(params::RewardParams{}, std::vector{kTheta, wide});
+  RewardModel unlike(params::RewardParams{}, std::vector<scene::Lens>{kTheta, wide});
   unlike.setWorld(unitSquareWorld());
   const RewardTerms t = unlike.evaluate(cameras);
   EXPECT_NEAR(visibleLengthOf(unlike.segments(), 0), 1.0, 1e-12);

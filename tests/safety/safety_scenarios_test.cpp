@@ -21,7 +21,7 @@ class ScriptedController final : public control::Controller {
  public:
   using Script = std::function<geometry::Vec2(std::size_t, geometry::Vec2)>;
   explicit ScriptedController(Script script) : script_(std::move(script)) {}
-  void control(const control::Observation& o, std::span<kinematics::CameraCommand> out) override {
+  void control(const control::Observation& o, std::span<scene::CameraCommand> out) override {
     for (std::size_t j = 0; j < out.size(); ++j)
       out[j] = {script_(j, o.cameras[j].position()), 0.0};
   }

@@ -112,7 +112,7 @@ TEST(SceneFamilies, EveryFamilyMakesScenesThatLoadWithinItsRanges) {
       EXPECT_GE(span, f.roomLength.lo - 0.25);
       EXPECT_LE(span, f.roomLength.hi + 0.25);
       for (const CameraSpec& c : s.cameras) {
-        const double fov = geometry::radToDeg(c.halfFov);
+        const double fov = geometry::radToDeg(c.lens.halfFov);
         EXPECT_GE(fov, f.halfFovDeg.lo - 1e-9);
         EXPECT_LE(fov, f.halfFovDeg.hi + 1e-9);
         EXPECT_GE(span / c.maxVelocity, f.crossingSeconds.lo);         // floored: never faster
@@ -301,7 +301,7 @@ TEST(SceneFamilies, CamerasThatStartFacingAwaySeeNoObjectAtAnySampledInstant) {
         k.worldAt(t, w);
         for (const geometry::Ring& poly : polygonsAt(w)) {
           for (const CameraSpec& c : s.cameras)
-            ASSERT_FALSE(inView(poly, c.initial, c.halfFov)) << "t = " << t;
+            ASSERT_FALSE(inView(poly, c.initial, c.lens.halfFov)) << "t = " << t;
         }
       }
     }

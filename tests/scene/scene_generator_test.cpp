@@ -76,7 +76,7 @@ TEST(GenerateScene, HasTheCountsLimitsAndFieldAskedFor) {
   for (const auto& c : s.cameras) {
     EXPECT_DOUBLE_EQ(c.maxVelocity, 3.0);
     EXPECT_DOUBLE_EQ(c.maxAngularVelocity, 1.5);
-    EXPECT_DOUBLE_EQ(c.halfFov, geometry::degToRad(25.0));
+    EXPECT_DOUBLE_EQ(c.lens.halfFov, geometry::degToRad(25.0));
   }
   const geometry::Box field = geometry::boundingBox(s.boundary);
   EXPECT_EQ(s.boundary.size(), 4u);

@@ -109,7 +109,7 @@ TEST(LoadScene, NormalisesClockwiseShapesAndAppliesDefaults) {
   EXPECT_EQ(s.targets[0].angularVelocity, 0.0);
   EXPECT_TRUE(s.targets[0].isStatic());
   for (const auto& c : s.cameras)
-    EXPECT_NEAR(c.halfFov, std::numbers::pi / 6, 1e-15);
+    EXPECT_NEAR(c.lens.halfFov, std::numbers::pi / 6, 1e-15);
   EXPECT_NEAR(s.cameras[0].initial.yaw, -50.0 * std::numbers::pi / 180.0, 1e-12);  // 310° wraps
   EXPECT_TRUE(s.obstacles.empty());
 }
@@ -123,9 +123,9 @@ TEST(LoadScene, ACamerasOwnFieldOfViewOverridesTheScenes) {
                 {"pos": "POINT(4 -4)", "angle": 135, "maxVelocity": 1, "maxAngularVelocity": 1,
                  "cameraFoV": 60}]})js",
                              "unlike.json");
-  EXPECT_NEAR(s.cameras[0].halfFov, std::numbers::pi / 6, 1e-15);
-  EXPECT_NEAR(s.cameras[1].halfFov, std::numbers::pi / 3, 1e-15);
-  EXPECT_EQ(halfFovs(s), (std::vector{s.cameras[0].halfFov, s.cameras[1].halfFov}));
+  EXPECT_NEAR(s.cameras[0].lens.halfFov, std::numbers::pi / 6, 1e-15);
+  EXPECT_NEAR(s.cameras[1].lens.halfFov, std::numbers::pi / 3, 1e-15);
+  EXPECT_EQ(lenses(s), (std::vector<Lens>{s.cameras[0].lens, s.cameras[1].lens}));
 }
 
 TEST(LoadScene, ObstaclesKeyIsOptionalAndDescriptionIsKept) {

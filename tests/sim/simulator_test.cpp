@@ -18,8 +18,8 @@ namespace {
 // Asks every camera for the same command, and remembers what it was shown.
 class ConstantController final : public control::Controller {
  public:
-  explicit ConstantController(kinematics::CameraCommand u) : u_(u) {}
-  void control(const control::Observation& o, std::span<kinematics::CameraCommand> out) override {
+  explicit ConstantController(scene::CameraCommand u) : u_(u) {}
+  void control(const control::Observation& o, std::span<scene::CameraCommand> out) override {
     seenTimes.push_back(o.time);
     seenWorldTimes.push_back(o.world.time);
     for (auto& c : out)
@@ -34,7 +34,7 @@ class ConstantController final : public control::Controller {
   std::vector<double> seenTimes, seenWorldTimes;
 
  private:
-  kinematics::CameraCommand u_;
+  scene::CameraCommand u_;
   std::vector<control::ControlEvent> events_;
 };
 
@@ -78,12 +78,12 @@ TEST(Simulate, StepsAtFixedDtAndShowsTheControllerOnlyThePresent) {
 // for a finite move.
 class BuggyController final : public control::Controller {
  public:
-  void control(const control::Observation& o, std::span<kinematics::CameraCommand> out) override {
+  void control(const control::Observation& o, std::span<scene::CameraCommand> out) override {
     const auto k = static_cast<int>(std::lround(o.time / 0.1));
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    out[0] = (k >= 3 && k <= 5) ? kinematics::CameraCommand{{nan, 0.0}, 0.0}
-             : k == 8           ? kinematics::CameraCommand{{0.0, 0.0}, HUGE_VAL}
-                                : kinematics::CameraCommand{{1.0, 0.0}, 0.0};
+    out[0] = (k >= 3 && k <= 5) ? scene::CameraCommand{{nan, 0.0}, 0.0}
+             : k == 8           ? scene::CameraCommand{{0.0, 0.0}, HUGE_VAL}
+                                : scene::CameraCommand{{1.0, 0.0}, 0.0};
     for (std::size_t j = 1; j < out.size(); ++j)
       out[j] = {{1.0, 0.0}, 0.0};
   }
@@ -229,13 +229,13 @@ class FingerprintRecorder final : public Recorder {
 TEST(Simulation, SteppedByHandIsTheSameRunAsSimulate) {
   params::Parameters p;
   p.sim.duration = 1.5;
-  const kinematics::CameraCommand u{{0.7, -0.4}, 0.3};
+  const scene::CameraCommand u{{0.7, -0.4}, 0.3};
   ConstantController a(u), b(u);
   FingerprintRecorder whole, stepped;
   const RunSummary expected = simulate(oneTargetScene(), p, a, whole);
 
   Simulation simulation(oneTargetScene(), p);
-  std::vector<kinematics::CameraCommand> commands(2);
+  std::vector<scene::CameraCommand> commands(2);
   std::vector<std::optional<geometry::Pose>> goals(2, geometry::Pose{1, 2, 3});
   int instants = 0;
   while (!simulation.finished()) {
@@ -266,7 +266,7 @@ TEST(Simulation, ACallerCommandsEachStepAndWithoutCommandsTheCamerasHoldStill) {
   FingerprintRecorder recorder;
   const geometry::Pose start = simulation.cameras()[1];
   // Camera 1 (2 m/s, 1 rad/s) asked for 5 m/s along x and 0.5 rad/s: saturated to 2 m/s.
-  const std::vector<kinematics::CameraCommand> fast{{{0, 0}, 0}, {{5, 0}, 0.5}};
+  const std::vector<scene::CameraCommand> fast{{{0, 0}, 0}, {{5, 0}, 0.5}};
   simulation.command(fast);
   simulation.advance({}, recorder);
   EXPECT_NEAR(simulation.cameras()[1].x - start.x, 2.0 * p.sim.dt, 1e-12);

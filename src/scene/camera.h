@@ -1,0 +1,67 @@
+#pragma once
+// What a camera is, in one place: where it starts, what it sees (its lens) and how it may move
+// (paper section II: dynamics ṗ_j = u_j; Problem 2.2, constraint 3: ‖[ẋ ẏ]‖ ≤ v_j^max and
+// |γ̇_j| ≤ γ̇_j^max). Visibility, reward, planners, controllers, the safety layer and the
+// simulator read a camera only through these types, so a property added here (a lens's reach,
+// say) needs no parallel array threaded through the stages.
+#include <cstddef>
+#include <vector>
+
+#include "geometry/same_bits.h"
+#include "geometry/vec2.h"
+
+namespace camcov::scene {
+
+// The visibility sweep keeps visibleBy(s_l) as a 64-bit mask, one bit a camera.
+inline constexpr std::size_t kMaxCameras = 64;
+
+// What a camera sees from its pose: the wedge within θ_j either side of its yaw.
+struct Lens {
+  // Implicit on purpose: a half-angle alone is the paper's camera.
+  constexpr Lens(double halfFov = 0.0) : halfFov(halfFov) {}
+
+  double halfFov;  // θ_j, radians, in (0, π)
+
+  constexpr bool operator==(const Lens&) const = default;
+};
+
+// Bit-for-bit equality, for the caches keyed by a camera's lens (geometry/same_bits.h).
+inline bool sameBits(const Lens& a, const Lens& b) {
+  return geometry::sameBits(a.halfFov, b.halfFov);
+}
+
+// What moves a camera: its velocity u_j = ṗ_j. Controllers produce it, the plan executor
+// computes it, the safety layer and the simulator consume it.
+struct CameraCommand {
+  geometry::Vec2 velocity;       // [ẋ, ẏ], m/s (saturated to v_max)
+  double angularVelocity = 0.0;  // γ̇, rad/s (saturated to γ̇_max)
+
+  bool isFinite() const;
+};
+
+// How far a camera may move and turn in one time step dt.
+struct StepLimits {
+  double maxTranslation = 0.0;  // m per step: v_max · dt
+  double maxRotation = 0.0;     // rad per step: γ̇_max · dt
+};
+
+struct CameraSpec {
+  geometry::Pose initial;           // p_j(0); yaw γ in radians, wrapped to [-π, π]
+  double maxVelocity = 0.0;         // v_j^max, m/s, > 0; also the speed the safety layer bounds
+  double maxAngularVelocity = 0.0;  // γ̇_j^max, rad/s, > 0
+  Lens lens;                        // the scene's θ unless the camera has its own
+
+  // Constraint 3: the command scaled into ‖v‖ ≤ v_max and clamped to |γ̇| ≤ γ̇_max. A non-finite
+  // component stops that part of the motion (the simulator records it as an event).
+  CameraCommand saturate(CameraCommand u) const;
+  StepLimits stepLimits(double dt) const { return {maxVelocity * dt, maxAngularVelocity * dt}; }
+  // How long running `length` m and turning `turn` rad at once takes at full speed: the longer
+  // of the two (section V-B's estimate for the assignment; obstacles ignored).
+  double travelTime(double length, double turn) const;
+  double travelTime(const geometry::Pose& from, const geometry::Pose& to) const;
+};
+
+// One Euler step of ṗ = u over dt, the yaw wrapped to [-π, π].
+geometry::Pose moved(const geometry::Pose& pose, const CameraCommand& u, double dt);
+
+}  // namespace camcov::scene
