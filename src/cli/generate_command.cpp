@@ -159,7 +159,9 @@ Registration addGenerateCommand(CLI::App& app) {
           ->capture_default_str();
   cmd->add_option("--targets", g.targets, "number of targets N (1 to 10000)")
       ->capture_default_str();
-  cmd->add_option("--cameras", g.cameras, "number of cameras M (1 to 64)")->capture_default_str();
+  cmd->add_option("--cameras", g.cameras,
+                  fmt::format("number of cameras M (1 to {})", scene::kMaxCameras))
+      ->capture_default_str();
   cmd->add_option("--vertices", g.vertices,
                   "vertices of each target V (3 to 100000): a polygon inscribed in an ellipse, "
                   "4 a rectangle")

@@ -90,7 +90,7 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
                  "present on average")
       ->check(within(0.0, 1e6, false));
   cmd.add_option("--cameras", o.scene.cameras, "cameras, spread along the boundary facing in")
-      ->check(within(1, 64))
+      ->check(within(1, static_cast<int>(scene::kMaxCameras)))
       ->capture_default_str();
   cmd.add_option("--cameras-from", o.camerasFrom,
                  "camera poses instead: JSON list [{\"x\":..,\"y\":..,\"yaw_deg\":..}]")

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geometry/ring.h"
+#include "scene/scene_writer.h"
 #include "util/counted.h"
 #include "util/input_error.h"
 
@@ -27,13 +28,12 @@ double us(double v) {
   return std::round(v * 1e6) / 1e6;
 }
 
-std::string wktRing(const geometry::Ring& ring) {
-  std::string out = "POLYGON((";
-  for (std::size_t i = 0; i <= ring.size(); ++i) {
-    const Vec2 p = ring[i % ring.size()];
-    out += fmt::format("{}{} {}", i == 0 ? "" : ",", mm(p.x), mm(p.y));
-  }
-  return out + "))";
+// To the millimetre, as the file gives it.
+geometry::Ring mmRing(const geometry::Ring& ring) {
+  geometry::Ring out;
+  for (const Vec2 p : ring)
+    out.push_back({mm(p.x), mm(p.y)});
+  return out;
 }
 
 geometry::Ring disc(Vec2 centre, double radius) {
@@ -300,50 +300,50 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     built.duration = std::max(built.duration, t.times.back());
   const geometry::Box box = boundaryBox(recording, kept, o, built.notes);
 
-  nlohmann::json& scene = built.scene;
-  scene["description"] = describeScene(recording, o);
-  scene["boundary"] = wktRing({{box.min.x, box.min.y},
-                               {box.max.x, box.min.y},
-                               {box.max.x, box.max.y},
-                               {box.min.x, box.max.y}});
-  if (recording.onPitch)
-    scene["pitch"] = {{"length", recording.pitch.length}, {"width", recording.pitch.width}};
-  const auto tracked = [&](const RecordedTrack& t, double radius) {
-    nlohmann::json samples = nlohmann::json::array();
-    for (std::size_t k = 0; k < t.times.size(); ++k)
-      samples.push_back({t.times[k], mm(t.positions[k].x), mm(t.positions[k].y)});
-    nlohmann::json object = {{"shape", wktRing(disc({0.0, 0.0}, radius))},
-                             {"track", {{"samples", samples}}}};
-    if (!t.color.empty()) object["color"] = t.color;
+  scene::WrittenScene scene;
+  scene.description = describeScene(recording, o);
+  scene.boundary = mmRing({{box.min.x, box.min.y},
+                           {box.max.x, box.min.y},
+                           {box.max.x, box.max.y},
+                           {box.min.x, box.max.y}});
+  if (recording.onPitch) scene.pitch = scene::Pitch{recording.pitch.length, recording.pitch.width};
+  const auto still = [](geometry::Ring shape, Vec2 at) {
+    scene::MovingObject object;
+    object.shape = std::move(shape);
+    object.path = {{mm(at.x), mm(at.y)}};
     return object;
   };
-  scene["targets"] = nlohmann::json::array();
+  const auto tracked = [&](const RecordedTrack& t, double radius) {
+    scene::Track track;
+    track.times = t.times;
+    for (const Vec2 p : t.positions)
+      track.positions.push_back({mm(p.x), mm(p.y)});
+    scene::MovingObject object = still(mmRing(disc({0.0, 0.0}, radius)), track.positions.front());
+    object.track = std::move(track);
+    object.color = t.color;
+    return object;
+  };
   for (const auto& t : kept.targets)
-    scene["targets"].push_back(tracked(t, t.kind == "ball" ? o.ballRadius : o.personRadius));
-  scene["obstacles"] = nlohmann::json::array();
+    scene.targets.push_back(tracked(t, t.kind == "ball" ? o.ballRadius : o.personRadius));
   std::vector<geometry::Ring> solid;  // where a camera must not start
   for (const Wall& w : recording.walls) {
     solid.push_back(wallRing(w, o.wallThickness));
-    scene["obstacles"].push_back({{"shape", wktRing(solid.back())}, {"path", "POLYGON((0 0))"}});
+    scene.obstacles.push_back(still(mmRing(solid.back()), {0.0, 0.0}));
   }
   for (const Pillar& p : recording.pillars) {
     solid.push_back(disc(p.centre, p.radius));
-    scene["obstacles"].push_back(
-        {{"shape", wktRing(disc({0.0, 0.0}, p.radius))},
-         {"path", fmt::format("POLYGON(({} {}))", mm(p.centre.x), mm(p.centre.y))}});
+    scene.obstacles.push_back(still(mmRing(disc({0.0, 0.0}, p.radius)), p.centre));
   }
   for (const auto& t : kept.movingObstacles)
-    scene["obstacles"].push_back(tracked(t, o.ballRadius));
-  scene["cameraFoV"] = o.cameraHalfFovDeg;
-
-  scene["cameras"] = nlohmann::json::array();
+    scene.obstacles.push_back(tracked(t, o.ballRadius));
+  scene.halfFovDegrees = o.cameraHalfFovDeg;
   for (const auto& p : cameraTeam(o, box, solid)) {
-    scene["cameras"].push_back(
-        {{"pos", fmt::format("POINT({} {})", mm(p.x), mm(p.y))},
-         {"angle", std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0},
-         {"maxVelocity", o.cameraSpeed},
-         {"maxAngularVelocity", o.cameraTurnRate}});
+    scene.cameras.push_back({{mm(p.x), mm(p.y)},
+                             std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0,
+                             o.cameraSpeed,
+                             o.cameraTurnRate});
   }
+  built.scene = scene::sceneJson(scene);
   return built;
 }
 

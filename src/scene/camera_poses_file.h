@@ -10,8 +10,8 @@
 
 namespace camcov::scene {
 
-// Throws SceneError (file, JSON path, problem) for anything but a list of 1 to 64 poses with
-// x, y within the scene format's ±1e9 m and yaw_deg within ±1e6 degrees, each key once.
+// Throws SceneError (file, JSON path, problem) for anything but a list of 1 to kMaxCameras poses
+// with x, y within the scene format's ±1e9 m and yaw_deg within ±1e6 degrees, each key once.
 std::vector<geometry::Pose> loadCameraPoses(const std::filesystem::path& file);
 std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const std::string& source);
 

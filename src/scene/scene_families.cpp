@@ -13,6 +13,7 @@
 
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
+#include "scene/scene_writer.h"
 #include "util/fnv1a.h"
 #include "util/input_error.h"
 #include "util/random.h"
@@ -455,14 +456,6 @@ T pick(Random& r, const std::vector<T>& kinds) {
 }
 double drawSign(Random& r) {
   return r.uniform() < 0.5 ? -1.0 : 1.0;
-}
-
-// Open ring, as the published files write them.
-std::string wkt(const std::vector<Vec2>& points) {
-  std::string out = "POLYGON((";
-  for (std::size_t i = 0; i < points.size(); ++i)
-    out += fmt::format("{}{} {}", i == 0 ? "" : ",", points[i].x, points[i].y);
-  return out + "))";
 }
 
 // --- rooms -----------------------------------------------------------------------------------
@@ -1175,40 +1168,35 @@ std::string describe(const SceneFamily& f, std::uint64_t seed, const Draw& d) {
       d.halfFovDeg, kStarts.at(static_cast<std::size_t>(d.start)));
 }
 
-nlohmann::json objectJson(const Object& o) {
-  nlohmann::json j{{"shape", wkt(o.shape)}, {"path", wkt(o.path)}};
-  if (o.path.size() > 1) j["velocity"] = o.velocity;
-  if (o.angularVelocity != 0.0) j["angularVelocity"] = o.angularVelocity;
+MovingObject movingObject(const Object& o) {
+  MovingObject m;
+  m.shape = o.shape;
+  m.path = o.path;
+  m.velocity = o.velocity;
+  m.angularVelocity = o.angularVelocity;
   if (!o.keyframeShapes.empty()) {
-    nlohmann::json keyframes = nlohmann::json::array();
+    Deformation d{o.period, {}};
     for (std::size_t k = 0; k < o.keyframeShapes.size(); ++k)
-      keyframes.push_back({{"time", o.keyframeTimes[k]}, {"shape", wkt(o.keyframeShapes[k])}});
-    j["deformation"] = {{"period", o.period}, {"keyframes", std::move(keyframes)}};
+      d.keyframes.push_back({o.keyframeTimes[k], o.keyframeShapes[k]});
+    m.deformation = std::move(d);
   }
-  return j;
+  return m;
 }
 
-nlohmann::json sceneJson(const SceneFamily& f, std::uint64_t seed, const Draw& d) {
-  nlohmann::json scene;
-  scene["description"] = describe(f, seed, d);
-  scene["boundary"] = wkt(d.room.boundary);
-  scene["cameraFoV"] = d.halfFovDeg;
-  scene["targets"] = nlohmann::json::array();
+nlohmann::json familySceneJson(const SceneFamily& f, std::uint64_t seed, const Draw& d) {
+  WrittenScene scene;
+  scene.description = describe(f, seed, d);
+  scene.boundary = d.room.boundary;
+  scene.halfFovDegrees = d.halfFovDeg;
   for (const Object& o : d.targets)
-    scene["targets"].push_back(objectJson(o));
-  scene["obstacles"] = nlohmann::json::array();
+    scene.targets.push_back(movingObject(o));
   for (const std::vector<Object>* group : {&d.pillars, &d.obstacles}) {
     for (const Object& o : *group)
-      scene["obstacles"].push_back(objectJson(o));
+      scene.obstacles.push_back(movingObject(o));
   }
-  scene["cameras"] = nlohmann::json::array();
-  for (const Camera& c : d.cameras) {
-    scene["cameras"].push_back({{"pos", fmt::format("POINT({} {})", c.position.x, c.position.y)},
-                                {"angle", c.yawDeg},
-                                {"maxVelocity", d.cameraSpeed},
-                                {"maxAngularVelocity", d.turnRate}});
-  }
-  return scene;
+  for (const Camera& c : d.cameras)
+    scene.cameras.push_back({c.position, c.yawDeg, d.cameraSpeed, d.turnRate});
+  return sceneJson(scene);
 }
 
 }  // namespace
@@ -1218,7 +1206,7 @@ nlohmann::json generateFamilyScene(const SceneFamily& f, std::uint64_t seed) {
   Random root(fnv1a(f.name) ^ (seed * 0x9e3779b97f4a7c15ull));
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     Random r(root.fork());
-    if (const std::optional<Draw> d = tryDraw(f, r)) return sceneJson(f, seed, *d);
+    if (const std::optional<Draw> d = tryDraw(f, r)) return familySceneJson(f, seed, *d);
   }
   throw std::runtime_error(
       fmt::format("family {} seed {}: no scene after {} attempts", f.name, seed, kAttempts));

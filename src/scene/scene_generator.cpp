@@ -10,6 +10,7 @@
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
 #include "scene/scene_validation.h"
+#include "scene/scene_writer.h"
 #include "util/input_error.h"
 #include "util/random.h"
 
@@ -32,14 +33,6 @@ double mm(double v) {
 }
 double um(double v) {
   return std::round(v * 1e6) / 1e6;
-}
-
-// Open ring, as the published files write them.
-std::string wktPolygon(const std::vector<Vec2>& points) {
-  std::string out = "POLYGON((";
-  for (std::size_t i = 0; i < points.size(); ++i)
-    out += fmt::format("{}{} {}", i == 0 ? "" : ",", points[i].x, points[i].y);
-  return out + "))";
 }
 
 void require(bool ok, const std::string& message) {
@@ -189,16 +182,12 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
   Random targetRandom(root.fork());
   Random cameraRandom(root.fork());
 
-  nlohmann::json scene;
-  scene["description"] = o.description.empty() ? defaultDescription(o) : o.description;
-  scene["boundary"] =
-      wktPolygon({{-mm(hw), -mm(hh)}, {mm(hw), -mm(hh)}, {mm(hw), mm(hh)}, {-mm(hw), mm(hh)}});
-  scene["cameraFoV"] = o.cameraHalfFovDeg;
-  scene["obstacles"] = nlohmann::json::array();
+  WrittenScene scene;
+  scene.description = o.description.empty() ? defaultDescription(o) : o.description;
+  scene.boundary = {{-mm(hw), -mm(hh)}, {mm(hw), -mm(hh)}, {mm(hw), mm(hh)}, {-mm(hw), mm(hh)}};
+  scene.halfFovDegrees = o.cameraHalfFovDeg;
 
   CentreGrid centres(o.fieldWidth, o.fieldHeight, 2 * radius + o.clearance);
-  const std::string shapeText = wktPolygon(shape);
-  scene["targets"] = nlohmann::json::array();
   for (int i = 0; i < o.targets; ++i) {
     Vec2 c;
     int tries = 0;
@@ -211,7 +200,8 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
       c = {mm(targetRandom.uniform(-cx, cx)), mm(targetRandom.uniform(-cy, cy))};
     } while (!within(c, cx, cy) || centres.anyCloser(c, 2 * radius));
     centres.add(c);
-    nlohmann::json target{{"shape", shapeText}};
+    MovingObject target;
+    target.shape = shape;
     if (o.loopSize > 0.0) {
       const double angle = targetRandom.uniform(0.0, 2 * std::numbers::pi);
       std::vector<Vec2> loop;
@@ -220,16 +210,15 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
         const Vec2 p = c + geometry::rotated(corner, angle);
         loop.push_back({mm(p.x), mm(p.y)});
       }
-      target["path"] = wktPolygon(loop);
-      target["velocity"] = o.targetSpeed;
+      target.path = std::move(loop);
+      target.velocity = o.targetSpeed;
     } else {
-      target["path"] = wktPolygon({c});
+      target.path = {c};
     }
-    scene["targets"].push_back(std::move(target));
+    scene.targets.push_back(std::move(target));
   }
 
   std::vector<Vec2> cameras;
-  scene["cameras"] = nlohmann::json::array();
   const double px = hw - o.clearance, py = hh - o.clearance;
   const auto taken = [&](Vec2 q) {
     return !within(q, px, py) || centres.anyCloser(q, radius + o.clearance) ||
@@ -249,12 +238,10 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
       p = {mm(cameraRandom.uniform(-px, px)), mm(cameraRandom.uniform(-py, py))};
     } while (taken(p));
     cameras.push_back(p);
-    scene["cameras"].push_back({{"pos", fmt::format("POINT({} {})", p.x, p.y)},
-                                {"angle", std::round(cameraRandom.uniform(0.0, 36000.0)) / 100.0},
-                                {"maxVelocity", o.cameraSpeed},
-                                {"maxAngularVelocity", o.cameraTurnRate}});
+    scene.cameras.push_back({p, std::round(cameraRandom.uniform(0.0, 36000.0)) / 100.0,
+                             o.cameraSpeed, o.cameraTurnRate});
   }
-  return scene;
+  return sceneJson(scene);
 }
 
 }  // namespace camcov::scene

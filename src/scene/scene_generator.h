@@ -28,7 +28,7 @@ namespace camcov::scene {
 
 struct GeneratorOptions {
   int targets = 10;                // N, 1 to 10,000 (a scene needs a target)
-  int cameras = 4;                 // M, 1 to 64 (visibleBy is a 64-bit mask)
+  int cameras = 4;                 // M, 1 to kMaxCameras
   int vertices = 4;                // V per target, 3 to 100,000; 4 gives rectangles
   double fieldWidth = 30.0;        // m along x; the boundary is this rectangle centred at 0
   double fieldHeight = 30.0;       // m along y (the published scenes: 30 × 30)

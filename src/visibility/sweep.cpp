@@ -281,8 +281,8 @@ const CullingCounts& Sweep::counts() const {
 std::span<const SeenInterval> Sweep::seenBy(const Occluders& occluders, std::size_t slot,
                                             const geometry::Pose& camera, const scene::Lens& lens) {
   if (slot >= scene::kMaxCameras) {
-    throw std::invalid_argument("visibility: camera slot " + std::to_string(slot) +
-                                " beyond the 64 of a mask");
+    throw std::invalid_argument("visibility: camera slot " + std::to_string(slot) + " beyond the " +
+                                std::to_string(scene::kMaxCameras) + " of a mask");
   }
   checkCamera(camera, lens);
   return impl_->seenBy(occluders, slot, camera, lens);
@@ -291,8 +291,8 @@ std::span<const SeenInterval> Sweep::seenBy(const Occluders& occluders, std::siz
 void Sweep::segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
                      std::span<const scene::Lens> lenses, std::vector<Segment>& out) {
   if (cameras.size() > scene::kMaxCameras) {
-    throw std::invalid_argument("visibility: at most 64 cameras, got " +
-                                std::to_string(cameras.size()));
+    throw std::invalid_argument("visibility: at most " + std::to_string(scene::kMaxCameras) +
+                                " cameras, got " + std::to_string(cameras.size()));
   }
   if (lenses.size() < cameras.size()) {
     throw std::invalid_argument("visibility: " + std::to_string(cameras.size()) + " cameras but " +

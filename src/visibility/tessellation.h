@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "scene/camera.h"
 #include "visibility/occluders.h"
 #include "visibility/segment.h"
 
@@ -39,11 +40,11 @@ class Tessellation {
     std::uint32_t camera;
     int delta;  // +1 where a camera's interval opens, −1 where it closes
   };
-  std::vector<std::uint32_t> edgeOf_;  // per interval, for the bucket sort
-  std::vector<Mark> pending_;          // in arrival order
-  std::vector<std::uint32_t> bucket_;  // first mark of each target edge
-  std::vector<Mark> marks_;            // bucketed by edge
-  std::array<int, 64> open_{};
+  std::vector<std::uint32_t> edgeOf_;           // per interval, for the bucket sort
+  std::vector<Mark> pending_;                   // in arrival order
+  std::vector<std::uint32_t> bucket_;           // first mark of each target edge
+  std::vector<Mark> marks_;                     // bucketed by edge
+  std::array<int, scene::kMaxCameras> open_{};  // per camera
 };
 
 }  // namespace camcov::visibility

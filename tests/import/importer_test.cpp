@@ -80,7 +80,7 @@ TEST(ImportLastRow, PlayersAreTeamColouredDiscsAtTheScaledRecordedPositions) {
   EXPECT_NEAR(mid[0], 0.5 * (s[2][1].get<double>() + s[3][1].get<double>()), 1e-9);
   EXPECT_NEAR(mid[1], 0.5 * (s[2][2].get<double>() + s[3][2].get<double>()), 1e-9);
   // The pitch and its 5 m run-off.
-  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -5,110 -5,110 73,-5 73,-5 -5))");
+  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -5,110 -5,110 73,-5 73))");
   EXPECT_EQ(scene["pitch"], (nlohmann::json{{"length", 105.0}, {"width", 68.0}}))
       << "for its markings";
 
@@ -236,7 +236,7 @@ TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
   EXPECT_NE(r.err.find("beyond the pitch's 5 m run-off: the boundary grows"), std::string::npos)
       << r.err;
   const auto scene = nlohmann::json::parse(readFile(dir / "off.json"));
-  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -13,163 -13,163 73,-5 73,-5 -13))");
+  EXPECT_EQ(scene["boundary"], "POLYGON((-5 -13,163 -13,163 73,-5 73))");
   EXPECT_EQ(runCamcov("validate " + (dir / "off.json").string()).exitCode, 0);
 }
 

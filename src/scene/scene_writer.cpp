@@ -1,0 +1,71 @@
+#include "scene/scene_writer.h"
+
+#include <fmt/format.h>
+
+#include "geometry/vec2.h"
+
+namespace camcov::scene {
+
+std::string wktPolygon(std::span<const geometry::Vec2> points) {
+  std::string out = "POLYGON((";
+  for (std::size_t i = 0; i < points.size(); ++i)
+    out += fmt::format("{}{} {}", i == 0 ? "" : ",", points[i].x, points[i].y);
+  return out + "))";
+}
+
+std::string wktPoint(geometry::Vec2 p) {
+  return fmt::format("POINT({} {})", p.x, p.y);
+}
+
+nlohmann::json objectJson(const MovingObject& object) {
+  nlohmann::json j{{"shape", wktPolygon(object.shape)}};
+  if (!object.color.empty()) j["color"] = object.color;
+  if (object.track) {
+    const Track& track = *object.track;
+    nlohmann::json samples = nlohmann::json::array();
+    for (std::size_t k = 0; k < track.times.size(); ++k) {
+      nlohmann::json sample{track.times[k], track.positions[k].x, track.positions[k].y};
+      if (!track.headings.empty()) sample.push_back(geometry::radToDeg(track.headings[k]));
+      samples.push_back(std::move(sample));
+    }
+    j["track"] = {{"samples", std::move(samples)}};
+    return j;
+  }
+  j["path"] = wktPolygon(object.path);
+  if (object.path.size() > 1) j["velocity"] = object.velocity;
+  if (object.angularVelocity != 0.0) j["angularVelocity"] = object.angularVelocity;
+  if (object.deformation) {
+    nlohmann::json keyframes = nlohmann::json::array();
+    for (const DeformationKeyframe& k : object.deformation->keyframes)
+      keyframes.push_back({{"time", k.time}, {"shape", wktPolygon(k.shape)}});
+    j["deformation"] = {{"period", object.deformation->period},
+                        {"keyframes", std::move(keyframes)}};
+  }
+  return j;
+}
+
+nlohmann::json cameraJson(const CameraEntry& camera) {
+  return {{"pos", wktPoint(camera.position)},
+          {"angle", camera.yawDegrees},
+          {"maxVelocity", camera.maxVelocity},
+          {"maxAngularVelocity", camera.maxAngularVelocity}};
+}
+
+nlohmann::json sceneJson(const WrittenScene& file) {
+  nlohmann::json scene;
+  if (!file.description.empty()) scene["description"] = file.description;
+  scene["boundary"] = wktPolygon(file.boundary);
+  if (file.pitch) scene["pitch"] = {{"length", file.pitch->length}, {"width", file.pitch->width}};
+  scene["cameraFoV"] = file.halfFovDegrees;
+  for (const char* key : {"targets", "obstacles", "cameras"})
+    scene[key] = nlohmann::json::array();
+  for (const MovingObject& o : file.targets)
+    scene["targets"].push_back(objectJson(o));
+  for (const MovingObject& o : file.obstacles)
+    scene["obstacles"].push_back(objectJson(o));
+  for (const CameraEntry& c : file.cameras)
+    scene["cameras"].push_back(cameraJson(c));
+  return scene;
+}
+
+}  // namespace camcov::scene

@@ -1,0 +1,48 @@
+#pragma once
+// The scene file as camcov writes it (the generators, the importers): the one place that spells
+// its keys and WKT forms, so every file written reads back as meant (scene_loader.h). Rings
+// are written open, as the published files write them; numbers as the shortest text that reads
+// back to the same double. Values are in the file's units: metres, seconds, m/s and rad/s,
+// but degrees for a camera's yaw and field of view (the published format's).
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/vec2.h"
+#include "scene/scene.h"
+
+namespace camcov::scene {
+
+// A camera as a file gives it.
+struct CameraEntry {
+  geometry::Vec2 position;
+  double yawDegrees = 0.0;
+  double maxVelocity = 0.0;         // m/s
+  double maxAngularVelocity = 0.0;  // rad/s
+};
+
+// What a written scene holds. Objects keep the in-memory form (MovingObject), whose units are
+// the file's; a track's headings, if any, are written in degrees.
+struct WrittenScene {
+  std::string description;  // written when not empty
+  std::vector<geometry::Vec2> boundary;
+  std::optional<Pitch> pitch;
+  double halfFovDegrees = 0.0;  // the scene's cameraFoV: θ, half the field of view
+  std::vector<MovingObject> targets;
+  std::vector<MovingObject> obstacles;
+  std::vector<CameraEntry> cameras;
+};
+
+// POLYGON((x1 y1,x2 y2,...)): a ring or a looping path, open; one point: a still path.
+std::string wktPolygon(std::span<const geometry::Vec2> points);
+// POINT(x y).
+std::string wktPoint(geometry::Vec2 p);
+
+nlohmann::json objectJson(const MovingObject& object);
+nlohmann::json cameraJson(const CameraEntry& camera);
+nlohmann::json sceneJson(const WrittenScene& file);
+
+}  // namespace camcov::scene
