@@ -294,7 +294,8 @@
       field(info, "pose", "pose", `(${c.x.toFixed(3)}, ${c.y.toFixed(3)}) m, ${deg(c.yaw)}°`);
       field(info, "limits", "limits",
             `v ≤ ${limits.maxVelocity} m/s, ω ≤ ${limits.maxAngularVelocity.toFixed(3)} rad/s, ` +
-            `half-angle θ = ${deg(limits.halfFov)}° (field of view ${deg(2 * limits.halfFov)}°)`);
+            `half-angle θ = ${deg(limits.halfFov)}° (field of view ${deg(2 * limits.halfFov)}°)` +
+            (limits.range === undefined ? "" : `, sensing range ${limits.range} m`));
       let sees = 0, total = 0;
       for (const s of step.segments) {
         total += length(s);

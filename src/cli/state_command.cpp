@@ -68,6 +68,7 @@ Registration addStateCommand(CLI::App& app) {
                                         {"maxVelocity", c.maxVelocity},
                                         {"maxAngularVelocity", c.maxAngularVelocity},
                                         {"fovHalfAngleDeg", geometry::radToDeg(c.lens.halfFov)}});
+              if (c.lens.limited()) out["cameras"].back()["sensingRange"] = c.lens.range;
             }
             std::cout << out.dump(2) << "\n";
             return 0;

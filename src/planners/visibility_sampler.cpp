@@ -111,9 +111,15 @@ bool VisibilitySampler::focusOnUnseen(reward::RewardModel& model, Random& random
 std::optional<geometry::Pose> VisibilitySampler::sample(Random& random,
                                                         const StateValidity& validity,
                                                         const scene::Lens& lens) const {
-  const auto q2 = area_.sample(random, validity, kAttemptsPerSample);
-  if (!q2) return std::nullopt;
-  return geometry::Pose{q2->x, q2->y, sampleYawSeeing(*q2, q1_, lens.halfFov, random)};
+  // A camera with a sensing range must stand within it of q1: farther places are drawn again
+  // (an unlimited lens takes the first, so the draws are the paper's).
+  for (int attempt = 0; attempt < kAttemptsPerSample; ++attempt) {
+    const auto q2 = area_.sample(random, validity, kAttemptsPerSample);
+    if (!q2) return std::nullopt;
+    if (lens.withinRange(geometry::distance(*q2, q1_)))
+      return geometry::Pose{q2->x, q2->y, sampleYawSeeing(*q2, q1_, lens.halfFov, random)};
+  }
+  return std::nullopt;
 }
 
 }  // namespace camcov::planners

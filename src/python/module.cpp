@@ -12,7 +12,7 @@ PYBIND11_MODULE(camcov, m) {
   m.doc() =
       "camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian).\n\n"
       "load_scene(file) -> Scene; Scene.world_at(t) -> World (targets, obstacles, boundary);\n"
-      "Visibility(world, scene.half_fovs) -> what cameras at given poses see and the reward;\n"
+      "Visibility(world, scene) -> what the scene's cameras see at given poses, and the reward;\n"
       "run(scene_file, method) and simulate(scene_file, controller) -> Run; bench(...) is\n"
       "`camcov bench`; report(folder) is `camcov report`. See docs/python.md.";
   m.attr("__version__") = camcov::kVersion;

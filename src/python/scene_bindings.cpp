@@ -40,6 +40,7 @@ py::dict cameraDict(const scene::CameraSpec& c) {
   d["max_velocity"] = c.maxVelocity;
   d["max_angular_velocity"] = c.maxAngularVelocity;
   d["half_fov"] = c.lens.halfFov;
+  d["sensing_range"] = c.lens.range;  // inf: unlimited
   return d;
 }
 
@@ -123,7 +124,8 @@ void bindScene(py::module_& m) {
           },
           "One dict per camera: pose (x m, y m, yaw rad), max_velocity (m/s), "
           "max_angular_velocity (rad/s), half_fov (the half-angle θ_j, radians: the field of "
-          "view is 2θ_j wide; the file's cameraFoV is θ in degrees).")
+          "view is 2θ_j wide; the file's cameraFoV is θ in degrees), sensing_range (metres; "
+          "inf: unlimited).")
       .def_property_readonly(
           "initial_poses",
           [](const PythonScene& s) {
@@ -142,7 +144,8 @@ void bindScene(py::module_& m) {
               thetas.mutable_at(static_cast<py::ssize_t>(j)) = s.scene.cameras[j].lens.halfFov;
             return thetas;
           },
-          "Each camera's half-angle θ_j, radians, (M,): what camcov.Visibility takes.")
+          "Each camera's half-angle θ_j, radians, (M,). camcov.Visibility takes the scene "
+          "itself for its cameras' whole lenses (sensing ranges too).")
       .def(
           "world_at",
           [](const PythonScene& s, double t) {

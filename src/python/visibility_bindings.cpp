@@ -81,27 +81,54 @@ class Visibility {
   std::mutex mutex_;
 };
 
-std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
-                                           const py::handle& halfFovs, const py::handle& values) {
+// Lenses given by hand: one half-angle θ_j per camera and, optionally, one sensing range each
+// (metres; inf: unlimited).
+std::vector<scene::Lens> lensesFromArrays(const py::handle& halfFovs, const py::handle& ranges) {
   const Array thetas = Array::ensure(halfFovs);
   if (!thetas || thetas.ndim() != 1 || thetas.shape(0) == 0)
-    throw py::value_error("half_fovs: expected one half-angle (radians) per camera");
+    throw py::value_error(
+        "cameras: expected a camcov.Scene or one half-angle (radians) per camera");
   const auto count = static_cast<std::size_t>(thetas.shape(0));
   // The sweep keeps which cameras see a segment as a 64-bit mask.
   if (count > scene::kMaxCameras) {
     throw py::value_error(
-        fmt::format("half_fovs: {} cameras; at most {}", count, scene::kMaxCameras));
+        fmt::format("cameras: {} cameras; at most {}", count, scene::kMaxCameras));
   }
-  std::vector<double> halfAngles = valuesFromArray(thetas, count, "half_fovs");
-  for (std::size_t j = 0; j < count; ++j) {
-    if (!(halfAngles[j] > 0.0 && halfAngles[j] < std::numbers::pi)) {
-      throw py::value_error(fmt::format("half_fovs: θ_{} = {} rad: a half-angle must lie in (0, π)",
-                                        j, halfAngles[j]));
+  std::vector<scene::Lens> lenses;
+  for (const double theta : valuesFromArray(thetas, count, "cameras")) {
+    if (!(theta > 0.0 && theta < std::numbers::pi)) {
+      throw py::value_error(fmt::format("cameras: θ_{} = {} rad: a half-angle must lie in (0, π)",
+                                        lenses.size(), theta));
     }
+    lenses.emplace_back(theta);
   }
-  return std::make_unique<Visibility>(
-      world, std::vector<scene::Lens>(halfAngles.begin(), halfAngles.end()),
-      parametersFrom(values));
+  if (ranges.is_none()) return lenses;
+  const Array r = Array::ensure(ranges);
+  if (!r || r.ndim() != 1 || static_cast<std::size_t>(r.shape(0)) != count)
+    throw py::value_error(fmt::format("sensing_ranges: expected {} ranges (metres)", count));
+  for (std::size_t j = 0; j < count; ++j) {
+    const double metres = r.data()[j];
+    // NaN fails the comparison; +inf is the unlimited range.
+    if (!(metres > 0.0)) {
+      throw py::value_error(fmt::format(
+          "sensing_ranges: camera {}'s range {} m must be positive (inf: unlimited)", j, metres));
+    }
+    lenses[j].range = metres;
+  }
+  return lenses;
+}
+
+std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
+                                           const py::handle& cameras, const py::handle& values,
+                                           const py::handle& ranges) {
+  if (py::isinstance<PythonScene>(cameras)) {
+    if (!ranges.is_none())
+      throw py::value_error("sensing_ranges: a scene's cameras bring their own ranges");
+    return std::make_unique<Visibility>(
+        world, scene::lenses(cameras.cast<const PythonScene&>().scene), parametersFrom(values));
+  }
+  return std::make_unique<Visibility>(world, lensesFromArrays(cameras, ranges),
+                                      parametersFrom(values));
 }
 
 // The terms of every team as arrays (N,).
@@ -126,13 +153,17 @@ py::dict termsToArrays(std::span<const reward::RewardTerms> terms) {
 
 void bindVisibility(py::module_& m) {
   py::class_<Visibility>(m, "Visibility",
-                         "Visibility and reward at one instant for cameras with the given "
-                         "half-angles θ_j (radians): scene.half_fovs for the scene's team.")
-      .def(py::init(&makeVisibility), py::arg("world"), py::arg("half_fovs"),
-           py::arg("params") = py::none(),
-           "Visibility(world, half_fovs, params=None): the world (a camcov.World), one "
-           "half-angle θ_j in radians per camera, and parameters ({'reward.lambda1': ...}, as "
-           "camcov.parameters takes them) for the reward's weights.")
+                         "Visibility and reward at one instant for a team of cameras: a scene's "
+                         "(each camera's lens: half-angle θ_j and sensing range) or lenses given "
+                         "by hand.")
+      .def(py::init(&makeVisibility), py::arg("world"), py::arg("cameras"),
+           py::arg("params") = py::none(), py::arg("sensing_ranges") = py::none(),
+           "Visibility(world, cameras, params=None, sensing_ranges=None): the world (a "
+           "camcov.World); the cameras' lenses: a camcov.Scene (its cameras', sensing ranges "
+           "included), or one half-angle θ_j in radians per camera, with sensing_ranges one "
+           "range each in metres (inf or leave out: unlimited); and parameters "
+           "({'reward.lambda1': ...}, as camcov.parameters takes them) for the reward's "
+           "weights.")
       .def(
           "segments",
           [](Visibility& v, const py::handle& poses) {

@@ -5,6 +5,7 @@
 // simulator read a camera only through these types, so a property added here (a lens's reach,
 // say) needs no parallel array threaded through the stages.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "geometry/same_bits.h"
@@ -15,19 +16,34 @@ namespace camcov::scene {
 // The visibility sweep keeps visibleBy(s_l) as a 64-bit mask, one bit a camera.
 inline constexpr std::size_t kMaxCameras = 64;
 
-// What a camera sees from its pose: the wedge within θ_j either side of its yaw.
+inline constexpr double kUnlimitedRange = std::numeric_limits<double>::infinity();
+
+// What a camera sees from its pose: the closed wedge within θ_j either side of its yaw, up to
+// its sensing range r_j (our extension: the paper's cameras see without limit, so do ours
+// unless a scene gives a range). Everything that decides what a camera sees — the sweep, the
+// explanation of what it does not see, the planners' sampler — asks the lens.
 struct Lens {
   // Implicit on purpose: a half-angle alone is the paper's camera.
   constexpr Lens(double halfFov = 0.0) : halfFov(halfFov) {}
 
-  double halfFov;  // θ_j, radians, in (0, π)
+  double halfFov;                  // θ_j, radians, in (0, π)
+  double range = kUnlimitedRange;  // r_j, metres, > 0: nothing farther is seen
+
+  bool limited() const { return range < kUnlimitedRange; }
+  bool withinRange(double distance) const { return distance <= range; }
+  // Whether a point at `offset` from a camera facing `yaw` is in view: in the wedge, in range.
+  bool sees(geometry::Vec2 offset, double yaw) const;
+  // The parameters [t0, t1] ⊆ [0, 1] of the points a + t (b − a) within range of `camera`
+  // (a disc meets a segment in one piece); false if none. Unlimited: [0, 1].
+  bool rangeOnSegment(geometry::Vec2 camera, geometry::Vec2 a, geometry::Vec2 b, double& t0,
+                      double& t1) const;
 
   constexpr bool operator==(const Lens&) const = default;
 };
 
 // Bit-for-bit equality, for the caches keyed by a camera's lens (geometry/same_bits.h).
 inline bool sameBits(const Lens& a, const Lens& b) {
-  return geometry::sameBits(a.halfFov, b.halfFov);
+  return geometry::sameBits(a.halfFov, b.halfFov) && geometry::sameBits(a.range, b.range);
 }
 
 // What moves a camera: its velocity u_j = ṗ_j. Controllers produce it, the plan executor

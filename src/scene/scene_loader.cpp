@@ -348,11 +348,24 @@ double halfFov(const Node& node) {
   return geometry::degToRad(degrees);
 }
 
+// A camera's sensing range r_j in metres (our extension): positive and finite. Without the
+// key the camera sees without limit, as the paper's do.
+double sensingRange(const Node& node) {
+  const double r = positive(node, "sensingRange", "m");
+  if (!std::isfinite(r))
+    node.fail(
+        fmt::format("sensingRange must be finite, is {} m; leave the key out for a camera "
+                    "that sees without limit",
+                    r));
+  return r;
+}
+
 // `sceneHalfFov` is the scene's "cameraFoV", which a camera's own key overrides.
 CameraSpec camera(const Node& node, double sceneHalfFov) {
-  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV"});
+  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV", "sensingRange"});
   CameraSpec camera;
   camera.lens = node.has("cameraFoV") ? halfFov(node.child("cameraFoV")) : sceneHalfFov;
+  if (node.has("sensingRange")) camera.lens.range = sensingRange(node.child("sensingRange"));
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};

@@ -20,11 +20,12 @@ using geometry::Vec2;
 
 namespace {
 
-// Spans of the current edge → visible intervals of target edges (Algorithm 1, lines 12–13).
+// Spans of the current edge → visible intervals of target edges (Algorithm 1, lines 12–13),
+// cut to the lens's range.
 class TargetSink final : public SpanSink {
  public:
-  TargetSink(const PolarEdges& edges, std::vector<SeenInterval>& seen)
-      : edges_(edges), seen_(seen) {
+  TargetSink(const PolarEdges& edges, const scene::Lens& lens, std::vector<SeenInterval>& seen)
+      : edges_(edges), lens_(lens), seen_(seen) {
     seen_.clear();
   }
 
@@ -38,12 +39,25 @@ class TargetSink final : public SpanSink {
     for (const Occluders::Member m : members) {
       const double t0 = occluders.t0(m.piece), dt = occluders.t1(m.piece) - t0;
       const double u0 = m.reversed ? 1.0 - s0 : s0, u1 = m.reversed ? 1.0 - s1 : s1;
-      appendSeen(seen_, occluders.globalEdge(m.piece), t0 + u0 * dt, t0 + u1 * dt);
+      const std::uint32_t edge = occluders.globalEdge(m.piece);
+      double lo = t0 + u0 * dt, hi = t0 + u1 * dt;
+      if (lens_.limited()) {
+        double near0 = 0.0, near1 = 0.0;
+        if (!lens_.rangeOnSegment(edges_.viewpoint(), occluders.targetEdgeStart(edge),
+                                  occluders.targetEdgeEnd(edge), near0, near1))
+          continue;
+        if (lo > hi) std::swap(lo, hi);
+        lo = std::max(lo, near0);
+        hi = std::min(hi, near1);
+        if (!(lo < hi)) continue;  // appendSeen would take the ends in either order
+      }
+      appendSeen(seen_, edge, lo, hi);
     }
   }
 
  private:
   const PolarEdges& edges_;
+  const scene::Lens& lens_;
   std::vector<SeenInterval>& seen_;
 };
 
@@ -76,6 +90,57 @@ class PolygonSink final : public SpanSink {
   const PolarEdges& edges_;
   geometry::Ring& out_;
 };
+
+// A field-of-view polygon (counter-clockwise, star-shaped about `camera`) cut to the lens's
+// range: what lies beyond becomes arcs of the range circle, drawn in steps of at most 2°.
+void cutToRange(geometry::Ring& polygon, Vec2 camera, const scene::Lens& lens) {
+  if (!lens.limited() || polygon.empty()) return;
+  constexpr double kArcStep = std::numbers::pi / 90;
+  const double r = lens.range;
+  const auto angleOf = [&](Vec2 v) { return std::atan2(v.y - camera.y, v.x - camera.x); };
+  geometry::Ring out;
+  const auto add = [&](Vec2 v) {
+    if (out.empty() || out.back() != v) out.push_back(v);
+  };
+  // Counter-clockwise along the circle, strictly between the two angles.
+  const auto arc = [&](double from, double to) {
+    double sweep = to - from;
+    while (sweep < 0.0)
+      sweep += 2.0 * std::numbers::pi;
+    const int steps = static_cast<int>(std::ceil(sweep / kArcStep));
+    for (int k = 1; k < steps; ++k)
+      add(camera + geometry::unitVector(from + sweep * k / steps) * r);
+  };
+  bool leftDisc = false, entered = false;
+  double leftAt = 0.0, firstEntry = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 u = polygon[i], v = polygon[(i + 1) % polygon.size()];
+    double t0 = 0.0, t1 = 0.0;
+    if (!lens.rangeOnSegment(camera, u, v, t0, t1)) continue;
+    if (t0 > 0.0) {  // comes in from beyond the range
+      const Vec2 entry = geometry::lerp(u, v, t0);
+      if (leftDisc) {
+        arc(leftAt, angleOf(entry));
+      } else if (!entered) {
+        firstEntry = angleOf(entry);
+      }
+      entered = true;
+      leftDisc = false;
+      add(entry);
+    } else {
+      add(u);
+    }
+    if (t1 < 1.0) {  // goes out beyond the range
+      const Vec2 exit = geometry::lerp(u, v, t1);
+      add(exit);
+      leftDisc = true;
+      leftAt = angleOf(exit);
+    }
+  }
+  if (leftDisc && entered) arc(leftAt, firstEntry);
+  if (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  polygon = std::move(out);
+}
 
 // Records each ray of one camera's sweep (Sweep::trace).
 class TraceObserver final : public SweepObserver {
@@ -219,7 +284,7 @@ struct Sweep::Impl {
         slot.begin(), slot.end(),
         [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
     const FieldOfView fov{pose.yaw, lens.halfFov};
-    TargetSink sink(edges, memo.seen);
+    TargetSink sink(edges, lens, memo.seen);
     sweepFrom(occluders, pose.position(), &fov, sink);
     memo.build = occluders.buildId();
     memo.pose = pose;
@@ -329,6 +394,7 @@ void Sweep::fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose&
   PolygonSink sink(impl_->edges, out);
   impl_->sweepFrom(occluders, camera.position(), &fov, sink);
   sink.finish();
+  cutToRange(out, camera.position(), lens);
 }
 
 void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, const scene::Lens& lens,
@@ -346,6 +412,7 @@ void Sweep::trace(const Occluders& occluders, const geometry::Pose& camera, cons
   PolygonSink sink(impl_->edges, out.fieldOfView);
   impl_->sweep.run(impl_->edges, sink, &observer);
   sink.finish();
+  cutToRange(out.fieldOfView, camera.position(), lens);
   out.blind = impl_->edges.blind();
 }
 

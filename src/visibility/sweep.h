@@ -11,8 +11,10 @@
 // thread; an Occluders may be shared by threads once built.
 //
 // Visibility: a camera at p with yaw γ and half-angle θ sees a point q if q lies in the closed
-// wedge [γ − θ, γ + θ] around p and the open segment from p to q crosses no edge of the
-// boundary, the obstacles or the targets. Conventions for degenerate cases (docs/visibility.md):
+// wedge [γ − θ, γ + θ] around p, within the lens's sensing range r (|q − p| ≤ r; unlimited
+// unless a scene gives one: scene/camera.h), and the open segment from p to q crosses no edge of
+// the boundary, the obstacles or the targets. Conventions for degenerate cases
+// (docs/visibility.md):
 //  - p strictly inside an object, or strictly outside the boundary: sees nothing.
 //  - p within ε (Occluders::tolerance()) of an edge or a vertex: p is on it and sees only the
 //    free side; the edge itself is seen edge-on.

@@ -74,8 +74,7 @@ UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& cam
   const Vec2 a = target[s.edge], b = target[(s.edge + 1) % target.size()];
   if (geometry::orientSign(a, b, p) >= 0) return {UnseenKind::BehindItsTarget, {}};
   const Vec2 q = (s.a + s.b) * 0.5;
-  const double off = std::abs(geometry::wrapAngle(std::atan2(q.y - p.y, q.x - p.x) - camera.yaw));
-  if (off > lens.halfFov) return {UnseenKind::OutsideFieldOfView, {}};
+  if (!lens.sees(q - p, camera.yaw)) return {UnseenKind::OutsideFieldOfView, {}};
 
   UnseenReason reason;
   double nearest = std::numeric_limits<double>::infinity();

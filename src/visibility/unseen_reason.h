@@ -3,9 +3,10 @@
 // user points at an edge nobody sees. The sweep (sweep.h) says *whether* camera j sees a
 // segment of S; this says *why not*, in the order a person would check: the camera is outside
 // the boundary or inside an object, the edge faces away from it (behind its own target), it
-// lies outside the field of view, or the first object the line of sight hits. Decided at the
-// segment's midpoint, which is enough because a segment of S is seen by camera j wholly or not
-// at all. O(n) in the scene's vertices: for clicks and per-step explanations, not the sweep.
+// lies outside the field of view (or beyond the camera's range), or the first object the line of
+// sight hits. Decided at the segment's midpoint, which is enough because a segment of S is seen by
+// camera j wholly or not at all. O(n) in the scene's vertices: for clicks and per-step
+// explanations, not the sweep.
 #include <cstdint>
 
 #include "geometry/vec2.h"
@@ -21,7 +22,8 @@ enum class UnseenKind : std::uint8_t {
   OutsideBoundary,     // the camera is outside the boundary B
   InsideObject,        // the camera is inside object `blocker`
   BehindItsTarget,     // the edge faces away from the camera (or is seen edge-on)
-  OutsideFieldOfView,  // the midpoint lies outside the wedge [γ − θ, γ + θ]
+  OutsideFieldOfView,  // the midpoint lies outside the lens's view: the wedge [γ − θ, γ + θ]
+                       // within its sensing range
   Blocked,             // the line of sight first hits `blocker`
 };
 

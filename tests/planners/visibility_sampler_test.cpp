@@ -58,6 +58,33 @@ TEST(VisibilitySampler, SamplesAreValidAndSeeTheirPoint) {
   EXPECT_GT(samples, 1500) << "the room is mostly free: few samples should fail";
 }
 
+TEST(VisibilitySampler, ACameraWithASensingRangeIsPlacedWithinItOfItsPoint) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  scene::Lens lens(std::numbers::pi / 6);
+  lens.range = 3.0;
+  reward::RewardModel model(params::RewardParams{}, lens);
+  model.setWorld(w);
+  StateValidity validity(1.0);
+  validity.setWorld(w);
+  Random random(11);
+  VisibilitySampler sampler;
+  int samples = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const auto q1 = samplePointOnRings(w.targets, random);
+    ASSERT_TRUE(q1);
+    ASSERT_TRUE(sampler.focus(model, *q1));
+    for (int k = 0; k < 10; ++k) {
+      const auto pose = sampler.sample(random, validity, model.lens(0));
+      if (!pose) continue;
+      ++samples;
+      EXPECT_LE(geometry::distance(pose->position(), *q1), 3.0);
+      EXPECT_TRUE(sees(w, *pose, *q1, lens.halfFov));
+    }
+  }
+  // Rejection: most of what the target sees lies farther than 3 m, yet a sample is mostly found.
+  EXPECT_GT(samples, 200);
+}
+
 TEST(SamplePointOnSegments, IsUniformByLength) {
   // Two collinear segments of length 1 and 3: a quarter of the samples on the first.
   std::vector<visibility::Segment> segments(2);

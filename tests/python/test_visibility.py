@@ -67,7 +67,7 @@ def test_bad_shapes_raise_value_errors(tiny):
     one = camcov.Visibility(scene.world_at(0.0), [0.5])
     with pytest.raises(ValueError, match="3 poses per team, but 1 fields of view"):
         one.terms(np.zeros((3, 3)))
-    with pytest.raises(ValueError, match="half_fovs"):
+    with pytest.raises(ValueError, match="one half-angle"):
         camcov.Visibility(scene.world_at(0.0), [])
 
 
@@ -94,7 +94,7 @@ def test_numbers_no_scene_could_hold_raise_value_errors_naming_the_input(tiny, b
         visibility.visibility_polygon([0.0, bad])
     with pytest.raises(ValueError, match="world_at: t ="):
         scene.world_at(bad)
-    with pytest.raises(ValueError, match="half_fovs: entry 0"):
+    with pytest.raises(ValueError, match="cameras: entry 0"):
         camcov.Visibility(scene.world_at(0.0), [bad])
 
 
@@ -105,3 +105,44 @@ def test_a_half_angle_outside_zero_to_pi_or_too_many_cameras_raise_value_errors(
         camcov.Visibility(world, [0.5, theta])
     with pytest.raises(ValueError, match="65 cameras; at most 64"):
         camcov.Visibility(world, np.full(65, 0.5))
+
+
+RANGED_SCENE = {
+    "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+    "targets": [{"shape": "POLYGON((3 -1,5 -1,5 1,3 1))", "path": "POINT(0 0)"}],
+    "obstacles": [],
+    "cameraFoV": 60,
+    "cameras": [{"pos": "POINT(0 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1,
+                 "sensingRange": 9.25 ** 0.5}],
+}
+
+
+def test_a_scene_brings_its_cameras_sensing_ranges(tmp_path, cli):
+    """r = √9.25 reaches |y| ≤ 0.5 of the near edge x = 3: 1 m of the 8 m perimeter."""
+    path = tmp_path / "ranged.json"
+    path.write_text(json.dumps(RANGED_SCENE))
+    scene = camcov.load_scene(str(path))
+    assert scene.cameras[0]["sensing_range"] == 9.25 ** 0.5
+    world = scene.world_at(0.0)
+    terms = camcov.Visibility(world, scene).terms(scene.initial_poses)
+    assert terms["coverage"] == pytest.approx(1.0 / 8.0, abs=1e-12)
+    assert terms["coverage"] == inspect(cli, str(path), 0.0)["coverage"]
+    by_hand = camcov.Visibility(world, scene.half_fovs, sensing_ranges=[9.25 ** 0.5])
+    assert by_hand.terms(scene.initial_poses)["coverage"] == terms["coverage"]
+    endless = camcov.Visibility(world, scene.half_fovs, sensing_ranges=[float("inf")])
+    unlimited = camcov.Visibility(world, scene.half_fovs).terms(scene.initial_poses)
+    assert unlimited["coverage"] == pytest.approx(2.0 / 8.0, abs=1e-12)
+    assert endless.terms(scene.initial_poses) == unlimited
+
+
+def test_bad_sensing_ranges_raise_value_errors(tiny):
+    scene = camcov.load_scene(tiny("tiny_static"))
+    world = scene.world_at(0.0)
+    assert all(c["sensing_range"] == float("inf") for c in scene.cameras)
+    for bad in (-1.0, 0.0, float("nan")):
+        with pytest.raises(ValueError, match="sensing_ranges: camera 0"):
+            camcov.Visibility(world, [0.5], sensing_ranges=[bad])
+    with pytest.raises(ValueError, match="expected 1 ranges"):
+        camcov.Visibility(world, [0.5], sensing_ranges=[1.0, 2.0])
+    with pytest.raises(ValueError, match="bring their own"):
+        camcov.Visibility(world, scene, sensing_ranges=[1.0])
