@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Configures and builds camcov. Usage: scripts/build.sh [release|sanitize] [TARGET...]
 #   release  (default) optimised build in build/
-#   sanitize AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
+#   sanitize AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/, with clang, and
+#            with the libFuzzer targets (scripts/fuzz.sh runs them from there)
 #   TARGET   only these (e.g. camcov: the main job needs no test program); default: all
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -9,7 +10,13 @@ kind=${1:-release}
 targets=("${@:2}")
 case "$kind" in
   release)  dir="$repo/build";      flags=(-DCMAKE_BUILD_TYPE=Release) ;;
-  sanitize) dir="$repo/build-asan"; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
+  # clang at -O1 with line tables only: the heaviest file takes 19 s instead of GCC's 89 s at
+  # RelWithDebInfo's -O2 -g, stack traces still name file and line, and one build serves the
+  # sanitizer tests and the fuzzers.
+  sanitize) dir="$repo/build-asan"
+    export CC=clang CXX=clang++
+    flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG"
+           -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_FUZZERS=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
 esac
 # Progress and errors go to stderr, so callers can take the folder from stdout and a log

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, ASan + UBSan, build-fuzz/) and runs each one.
+# Builds the libFuzzer targets (in the sanitizer build, build-asan/: clang, ASan + UBSan) and
+# runs each one.
 # Usage: scripts/fuzz.sh [RUNS | SECONDSs]
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
@@ -8,8 +9,8 @@
 # line's parser. The corpus starts from tests/fuzz/seeds, every scene of scenes/ and tests/data/
 # and the track extracts of tests/data/tracks (copied at run time into the build folder, never
 # into the repository).
-# A crash leaves its input in build-fuzz/artifacts/; replay it with
-#   build-fuzz/tests/fuzz/fuzz_<target> build-fuzz/artifacts/<file>
+# A crash leaves its input in build-asan/artifacts/; replay it with
+#   build-asan/tests/fuzz/fuzz_<target> build-asan/artifacts/<file>
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 budget=${1:-30000}
@@ -18,11 +19,8 @@ case "$budget" in
   *) limit=(-runs="$budget" -seed=1) ;;
 esac
 
-dir="$repo/build-fuzz"
-CC=clang CXX=clang++ cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCAMCOV_BUILD_FUZZERS=ON -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$dir" --parallel "$(nproc)" --target fuzz_scene fuzz_visibility fuzz_lastrow \
-  fuzz_ethucy fuzz_command_line
+dir=$("$repo/scripts/build.sh" sanitize fuzz_scene fuzz_visibility fuzz_lastrow fuzz_ethucy \
+  fuzz_command_line | tail -n 1)
 
 corpus="$dir/corpus"
 rm -rf "$corpus"

@@ -10,7 +10,13 @@
 
 #include "geometry/ring.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+// GCC says ASan is on with __SANITIZE_ADDRESS__, clang 14 only through __has_feature.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CAMCOV_ADDRESS_SANITIZER 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(CAMCOV_ADDRESS_SANITIZER)
 // Fontconfig keeps the font patterns Cairo's text matched in a cache that only FcFini()
 // frees, and nothing calls that before exit: LeakSanitizer would report the cache as a leak
 // of every program that draws a caption. Suppressed here, where the text is drawn.

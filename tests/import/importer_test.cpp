@@ -248,8 +248,6 @@ struct BadInput {
   const char* message;   // expected in stderr, after the file name
 };
 
-constexpr const char* kHeader = "player,frame,x,y,team,bgcolor\n";
-
 const BadInput kBadInputs[] = {
     {"lastrow_empty_file", "lastrow", "", nullptr, ": empty file"},
     {"lastrow_missing_column", "lastrow", "player,frame,y\n1,0,3\n", nullptr,
