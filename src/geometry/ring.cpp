@@ -200,4 +200,27 @@ Box boundingBox(std::span<const Vec2> ring) {
   return box;
 }
 
+Ring convexHull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(),
+            [](Vec2 p, Vec2 q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); });
+  points.erase(std::unique(points.begin(), points.end(),
+                           [](Vec2 p, Vec2 q) { return p.x == q.x && p.y == q.y; }),
+               points.end());
+  if (points.size() < 3) return points;
+  Ring hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && orient(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+      --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && orient(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+      --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 }  // namespace camcov::geometry

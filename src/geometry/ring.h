@@ -57,6 +57,10 @@ void transformRing(Ring& ring, double angle, Vec2 offset);
 // The same from a local shape into `out` (its buffer reused).
 void placeRing(std::span<const Vec2> local, double angle, Vec2 offset, Ring& out);
 
+// The convex hull of `points`, counter-clockwise (Andrew's monotone chain), repeated and
+// collinear points dropped; fewer than three distinct points come back as they are, sorted.
+Ring convexHull(std::vector<Vec2> points);
+
 struct Box {
   Vec2 min;
   Vec2 max;

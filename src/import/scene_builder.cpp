@@ -20,10 +20,9 @@ using geometry::Vec2;
 constexpr int kDiscVertices = 12;
 constexpr double kCameraInset = 1.0;  // m inside the boundary
 
-// Kept to the millimetre and the microsecond: files stay small and read the same everywhere.
-double mm(double v) {
-  return std::round(v * 1000.0) / 1000.0;
-}
+// Kept to the millimetre (scene::mm) and the microsecond: files stay small and read the same
+// everywhere.
+using scene::mm;
 double us(double v) {
   return std::round(v * 1e6) / 1e6;
 }

@@ -80,30 +80,6 @@ std::pair<double, double> deepest(Vec2 a, Vec2 b, std::pair<double, double> piec
   return best;
 }
 
-// Andrew's monotone chain, counter-clockwise, collinear points dropped.
-geometry::Ring convexHull(std::vector<Vec2> points) {
-  std::sort(points.begin(), points.end(),
-            [](Vec2 p, Vec2 q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); });
-  points.erase(std::unique(points.begin(), points.end(),
-                           [](Vec2 p, Vec2 q) { return p.x == q.x && p.y == q.y; }),
-               points.end());
-  if (points.size() < 3) return points;
-  geometry::Ring hull(2 * points.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && geometry::orient(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-      --k;
-    hull[k++] = points[i];
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && geometry::orient(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-      --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
 // Every shape the object takes, about its reference point: its own, or for a deforming one
 // the convex hull of all its keyframes (which holds each interpolated shape).
 geometry::Ring envelope(const MovingObject& o) {
@@ -111,7 +87,7 @@ geometry::Ring envelope(const MovingObject& o) {
   std::vector<Vec2> points(o.shape.begin(), o.shape.end());
   for (const auto& frame : o.deformation->keyframes)
     points.insert(points.end(), frame.shape.begin(), frame.shape.end());
-  return convexHull(std::move(points));
+  return geometry::convexHull(std::move(points));
 }
 
 // The path's segments in travel order (a two-point path goes there and back: one segment),

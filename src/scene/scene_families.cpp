@@ -429,17 +429,6 @@ constexpr int kTries = 300;           // places tried per object and per camera
 constexpr int kAttempts = 200;        // whole scenes drawn from one seed before giving up
 constexpr int kFarCandidates = 64;    // free places compared for a "far" start
 
-// Rounded so that printing is short and exact, and decisions never depend on the last bit
-// of a maths library: `+ 0.0` turns -0 into 0, which prints as "0".
-double roundTo(double v, double perUnit) {
-  return std::round(v * perUnit) / perUnit + 0.0;
-}
-double mm(double v) {
-  return roundTo(v, 1e3);
-}
-Vec2 mm(Vec2 p) {
-  return {mm(p.x), mm(p.y)};
-}
 double halfMetres(double v) {
   return roundTo(v, 2.0);
 }
@@ -685,29 +674,8 @@ struct Region {
   geometry::Box box;  // of the hull grown by the radius
 };
 
-std::vector<Vec2> convexHull(std::vector<Vec2> points) {
-  std::sort(points.begin(), points.end(),
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3) return points;
-  std::vector<Vec2> hull(2 * points.size());
-  std::size_t k = 0;
-  for (const Vec2 p : points) {  // lower hull, left to right
-    while (k >= 2 && geometry::orient(hull[k - 2], hull[k - 1], p) <= 0.0)
-      --k;
-    hull[k++] = p;
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {  // upper, back
-    while (k >= lower && geometry::orient(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0)
-      --k;
-    hull[k++] = points[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
 Region makeRegion(std::vector<Vec2> points, double radius) {
-  Region region{convexHull(std::move(points)), radius, {}};
+  Region region{geometry::convexHull(std::move(points)), radius, {}};
   region.box = geometry::grown(geometry::boundingBox(region.hull), radius);
   return region;
 }

@@ -21,16 +21,13 @@ using geometry::Vec2;
 
 constexpr int kMaxTargets = 10000;
 constexpr int kMaxVertices = 100000;
-constexpr int kTries = 1000;       // placements tried per target and per camera
-constexpr double kMinEdge = 1e-5;  // m: ten times the shapes' rounding, so rounding cannot
-                                   // fold an edge over its neighbours
+constexpr int kPlacementTries = 1000;  // placements tried per target and per camera
+constexpr double kMinEdge = 1e-5;      // m: ten times the shapes' rounding, so rounding cannot
+                                       // fold an edge over its neighbours
 // A rounded loop corner lies at most √2 · 0.5 mm farther from its (rounded) centre than the
 // exact one: the regions allow for it.
 constexpr double kLoopRounding = 1e-3;
 
-double mm(double v) {
-  return std::round(v * 1e3) / 1e3;
-}
 double um(double v) {
   return std::round(v * 1e6) / 1e6;
 }
@@ -192,11 +189,11 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
     Vec2 c;
     int tries = 0;
     do {
-      require(++tries <= kTries,
+      require(++tries <= kPlacementTries,
               fmt::format("field {} x {} m too crowded: no room for target {} of {} (its region "
                           "has radius {:.3f} m) after {} tries; use a larger field or fewer, "
                           "smaller targets or loops",
-                          o.fieldWidth, o.fieldHeight, i + 1, o.targets, radius, kTries));
+                          o.fieldWidth, o.fieldHeight, i + 1, o.targets, radius, kPlacementTries));
       c = {mm(targetRandom.uniform(-cx, cx)), mm(targetRandom.uniform(-cy, cy))};
     } while (!within(c, cx, cy) || centres.anyCloser(c, 2 * radius));
     centres.add(c);
@@ -229,12 +226,13 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
     Vec2 p;
     int tries = 0;
     do {
-      require(++tries <= kTries,
-              fmt::format("field {} x {} m too crowded: no place for camera {} of {} at least {} "
-                          "m from every target's region, the boundary and the other cameras "
-                          "after {} tries; use a larger field, fewer targets or a smaller "
-                          "clearance",
-                          o.fieldWidth, o.fieldHeight, j + 1, o.cameras, o.clearance, kTries));
+      require(
+          ++tries <= kPlacementTries,
+          fmt::format("field {} x {} m too crowded: no place for camera {} of {} at least {} "
+                      "m from every target's region, the boundary and the other cameras "
+                      "after {} tries; use a larger field, fewer targets or a smaller "
+                      "clearance",
+                      o.fieldWidth, o.fieldHeight, j + 1, o.cameras, o.clearance, kPlacementTries));
       p = {mm(cameraRandom.uniform(-px, px)), mm(cameraRandom.uniform(-py, py))};
     } while (taken(p));
     cameras.push_back(p);

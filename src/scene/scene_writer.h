@@ -4,6 +4,7 @@
 // are written open, as the published files write them; numbers as the shortest text that reads
 // back to the same double. Values are in the file's units: metres, seconds, m/s and rad/s,
 // but degrees for a camera's yaw and field of view (the published format's).
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
@@ -35,6 +36,19 @@ struct WrittenScene {
   std::vector<MovingObject> obstacles;
   std::vector<CameraEntry> cameras;
 };
+
+// `v` rounded to 1/perUnit, so that a file prints short and exact and nothing drawn from it
+// depends on the last bit of a maths library; `+ 0.0` turns −0 into 0, which prints as "0".
+inline double roundTo(double v, double perUnit) {
+  return std::round(v * perUnit) / perUnit + 0.0;
+}
+// To the millimetre, as the generators and importers write coordinates.
+inline double mm(double v) {
+  return roundTo(v, 1e3);
+}
+inline geometry::Vec2 mm(geometry::Vec2 p) {
+  return {mm(p.x), mm(p.y)};
+}
 
 // POLYGON((x1 y1,x2 y2,...)): a ring or a looping path, open; one point: a still path.
 std::string wktPolygon(std::span<const geometry::Vec2> points);

@@ -16,7 +16,7 @@ using geometry::Pose;
 
 constexpr double kTheta = std::numbers::pi / 6;
 
-scene::CameraSpec camera(double maxVelocity, double maxAngularVelocity) {
+scene::CameraSpec withLimits(double maxVelocity, double maxAngularVelocity) {
   scene::CameraSpec c;
   c.maxVelocity = maxVelocity;
   c.maxAngularVelocity = maxAngularVelocity;
@@ -29,9 +29,9 @@ kinematics::World squareWorld() {
 
 TEST(PathTravelTime, IsTheLongerOfRunningTheLengthAndTurning) {
   const std::vector<Pose> path{{0, 0, 0}, {3, 0, 0}, {3, 4, 0.5}};
-  EXPECT_DOUBLE_EQ(pathTravelTime(path, camera(1.0, 1.0)), 7.0);   // 7 m at 1 m/s
-  EXPECT_DOUBLE_EQ(pathTravelTime(path, camera(10.0, 0.1)), 5.0);  // 0.5 rad at 0.1 rad/s
-  EXPECT_DOUBLE_EQ(pathTravelTime({{{1, 1, 0}}}, camera(1.0, 1.0)), 0.0);
+  EXPECT_DOUBLE_EQ(pathTravelTime(path, withLimits(1.0, 1.0)), 7.0);   // 7 m at 1 m/s
+  EXPECT_DOUBLE_EQ(pathTravelTime(path, withLimits(10.0, 0.1)), 5.0);  // 0.5 rad at 0.1 rad/s
+  EXPECT_DOUBLE_EQ(pathTravelTime({{{1, 1, 0}}}, withLimits(1.0, 1.0)), 0.0);
 }
 
 TEST(AverageCoverageAhead, HoldsTheGoalsCoverageWhenNothingMoves) {

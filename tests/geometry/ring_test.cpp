@@ -150,3 +150,26 @@ TEST(BoundingBox, SpansAllVertices) {
 
 }  // namespace
 }  // namespace camcov::geometry
+
+namespace camcov::geometry {
+namespace {
+
+TEST(ConvexHull, IsCounterClockwiseWithoutInnerRepeatedOrCollinearPoints) {
+  // A square's corners, its centre, an edge's midpoint and a repeated corner.
+  const Ring hull = convexHull({{2, 2}, {0, 0}, {1, 1}, {2, 0}, {1, 0}, {0, 2}, {2, 2}});
+  EXPECT_EQ(hull, (Ring{{0, 0}, {2, 0}, {2, 2}, {0, 2}}));
+  EXPECT_GT(signedArea(hull), 0.0);
+}
+
+TEST(ConvexHull, OfFewerThanThreeDistinctPointsIsThosePointsSorted) {
+  EXPECT_EQ(convexHull({{3, 1}, {3, 1}, {1, 5}}), (Ring{{1, 5}, {3, 1}}));
+  EXPECT_EQ(convexHull({{3, 1}}), (Ring{{3, 1}}));
+  EXPECT_TRUE(convexHull({}).empty());
+}
+
+TEST(ConvexHull, OfCollinearPointsIsTheirTwoEnds) {
+  EXPECT_EQ(convexHull({{0, 0}, {1, 1}, {3, 3}, {2, 2}}), (Ring{{0, 0}, {3, 3}}));
+}
+
+}  // namespace
+}  // namespace camcov::geometry

@@ -17,8 +17,8 @@ namespace {
 using geometry::Vec2;
 
 TEST(PolarEdges, TheQuickRayTestCullsNoBoxTheKeyTestKeeps) {
-  const Occluders occluders(testing::world(testing::box(-50, -50, 50, 50), {}));
-  testing::SplitMix64 random{11};
+  const Occluders occluders(camcov::testing::world(camcov::testing::box(-50, -50, 50, 50), {}));
+  camcov::testing::SplitMix64 random{11};
   PolarEdges edges;
   int quick = 0;
   for (int i = 0; i < 200000; ++i) {
@@ -47,7 +47,7 @@ TEST(PolarEdges, TheQuickRayTestCullsNoBoxTheKeyTestKeeps) {
 }
 
 TEST(PolarEdges, TheQuickRayTestStaysOutOfWideFieldsOfView) {
-  const Occluders occluders(testing::world(testing::box(-50, -50, 50, 50), {}));
+  const Occluders occluders(camcov::testing::world(camcov::testing::box(-50, -50, 50, 50), {}));
   PolarEdges edges;
   const FieldOfView wide{0.0, 0.6 * std::numbers::pi};
   edges.build(occluders, {0, 0}, &wide);
@@ -56,7 +56,7 @@ TEST(PolarEdges, TheQuickRayTestStaysOutOfWideFieldsOfView) {
 }
 
 TEST(PolarEdges, BothSortsByKeyGiveTheSameStableOrder) {
-  testing::SplitMix64 random{3};
+  camcov::testing::SplitMix64 random{3};
   for (int round = 0; round < 2000; ++round) {
     // Keys over a narrow or a full range, with many repeats; refs record the input order.
     const auto n = static_cast<std::size_t>(random.uniform(0, 300));
