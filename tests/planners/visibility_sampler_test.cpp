@@ -31,58 +31,57 @@ bool sees(const kinematics::World& w, const geometry::Pose& p, geometry::Vec2 q1
   return true;
 }
 
-TEST(VisibilitySampler, SamplesAreValidAndSeeTheirPoint) {
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+// Poses the sampler draws for a camera with `lens` in the room of small_worlds.h, ten for each
+// of `trials` points q1 on the target, with the q1 each was drawn for.
+struct Drawn {
+  geometry::Vec2 q1;
+  geometry::Pose pose;
+};
+std::vector<Drawn> drawnPoses(const kinematics::World& w, const scene::Lens& lens, int trials,
+                              std::uint64_t seed) {
+  reward::RewardModel model(params::RewardParams{}, lens);
   model.setWorld(w);
   StateValidity validity(1.0);
   validity.setWorld(w);
-  Random random(7);
+  Random random(seed);
   VisibilitySampler sampler;
-  int samples = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  std::vector<Drawn> out;
+  for (int trial = 0; trial < trials; ++trial) {
     const auto q1 = samplePointOnRings(w.targets, random);
-    ASSERT_TRUE(q1);
-    ASSERT_TRUE(sampler.focus(model, *q1));
+    if (!q1 || !sampler.focus(model, *q1)) continue;
     for (int k = 0; k < 10; ++k) {
-      const auto pose = sampler.sample(random, validity, model.lens(0));
-      if (!pose) continue;
-      ++samples;
-      EXPECT_TRUE(validity.isValid(pose->position()));
-      EXPECT_GE(validity.clearance(pose->position()), 1.0);
-      EXPECT_TRUE(sees(w, *pose, *q1, model.lens(0).halfFov))
-          << "q1 (" << q1->x << ", " << q1->y << ") pose (" << pose->x << ", " << pose->y << ", "
-          << pose->yaw << ")";
+      if (const auto pose = sampler.sample(random, validity, lens)) out.push_back({*q1, *pose});
     }
   }
-  EXPECT_GT(samples, 1500) << "the room is mostly free: few samples should fail";
+  return out;
+}
+
+TEST(VisibilitySampler, SamplesAreValidAndSeeTheirPoint) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  StateValidity validity(1.0);
+  validity.setWorld(w);
+  const auto drawn = drawnPoses(w, std::numbers::pi / 6, 200, 7);
+  for (const auto& [q1, pose] : drawn) {
+    EXPECT_TRUE(validity.isValid(pose.position()));
+    EXPECT_GE(validity.clearance(pose.position()), 1.0);
+    EXPECT_TRUE(sees(w, pose, q1, std::numbers::pi / 6))
+        << "q1 (" << q1.x << ", " << q1.y << ") pose (" << pose.x << ", " << pose.y << ", "
+        << pose.yaw << ")";
+  }
+  EXPECT_GT(drawn.size(), 1500u) << "the room is mostly free: few samples should fail";
 }
 
 TEST(VisibilitySampler, ACameraWithASensingRangeIsPlacedWithinItOfItsPoint) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
   scene::Lens lens(std::numbers::pi / 6);
   lens.range = 3.0;
-  reward::RewardModel model(params::RewardParams{}, lens);
-  model.setWorld(w);
-  StateValidity validity(1.0);
-  validity.setWorld(w);
-  Random random(11);
-  VisibilitySampler sampler;
-  int samples = 0;
-  for (int trial = 0; trial < 100; ++trial) {
-    const auto q1 = samplePointOnRings(w.targets, random);
-    ASSERT_TRUE(q1);
-    ASSERT_TRUE(sampler.focus(model, *q1));
-    for (int k = 0; k < 10; ++k) {
-      const auto pose = sampler.sample(random, validity, model.lens(0));
-      if (!pose) continue;
-      ++samples;
-      EXPECT_LE(geometry::distance(pose->position(), *q1), 3.0);
-      EXPECT_TRUE(sees(w, *pose, *q1, lens.halfFov));
-    }
+  const auto drawn = drawnPoses(w, lens, 100, 11);
+  for (const auto& [q1, pose] : drawn) {
+    EXPECT_LE(geometry::distance(pose.position(), q1), 3.0);
+    EXPECT_TRUE(sees(w, pose, q1, lens.halfFov));
   }
   // Rejection: most of what the target sees lies farther than 3 m, yet a sample is mostly found.
-  EXPECT_GT(samples, 200);
+  EXPECT_GT(drawn.size(), 200u);
 }
 
 TEST(SamplePointOnSegments, IsUniformByLength) {
