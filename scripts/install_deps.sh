@@ -19,7 +19,7 @@ packages=(
   ompl-demos python3                # ompl_benchmark_statistics reads our logs in a test
   time                              # /usr/bin/time in scripts/throughput_benchmark.sh
   libbenchmark-dev                  # Google Benchmark
-  clang libclang-rt-14-dev          # fuzzers: clang with libFuzzer (scripts/fuzz.sh)
+  clang libclang-rt-14-dev          # the sanitizer build and its fuzzers (clang, libFuzzer)
   chromium                          # headless browser test of the HTML report
   chromium-driver python3-selenium  # Selenium test of the explorer page (tests/explorer)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the camcov Python module and its tests
