@@ -15,6 +15,11 @@ case "$kind" in
   # sanitizer tests and the fuzzers.
   sanitize) dir="$repo/build-asan"
     export CC=clang CXX=clang++
+    # A folder configured by GCC before (the sanitizer build used to be GCC's) starts afresh:
+    # CMake keeps a folder's first compiler, and only clang builds the fuzzers.
+    if [ -f "$dir/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' "$dir/CMakeCache.txt"; then
+      rm -rf "$dir"
+    fi
     flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG"
            -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_FUZZERS=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
