@@ -229,6 +229,11 @@ void checkCamera(const geometry::Pose& camera, const scene::Lens& lens) {
     throw std::invalid_argument("visibility: field-of-view half-angle must lie in (0, pi), got " +
                                 std::to_string(lens.halfFov));
   }
+  // NaN fails too: it would otherwise read as an unlimited range.
+  if (!(lens.range > 0.0)) {
+    throw std::invalid_argument("visibility: sensing range must be positive, got " +
+                                std::to_string(lens.range));
+  }
   if (!finite(camera.position()) || !std::isfinite(camera.yaw)) {
     throw std::invalid_argument("visibility: camera pose must be finite");
   }

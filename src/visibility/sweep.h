@@ -66,7 +66,8 @@ class Sweep {
   // again, so a call where one camera moved costs one sweep and the union, O(n log n + k log k)
   // for k seen intervals (the optimizers move one camera at a time).
   // Throws std::invalid_argument for more than scene::kMaxCameras cameras, fewer lenses than
-  // cameras, θ_j outside (0, π), or a non-finite pose.
+  // cameras, θ_j outside (0, π), a range that is not positive (NaN included), or a non-finite
+  // pose.
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
                 std::span<const scene::Lens> lenses, std::vector<Segment>& out);
   // The same for a team of like cameras, every one with lens `lens`.
@@ -95,7 +96,8 @@ class Sweep {
   void visibilityPolygon(const Occluders& occluders, geometry::Vec2 point, geometry::Ring& out);
 
   // What one camera sees: the visibility polygon cut to its field of view, "defined by p_j
-  // itself and the event points inside the field of view" (section IV-B). For drawing.
+  // itself and the event points inside the field of view" (section IV-B), cut to the lens's
+  // range by arcs of its circle. For drawing.
   void fieldOfViewPolygon(const Occluders& occluders, const geometry::Pose& camera,
                           const scene::Lens& lens, geometry::Ring& out);
 
