@@ -295,7 +295,7 @@
       field(info, "limits", "limits",
             `v ≤ ${limits.maxVelocity} m/s, ω ≤ ${limits.maxAngularVelocity.toFixed(3)} rad/s, ` +
             `half-angle θ = ${deg(limits.halfFov)}° (field of view ${deg(2 * limits.halfFov)}°)` +
-            (limits.range === undefined ? "" : `, sensing range ${limits.range} m`));
+            (limits.sensingRange === undefined ? "" : `, sensing range ${limits.sensingRange} m`));
       let sees = 0, total = 0;
       for (const s of step.segments) {
         total += length(s);

@@ -294,7 +294,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
     cameras.push_back({{"maxVelocity", c.maxVelocity},
                        {"maxAngularVelocity", c.maxAngularVelocity},
                        {"halfFov", c.lens.halfFov}});
-    if (c.lens.limited()) cameras.back()["range"] = c.lens.range;
+    if (c.lens.limited()) cameras.back()["sensingRange"] = c.lens.range;
   }
   nlohmann::json events = nlohmann::json::array();
   for (const auto& e : run.events) {
