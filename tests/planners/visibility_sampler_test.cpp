@@ -73,8 +73,7 @@ TEST(VisibilitySampler, SamplesAreValidAndSeeTheirPoint) {
 
 TEST(VisibilitySampler, ACameraWithASensingRangeIsPlacedWithinItOfItsPoint) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
-  scene::Lens lens(std::numbers::pi / 6);
-  lens.range = 3.0;
+  const scene::Lens lens = testing::rangedLens(std::numbers::pi / 6, 3.0);
   const auto drawn = drawnPoses(w, lens, 100, 11);
   for (const auto& [q1, pose] : drawn) {
     EXPECT_LE(geometry::distance(pose.position(), q1), 3.0);

@@ -13,13 +13,8 @@ namespace camcov::scene {
 namespace {
 
 using geometry::Vec2;
+using testing::rangedLens;
 constexpr double kPi = std::numbers::pi;
-
-Lens ranged(double halfFov, double range) {
-  Lens lens(halfFov);
-  lens.range = range;
-  return lens;
-}
 
 TEST(Lens, WithoutARangeSeesTheWholeWedgeAtAnyDistance) {
   const Lens lens(kPi / 6);
@@ -34,7 +29,7 @@ TEST(Lens, WithoutARangeSeesTheWholeWedgeAtAnyDistance) {
 }
 
 TEST(Lens, ARangeCutsAtItsCircleInclusive) {
-  const Lens lens = ranged(kPi / 6, 5.0);
+  const Lens lens = rangedLens(kPi / 6, 5.0);
   EXPECT_TRUE(lens.sees({5, 0}, 0.0));
   EXPECT_FALSE(lens.sees({5.000001, 0}, 0.0));
   EXPECT_TRUE(lens.sees({3, 1}, 0.0));
@@ -42,7 +37,7 @@ TEST(Lens, ARangeCutsAtItsCircleInclusive) {
 }
 
 TEST(Lens, RangeOnSegmentIsTheChordOfTheCircle) {
-  const Lens lens = ranged(kPi / 6, 5.0);
+  const Lens lens = rangedLens(kPi / 6, 5.0);
   double t0 = 0, t1 = 0;
   // x = 3 from y = −8 to y = 8: inside for |y| ≤ 4, t = (y + 8) / 16 in [0.25, 0.75].
   ASSERT_TRUE(lens.rangeOnSegment({0, 0}, {3, -8}, {3, 8}, t0, t1));
@@ -72,10 +67,10 @@ TEST(Lens, RangeOnSegmentIsTheChordOfTheCircle) {
 }
 
 TEST(Lens, CachesTellARangeApartToTheBit) {
-  EXPECT_TRUE(sameBits(ranged(0.5, 3.0), ranged(0.5, 3.0)));
-  EXPECT_FALSE(sameBits(ranged(0.5, 3.0), ranged(0.5, std::nextafter(3.0, 4.0))));
-  EXPECT_FALSE(sameBits(Lens(0.5), ranged(0.5, 3.0)));
-  EXPECT_NE(Lens(0.5), ranged(0.5, 3.0));
+  EXPECT_TRUE(sameBits(rangedLens(0.5, 3.0), rangedLens(0.5, 3.0)));
+  EXPECT_FALSE(sameBits(rangedLens(0.5, 3.0), rangedLens(0.5, std::nextafter(3.0, 4.0))));
+  EXPECT_FALSE(sameBits(Lens(0.5), rangedLens(0.5, 3.0)));
+  EXPECT_NE(Lens(0.5), rangedLens(0.5, 3.0));
 }
 
 TEST(CameraSpec, SaturatesToItsLimitsAndStopsWhatIsNotFinite) {

@@ -36,6 +36,13 @@ inline kinematics::World roomWithTargetAndObstacle() {
 }
 
 // A scene from JSON text (the loader validates it like any file).
+// A lens of half-angle θ that sees no farther than `range` metres.
+inline scene::Lens rangedLens(double halfFov, double range) {
+  scene::Lens lens(halfFov);
+  lens.range = range;
+  return lens;
+}
+
 inline scene::Scene sceneFromJson(const std::string& json, const std::string& name = "test.json") {
   return scene::parseScene(json, name);
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "random_scenes.h"
 #include "support/small_worlds.h"
@@ -17,17 +18,12 @@ namespace camcov::visibility {
 namespace {
 
 using camcov::testing::box;
+using camcov::testing::rangedLens;
 using camcov::testing::world;
 using geometry::Pose;
 using geometry::Vec2;
 
 constexpr double kPi = std::numbers::pi;
-
-scene::Lens ranged(double halfFov, double range) {
-  scene::Lens lens(halfFov);
-  lens.range = range;
-  return lens;
-}
 
 double seenLength(const kinematics::World& w, const Pose& camera, const scene::Lens& lens) {
   Sweep sweep;
@@ -50,20 +46,27 @@ TEST(SensingRange, SeesOnlyTheChordOfTheNearEdgeWithinRange) {
   const Pose camera{0, 0, 0};
   EXPECT_NEAR(seenLength(w, camera, kPi / 3), 2.0, 1e-12);
   // r² = 9 + y²: |y| ≤ 0.5 for r = √9.25, so 1 m of the edge.
-  EXPECT_NEAR(seenLength(w, camera, ranged(kPi / 3, std::sqrt(9.25))), 1.0, 1e-12);
+  EXPECT_NEAR(seenLength(w, camera, rangedLens(kPi / 3, std::sqrt(9.25))), 1.0, 1e-12);
   // r = √10 reaches the corners: the whole edge; beyond, no more (the rest faces away).
-  EXPECT_NEAR(seenLength(w, camera, ranged(kPi / 3, std::sqrt(10.0))), 2.0, 1e-12);
-  EXPECT_NEAR(seenLength(w, camera, ranged(kPi / 3, 50.0)), 2.0, 1e-12);
+  EXPECT_NEAR(seenLength(w, camera, rangedLens(kPi / 3, std::sqrt(10.0))), 2.0, 1e-12);
+  EXPECT_NEAR(seenLength(w, camera, rangedLens(kPi / 3, 50.0)), 2.0, 1e-12);
   // Short of the edge, or just touching it at one point: nothing.
-  EXPECT_EQ(seenLength(w, camera, ranged(kPi / 3, 2.9)), 0.0);
-  EXPECT_EQ(seenLength(w, camera, ranged(kPi / 3, 3.0)), 0.0);
+  EXPECT_EQ(seenLength(w, camera, rangedLens(kPi / 3, 2.9)), 0.0);
+  EXPECT_EQ(seenLength(w, camera, rangedLens(kPi / 3, 3.0)), 0.0);
+}
+
+TEST(SensingRange, ARangeThatIsNotPositiveIsRefusedNotReadAsUnlimited) {
+  const auto w = squareAhead();
+  for (const double bad : {0.0, -1.0, std::nan("")})
+    EXPECT_THROW(seenLength(w, {0, 0, 0}, rangedLens(kPi / 3, bad)), std::invalid_argument) << bad;
 }
 
 TEST(SensingRange, TheSegmentsOfSAreCutAtTheCircle) {
   const auto w = squareAhead();
   Sweep sweep;
   std::vector<Segment> out;
-  sweep.segments(Occluders(w), std::vector<Pose>{{0, 0, 0}}, ranged(kPi / 3, std::sqrt(9.25)), out);
+  sweep.segments(Occluders(w), std::vector<Pose>{{0, 0, 0}}, rangedLens(kPi / 3, std::sqrt(9.25)),
+                 out);
   int seen = 0;
   for (const Segment& s : out) {
     if (s.visibleBy == 0) continue;
@@ -81,7 +84,7 @@ TEST(SensingRange, WhatIsBeyondTheRangeIsOutsideTheFieldOfView) {
   // The near edge x = 3 is edge 3 of box(3, −1, 5, 1) (counter-clockwise from (3, −1)).
   const Segment nearEdge{ring[3], ring[0], 0, 3, 0};
   EXPECT_EQ(whyUnseen(w, {0, 0, 0}, kPi / 3, nearEdge).kind, UnseenKind::InSight);
-  EXPECT_EQ(whyUnseen(w, {0, 0, 0}, ranged(kPi / 3, 2.5), nearEdge).kind,
+  EXPECT_EQ(whyUnseen(w, {0, 0, 0}, rangedLens(kPi / 3, 2.5), nearEdge).kind,
             UnseenKind::OutsideFieldOfView);
 }
 
@@ -91,7 +94,7 @@ TEST(SensingRange, TheDrawnFieldOfViewStaysWithinTheCircleAndIsItsSector) {
   Sweep sweep;
   geometry::Ring polygon;
   const Pose camera{0, 0, 0.3};
-  sweep.fieldOfViewPolygon(Occluders(w), camera, ranged(kPi / 4, 4.0), polygon);
+  sweep.fieldOfViewPolygon(Occluders(w), camera, rangedLens(kPi / 4, 4.0), polygon);
   ASSERT_GE(polygon.size(), 3u);
   for (const Vec2 v : polygon)
     EXPECT_LE(geometry::distance(v, camera.position()), 4.0 + 1e-12);
@@ -100,7 +103,7 @@ TEST(SensingRange, TheDrawnFieldOfViewStaysWithinTheCircleAndIsItsSector) {
   // A range longer than the room: the wedge as without one.
   geometry::Ring unlimited, far;
   sweep.fieldOfViewPolygon(Occluders(w), camera, kPi / 4, unlimited);
-  sweep.fieldOfViewPolygon(Occluders(w), camera, ranged(kPi / 4, 100.0), far);
+  sweep.fieldOfViewPolygon(Occluders(w), camera, rangedLens(kPi / 4, 100.0), far);
   EXPECT_EQ(far, unlimited);
 }
 
@@ -148,7 +151,7 @@ TEST(SensingRange, OnRandomScenesIsTheUnlimitedViewCutToTheCircle) {
       // A range under a micrometre is below the sweep's tolerance of a camera on an edge.
       if (farthest < 1e-6) continue;
       const double r = farthest * (0.3 + 0.6 * static_cast<double>((i * 7 + j) % 10) / 10.0);
-      sweep.segments(occluders, std::vector<Pose>{camera}, ranged(c.halfFov, r), limited);
+      sweep.segments(occluders, std::vector<Pose>{camera}, rangedLens(c.halfFov, r), limited);
       double want = 0.0, got = 0.0;
       for (const Segment& s : unlimited)
         want += s.visibleBy != 0 ? lengthWithin(camera.position(), s.a, s.b, r) : 0.0;
