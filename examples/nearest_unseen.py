@@ -24,7 +24,7 @@ class NearestUnseen:
         params = params or camcov.parameters()
         self.dt = params["sim"]["dt"]              # s
         self.standoff = params["reward"]["d2"]     # m in front of the edge: d2 of eq. (7)
-        self.max_velocity = [c["max_velocity"] for c in scene.cameras]
+        self.max_velocity = [c["maxVelocity"] for c in scene.cameras]
         # Column of masks: every camera's bit but row j's.
         self.others = ~np.left_shift(np.uint64(1), np.arange(len(scene.cameras),
                                                              dtype=np.uint64))[:, None]

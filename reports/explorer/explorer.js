@@ -292,10 +292,15 @@
       const c = step.cameras[sel.camera], limits = run.cameras[sel.camera];
       html("h3", {}, `Camera ${sel.camera}`, info);
       field(info, "pose", "pose", `(${c.x.toFixed(3)}, ${c.y.toFixed(3)}) m, ${deg(c.yaw)}°`);
+      // The camera as the scene file describes it (scene::describeCamera): the limits in
+      // words; any further property of its lens (sensingRange, …) by the file's own key.
+      const theta = limits.cameraFoV;
       field(info, "limits", "limits",
             `v ≤ ${limits.maxVelocity} m/s, ω ≤ ${limits.maxAngularVelocity.toFixed(3)} rad/s, ` +
-            `half-angle θ = ${deg(limits.halfFov)}° (field of view ${deg(2 * limits.halfFov)}°)` +
-            (limits.sensingRange === undefined ? "" : `, sensing range ${limits.sensingRange} m`));
+            `half-angle θ = ${theta.toFixed(1)}° (field of view ${(2 * theta).toFixed(1)}°)`);
+      const shown = new Set(["x", "y", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV"]);
+      for (const [key, value] of Object.entries(limits))
+        if (!shown.has(key)) field(info, key, key, String(value));
       let sees = 0, total = 0;
       for (const s of step.segments) {
         total += length(s);

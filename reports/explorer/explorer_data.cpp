@@ -290,12 +290,8 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
     series["reward"].push_back(step.terms.reward);
   }
   nlohmann::json cameras = nlohmann::json::array();
-  for (const auto& c : scene.cameras) {
-    cameras.push_back({{"maxVelocity", c.maxVelocity},
-                       {"maxAngularVelocity", c.maxAngularVelocity},
-                       {"halfFov", c.lens.halfFov}});
-    if (c.lens.limited()) cameras.back()["sensingRange"] = c.lens.range;
-  }
+  for (const auto& c : scene.cameras)
+    cameras.push_back(scene::describeCamera(c));
   nlohmann::json events = nlohmann::json::array();
   for (const auto& e : run.events) {
     // The mark by the one rule of control/event_kind.h, so the timeline marks what the

@@ -61,15 +61,8 @@ Registration addStateCommand(CLI::App& app) {
               if (ids) out["obstacles"].back()["id"] = id;
             }
             out["cameras"] = nlohmann::json::array();
-            for (const auto& c : s.cameras) {
-              out["cameras"].push_back({{"x", c.initial.x},
-                                        {"y", c.initial.y},
-                                        {"yawDeg", geometry::radToDeg(c.initial.yaw)},
-                                        {"maxVelocity", c.maxVelocity},
-                                        {"maxAngularVelocity", c.maxAngularVelocity},
-                                        {"fovHalfAngleDeg", geometry::radToDeg(c.lens.halfFov)}});
-              if (c.lens.limited()) out["cameras"].back()["sensingRange"] = c.lens.range;
-            }
+            for (const auto& c : s.cameras)
+              out["cameras"].push_back(scene::describeCamera(c));
             std::cout << out.dump(2) << "\n";
             return 0;
           }};

@@ -34,16 +34,6 @@ py::object parametersToPython(const params::Parameters& p) {
 
 namespace {
 
-py::dict cameraDict(const scene::CameraSpec& c) {
-  py::dict d;
-  d["pose"] = posesToArray(std::span(&c.initial, 1))[py::int_(0)];
-  d["max_velocity"] = c.maxVelocity;
-  d["max_angular_velocity"] = c.maxAngularVelocity;
-  d["half_fov"] = c.lens.halfFov;
-  d["sensing_range"] = c.lens.range;  // inf: unlimited
-  return d;
-}
-
 // For each of a world's `count` targets or obstacles, its index in the scene (`index`:
 // kinematics::targetId or obstacleId).
 std::vector<std::uint32_t> sceneIndices(const kinematics::World& w, std::size_t count,
@@ -119,13 +109,14 @@ void bindScene(py::module_& m) {
           [](const PythonScene& s) {
             py::list out;
             for (const auto& c : s.scene.cameras)
-              out.append(cameraDict(c));
+              out.append(jsonToPython(scene::describeCamera(c)));
             return out;
           },
-          "One dict per camera: pose (x m, y m, yaw rad), max_velocity (m/s), "
-          "max_angular_velocity (rad/s), half_fov (the half-angle θ_j, radians: the field of "
-          "view is 2θ_j wide; the file's cameraFoV is θ in degrees), sensing_range (metres; "
-          "inf: unlimited).")
+          "One dict per camera, as `camcov state` and the explorer show it, in the scene "
+          "file's keys and units: x, y (m), angle (initial yaw, degrees), maxVelocity (m/s), "
+          "maxAngularVelocity (rad/s), cameraFoV (the half-angle θ_j, degrees: the field of "
+          "view is 2θ_j wide) and, for a camera with a range, sensingRange (m). For radians "
+          "use initial_poses and half_fovs.")
       .def_property_readonly(
           "initial_poses",
           [](const PythonScene& s) {

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_writer.h"
+
 namespace camcov::scene {
 
 bool Lens::sees(geometry::Vec2 offset, double yaw) const {
@@ -56,6 +60,20 @@ double CameraSpec::travelTime(const geometry::Pose& from, const geometry::Pose& 
 geometry::Pose moved(const geometry::Pose& pose, const CameraCommand& u, double dt) {
   const geometry::Vec2 p = pose.position() + u.velocity * dt;
   return {p.x, p.y, geometry::wrapAngle(pose.yaw + u.angularVelocity * dt)};
+}
+
+nlohmann::json describeCamera(const CameraSpec& camera) {
+  // Degrees come back from radians a bit off (a file's 30 reads back 29.999999999999996):
+  // rounded to 1e-9°, far below anything a camera's pose or lens can tell apart.
+  const auto degrees = [](double radians) { return roundTo(geometry::radToDeg(radians), 1e9); };
+  nlohmann::json j{{"x", camera.initial.x},
+                   {"y", camera.initial.y},
+                   {"angle", degrees(camera.initial.yaw)},
+                   {"maxVelocity", camera.maxVelocity},
+                   {"maxAngularVelocity", camera.maxAngularVelocity},
+                   {"cameraFoV", degrees(camera.lens.halfFov)}};
+  if (camera.lens.limited()) j["sensingRange"] = camera.lens.range;
+  return j;
 }
 
 }  // namespace camcov::scene

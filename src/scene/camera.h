@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "geometry/same_bits.h"
 #include "geometry/vec2.h"
 
@@ -76,6 +78,13 @@ struct CameraSpec {
   double travelTime(double length, double turn) const;
   double travelTime(const geometry::Pose& from, const geometry::Pose& to) const;
 };
+
+// A camera as every output shows it (`camcov state`, the explorer's camera panel, Python's
+// `Scene.cameras`), in the scene file's keys and units: x and y (m), angle (yaw, degrees),
+// maxVelocity, maxAngularVelocity, cameraFoV (θ, degrees) and, for a limited lens,
+// sensingRange (m). One description, so a property added to the camera is shown everywhere
+// by adding it here.
+nlohmann::json describeCamera(const CameraSpec& camera);
 
 // One Euler step of ṗ = u over dt, the yaw wrapped to [-π, π].
 geometry::Pose moved(const geometry::Pose& pose, const CameraCommand& u, double dt);

@@ -487,6 +487,29 @@ def test_a_clicked_camera_shows_its_pose_and_its_own_coverage_term(explorer, pap
     assert re.fullmatch(r"\d\.\d{4}", explorer.field(0, "utilization"))
     assert_no_console_errors(explorer)
 
+def test_a_clicked_camera_shows_its_limits_and_range_as_camcov_state_describes_it(
+        explorer, camcov, tmp_path):
+    # tiny_dynamic with a sensing range on camera 0: one camera description serves the state
+    # command and the explorer, so the panel shows what `camcov state` prints.
+    scene = json.loads(SCENE.read_text())
+    scene["cameras"][0]["sensingRange"] = 2.75
+    scene_file = tmp_path / "ranged.json"
+    scene_file.write_text(json.dumps(scene))
+    state = camcov("state", scene_file)
+    assert state.returncode == 0, state.stderr
+    described = json.loads(state.stdout)["cameras"][0]
+    assert described["sensingRange"] == 2.75
+    run_file, _ = record_run(camcov, tmp_path / "runs", "local", scene=scene_file, duration=1)
+    explorer.open(write_explorer(camcov, [run_file], tmp_path / "ranged.html"))
+    explorer.click(explorer.world(0).find_element(By.CSS_SELECTOR, 'g.camera[data-camera="0"]'))
+    limits = explorer.wait_for(lambda: explorer.field(0, "limits"), lambda text: text != "",
+                               "the limits of a clicked camera")
+    assert f"v ≤ {described['maxVelocity']:g} m/s" in limits, limits
+    assert f"θ = {described['cameraFoV']:.1f}°" in limits, limits
+    assert first_number(explorer.field(0, "sensingRange")) == 2.75
+    assert_no_console_errors(explorer)
+
+
 def test_the_first_and_last_steps_look_different(explorer, paper_page, tmp_path):
     page, run = paper_page
     cameras = run["series"]["cameras"]

@@ -38,6 +38,9 @@ def test_a_scene_loads_with_its_cameras_and_the_world_at_t(tiny, cli):
         assert np.array_equal(ours, np.array(theirs["polygon"]))
     for ours, theirs in zip(world.obstacles, state["obstacles"]):
         assert np.array_equal(ours, np.array(theirs["polygon"]))
+    # One camera description: Python's dicts are what `camcov state` prints.
+    assert scene.cameras == state["cameras"]
+    assert scene.cameras[0]["cameraFoV"] == 30 and "sensingRange" not in scene.cameras[0]
 
 
 def test_parse_scene_names_the_source_in_its_errors():

@@ -122,7 +122,7 @@ def test_a_scene_brings_its_cameras_sensing_ranges(tmp_path, cli):
     path = tmp_path / "ranged.json"
     path.write_text(json.dumps(RANGED_SCENE))
     scene = camcov.load_scene(str(path))
-    assert scene.cameras[0]["sensing_range"] == 9.25 ** 0.5
+    assert scene.cameras[0]["sensingRange"] == 9.25 ** 0.5
     world = scene.world_at(0.0)
     terms = camcov.Visibility(world, scene).terms(scene.initial_poses)
     assert terms["coverage"] == pytest.approx(1.0 / 8.0, abs=1e-12)
@@ -138,7 +138,7 @@ def test_a_scene_brings_its_cameras_sensing_ranges(tmp_path, cli):
 def test_bad_sensing_ranges_raise_value_errors(tiny):
     scene = camcov.load_scene(tiny("tiny_static"))
     world = scene.world_at(0.0)
-    assert all(c["sensing_range"] == float("inf") for c in scene.cameras)
+    assert all("sensingRange" not in c for c in scene.cameras)
     for bad in (-1.0, 0.0, float("nan")):
         with pytest.raises(ValueError, match="sensing_ranges: camera 0"):
             camcov.Visibility(world, [0.5], sensing_ranges=[bad])

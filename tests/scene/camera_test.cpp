@@ -1,11 +1,14 @@
 // The camera type (scene/camera.h): the lens's view and range against numbers worked out by
-// hand, the movement rules, and the loader's sensingRange.
+// hand, the movement rules, the loader's sensingRange, and the one description of a camera.
 #include "scene/camera.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "support/small_worlds.h"
 
@@ -110,6 +113,32 @@ TEST(SceneLoader, ACameraMayHaveASensingRangeAndWithoutOneSeesWithoutLimit) {
   const Scene ranged = testing::sceneFromJson(json);
   EXPECT_EQ(ranged.cameras[0].lens.range, 7.5);
   EXPECT_EQ(ranged.cameras[0].lens.halfFov, plain.cameras[0].lens.halfFov);
+}
+
+// The description speaks the file's keys and units: written back as a camera entry of a scene
+// file (pos as WKT), it loads to the same camera, lens and all.
+TEST(DescribeCamera, IsTheFilesCameraEntryAndReadsBackAsTheSameCamera) {
+  std::string json = testing::kOneTargetScene;
+  json.insert(json.find("\"maxVelocity\""), "\"sensingRange\": 7.5, \"cameraFoV\": 40, ");
+  const Scene scene = testing::sceneFromJson(json);
+  const CameraSpec& camera = scene.cameras.at(0);
+  nlohmann::json entry = describeCamera(camera);
+  EXPECT_EQ(entry["cameraFoV"], 40.0);  // degrees as written, not 39.99999999999999
+  EXPECT_EQ(entry["sensingRange"], 7.5);
+  entry["pos"] = fmt::format("POINT({} {})", entry["x"].get<double>(), entry["y"].get<double>());
+  entry.erase("x");
+  entry.erase("y");
+  nlohmann::json file = nlohmann::json::parse(json);
+  file["cameras"] = nlohmann::json::array({entry});
+  const CameraSpec back = testing::sceneFromJson(file.dump()).cameras.at(0);
+  EXPECT_EQ(back.initial.x, camera.initial.x);
+  EXPECT_EQ(back.initial.y, camera.initial.y);
+  EXPECT_NEAR(back.initial.yaw, camera.initial.yaw, 1e-15);
+  EXPECT_EQ(back.maxVelocity, camera.maxVelocity);
+  EXPECT_EQ(back.maxAngularVelocity, camera.maxAngularVelocity);
+  EXPECT_NEAR(back.lens.halfFov, camera.lens.halfFov, 1e-15);
+  EXPECT_EQ(back.lens.range, camera.lens.range);
+  EXPECT_FALSE(describeCamera(CameraSpec{}).contains("sensingRange"));  // unlimited: no key
 }
 
 }  // namespace
