@@ -7,7 +7,7 @@
 #include "python/bindings.h"
 #include "util/input_error.h"
 
-PYBIND11_MODULE(camcov, m) {
+PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   m.doc() =
       "camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian).\n\n"
