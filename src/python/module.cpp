@@ -23,4 +23,5 @@ PYBIND11_MODULE(_core, m) {
   camcov::python::bindVisibility(m);
   camcov::python::bindRuns(m);
   camcov::python::bindInterruption(m);
+  camcov::python::bindEnvironment(m);
 }

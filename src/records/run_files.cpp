@@ -20,27 +20,6 @@ nlohmann::json pose(const geometry::Pose& p) {
   return nlohmann::json::array({p.x, p.y, p.yaw});
 }
 
-nlohmann::json summaryJson(const sim::RunSummary& s) {
-  nlohmann::json j = {{"steps", s.steps},
-                      {"duration", s.duration},
-                      {"averageCoverage", s.averageCoverage},
-                      {"averageUtilization", s.averageUtilization},
-                      {"averageReward", s.averageReward},
-                      {"finalCoverage", s.finalCoverage},
-                      {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
-                      {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
-                      {"objectCollisionTime", s.objectCollisionTime},
-                      {"cameraCollisionTime", s.cameraCollisionTime},
-                      {"avoidableContactTime", s.avoidableContactTime},
-                      {"unavoidableContactTime", s.unavoidableContactTime},
-                      {"avoidableContacts", s.avoidableContacts},
-                      {"unavoidableContacts", s.unavoidableContacts},
-                      {"boundaryClamps", s.boundaryClamps}};
-  // Only recorded tracks leave a scene empty; other runs keep their bytes.
-  if (s.stepsWithoutTargets > 0) j["stepsWithoutTargets"] = s.stepsWithoutTargets;
-  return j;
-}
-
 geometry::Pose poseFrom(const nlohmann::json& v) {
   return {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>()};
 }
@@ -69,6 +48,27 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
 }
 
 }  // namespace
+
+nlohmann::json summaryJson(const sim::RunSummary& s) {
+  nlohmann::json j = {{"steps", s.steps},
+                      {"duration", s.duration},
+                      {"averageCoverage", s.averageCoverage},
+                      {"averageUtilization", s.averageUtilization},
+                      {"averageReward", s.averageReward},
+                      {"finalCoverage", s.finalCoverage},
+                      {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
+                      {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
+                      {"objectCollisionTime", s.objectCollisionTime},
+                      {"cameraCollisionTime", s.cameraCollisionTime},
+                      {"avoidableContactTime", s.avoidableContactTime},
+                      {"unavoidableContactTime", s.unavoidableContactTime},
+                      {"avoidableContacts", s.avoidableContacts},
+                      {"unavoidableContacts", s.unavoidableContacts},
+                      {"boundaryClamps", s.boundaryClamps}};
+  // Only recorded tracks leave a scene empty; other runs keep their bytes.
+  if (s.stepsWithoutTargets > 0) j["stepsWithoutTargets"] = s.stepsWithoutTargets;
+  return j;
+}
 
 std::string runStem(const std::string& scene, const std::string& method, std::uint64_t seed) {
   return fmt::format("{}-{}-seed{}", scene, method, seed);

@@ -15,6 +15,8 @@ namespace camcov::records {
 inline constexpr const char* kRunFormat = "camcov-run/2";
 
 nlohmann::json runToJson(const RunRecord& run);
+// A run's summary as its results file writes it (runToJson's "summary").
+nlohmann::json summaryJson(const sim::RunSummary& summary);
 // The inverse of runToJson (null distances read back as infinity). Throws InputError naming
 // `source` if the document is not a camcov run.
 RunRecord runFromJson(const nlohmann::json& j, const std::string& source);

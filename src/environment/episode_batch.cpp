@@ -1,0 +1,94 @@
+#include "environment/episode_batch.h"
+
+#include <stdexcept>
+#include <utility>
+
+namespace camcov::environment {
+
+EpisodeStepper::EpisodeStepper(unsigned threads) {
+  for (unsigned w = 1; w < threads; ++w)
+    workers_.emplace_back([this] { serve(); });
+}
+
+EpisodeStepper::~EpisodeStepper() {
+  {
+    const std::lock_guard hold(lock_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_)
+    t.join();
+}
+
+void EpisodeStepper::serve() {
+  unsigned long seen = 0;
+  std::unique_lock hold(lock_);
+  for (;;) {
+    wake_.wait(hold, [&] { return stopping_ || generation_ != seen; });
+    if (stopping_) return;
+    seen = generation_;
+    hold.unlock();
+    takeItems();
+    hold.lock();
+  }
+}
+
+void EpisodeStepper::takeItems() {
+  for (;;) {
+    std::size_t item;
+    {
+      const std::lock_guard hold(lock_);
+      if (next_ == count_) return;
+      item = next_++;
+    }
+    std::exception_ptr failed;
+    try {
+      task_(item);
+    } catch (...) {
+      failed = std::current_exception();
+    }
+    const std::lock_guard hold(lock_);
+    if (failed && !failure_) failure_ = failed;
+    if (--unfinished_ == 0) done_.notify_one();
+  }
+}
+
+void EpisodeStepper::step(std::span<Episode* const> episodes,
+                          std::span<const scene::CameraCommand> commands, std::size_t stride,
+                          const EncodingSizes& sizes, std::span<float> observations,
+                          std::span<reward::RewardTerms> terms) {
+  const std::size_t n = episodes.size();
+  if (commands.size() != n * stride || observations.size() != n * sizes.size() ||
+      terms.size() != n) {
+    throw std::invalid_argument("EpisodeStepper::step: the arrays do not match the episodes");
+  }
+  for (const Episode* e : episodes) {
+    if (e->scene().cameras.size() > stride)
+      throw std::invalid_argument(
+          "EpisodeStepper::step: an episode has more cameras than the "
+          "stride");
+  }
+  if (n == 0) return;
+  {
+    const std::lock_guard hold(lock_);
+    task_ = [&](std::size_t i) {
+      Episode& episode = *episodes[i];
+      episode.step(commands.subspan(i * stride, episode.scene().cameras.size()));
+      encodeObservation(episode, sizes, View::team, 0,
+                        observations.subspan(i * sizes.size(), sizes.size()));
+      terms[i] = episode.observation().terms;
+    };
+    count_ = unfinished_ = n;
+    next_ = 0;
+    failure_ = nullptr;
+    ++generation_;
+  }
+  wake_.notify_all();
+  takeItems();
+  std::unique_lock hold(lock_);
+  done_.wait(hold, [&] { return unfinished_ == 0; });
+  task_ = nullptr;
+  if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
+}
+
+}  // namespace camcov::environment

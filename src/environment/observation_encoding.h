@@ -1,0 +1,62 @@
+#pragma once
+// An episode's present instant as a fixed-size array of floats, for learning libraries whose
+// observations have one shape whatever the scene. The layout (docs/python.md repeats it):
+//
+//   [0, 4)              t / duration, and the team's coverage, utilization and reward at t
+//                       (eq. (3), (5), (8))
+//   per camera slot     10 floats: present, x, y, cos γ, sin γ, v_max / L, γ̇_max, θ, r / L
+//                       (0: no sensing range), the share of the target boundary this camera
+//                       sees (its own coverage term)
+//   per target slot     5 + 2·V floats: present, the share of its boundary that is seen, its
+//                       centroid x, y, its vertex count / V, then V vertices x, y (zeros past
+//                       its count)
+//   per obstacle slot   2 + 2·V floats: present, its vertex count / V, V vertices x, y
+//
+// Positions are in the room's frame: (p − c) / L, c the centre of the boundary's bounding
+// box and L half its longer side, so the room spans [−1, 1] along its longer side. Slot i of
+// targets (obstacles) is the scene's target (obstacle) i: a recorded person absent at t
+// leaves the slot's present flag 0 and the rest zero. Slots beyond the scene's counts are
+// zero. A camera's own view (View::own) keeps its own slot first, shows no other camera and
+// no obstacle, and only the targets it sees some of, with the share it sees.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "environment/episode.h"
+#include "reward/metrics.h"
+
+namespace camcov::environment {
+
+// What an encoding pads to: at least the counts of every scene it will encode.
+struct EncodingSizes {
+  std::size_t cameras = 0;
+  std::size_t targets = 0;
+  std::size_t obstacles = 0;
+  std::size_t vertices = 0;  // V: of the largest target or obstacle ring
+
+  static constexpr std::size_t kGlobal = 4;
+  static constexpr std::size_t kPerCamera = 10;
+  std::size_t perTarget() const { return 5 + 2 * vertices; }
+  std::size_t perObstacle() const { return 2 + 2 * vertices; }
+  std::size_t size() const {
+    return kGlobal + cameras * kPerCamera + targets * perTarget() + obstacles * perObstacle();
+  }
+  // The smallest sizes that hold `scene` at every instant (deformations keep their vertex
+  // counts; a recorded person's disc is its shape).
+  static EncodingSizes of(const scene::Scene& scene);
+  // Large enough for both.
+  EncodingSizes atLeast(const EncodingSizes& other) const;
+};
+
+enum class View { team, own };
+
+// Writes the episode's present instant into `out` (size sizes.size()); `camera` is the
+// camera whose view it is for View::own. std::invalid_argument if the scene does not fit.
+void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View view,
+                       std::size_t camera, std::span<float> out);
+
+// Camera j's own terms of the reward, as if it were alone: eq. (3) over what it sees, eq. (5)
+// with M = 1, eq. (6) against the objects and the other cameras, and eq. (8) of those.
+reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera);
+
+}  // namespace camcov::environment

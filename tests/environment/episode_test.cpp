@@ -1,0 +1,153 @@
+// Episodes stepped by their caller: the same run as sim::simulate's, the documented
+// observation layout against the scene itself, and many episodes stepped on threads giving what
+// one thread gives.
+#include "environment/episode.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "control/methods.h"
+#include "environment/episode_batch.h"
+#include "environment/method_policy.h"
+#include "environment/observation_encoding.h"
+#include "geometry/ring.h"
+#include "support/small_worlds.h"
+
+namespace camcov::environment {
+namespace {
+
+std::shared_ptr<const scene::Scene> oneTargetScene() {
+  static const auto s =
+      std::make_shared<const scene::Scene>(testing::sceneFromJson(testing::kOneTargetScene));
+  return s;
+}
+
+params::Parameters shortRun(double seconds) {
+  params::Parameters p;
+  p.sim.duration = seconds;
+  return p;
+}
+
+class CoverageSeries final : public sim::Recorder {
+ public:
+  void step(const sim::StepRecord& r) override { coverage.push_back(r.terms.coverage); }
+  std::vector<double> coverage;
+};
+
+TEST(Episode, DrivenByAMethodsPolicyIsThatMethodsRunToTheBit) {
+  const auto scene = oneTargetScene();
+  const params::Parameters params = shortRun(5.0);
+  for (const char* name : {"paper", "local", "camcov"}) {
+    const control::Method& method = control::requireMethod(name);
+    CoverageSeries run;
+    const auto controller = method.make(*scene, params, 7);
+    const sim::RunSummary expected = sim::simulate(*scene, params, *controller, run);
+
+    Episode episode(scene, params);
+    MethodPolicy policy(method, episode, 7);
+    std::vector<double> coverage{episode.observation().terms.coverage};
+    std::vector<scene::CameraCommand> commands(scene->cameras.size());
+    while (!episode.finished()) {
+      policy.decide(episode, commands);
+      episode.step(commands, policy.goals());
+      coverage.push_back(episode.observation().terms.coverage);
+    }
+    episode.close();
+    EXPECT_EQ(coverage, run.coverage) << name;
+    EXPECT_EQ(episode.summary().averageCoverage, expected.averageCoverage) << name;
+    EXPECT_THROW(episode.step(commands), std::logic_error);
+  }
+}
+
+TEST(Episode, TheObservationIsTheDocumentedLayout) {
+  const auto scene = oneTargetScene();
+  Episode episode(scene, shortRun(1.0));
+  const EncodingSizes sizes = EncodingSizes::of(*scene).atLeast({3, 2, 2, 6});
+  ASSERT_EQ(sizes.cameras, 3u);
+  std::vector<float> out(sizes.size());
+  encodeObservation(episode, sizes, View::team, 0, out);
+  // The room is the square [-10, 10]²: c = 0, L = 10.
+  const float* camera = out.data() + EncodingSizes::kGlobal;
+  EXPECT_EQ(camera[0], 1.0f);
+  EXPECT_FLOAT_EQ(camera[1], -0.6f);  // POINT(-6 -6)
+  EXPECT_FLOAT_EQ(camera[2], -0.6f);
+  EXPECT_NEAR(camera[3], std::cos(225.0 * M_PI / 180.0), 1e-6);
+  EXPECT_FLOAT_EQ(camera[5], 0.2f);                             // v_max 2 m/s over L
+  EXPECT_FLOAT_EQ(camera[8], 0.0f);                             // no sensing range
+  const float* empty = camera + 2 * EncodingSizes::kPerCamera;  // a third slot: padding
+  for (std::size_t k = 0; k < EncodingSizes::kPerCamera; ++k)
+    EXPECT_EQ(empty[k], 0.0f);
+  const float* target = camera + sizes.cameras * EncodingSizes::kPerCamera;
+  EXPECT_EQ(target[0], 1.0f);
+  EXPECT_FLOAT_EQ(target[2], 0.0f);  // the square about (0, 0)
+  EXPECT_FLOAT_EQ(target[4], 4.0f / 6.0f);
+  EXPECT_FLOAT_EQ(target[5], -0.1f);  // its first vertex, (-1, -1)
+  EXPECT_FLOAT_EQ(target[6], -0.1f);
+  const float* obstacle = target + sizes.targets * sizes.perTarget();
+  EXPECT_EQ(obstacle[0], 1.0f);
+  EXPECT_FLOAT_EQ(obstacle[2], 0.45f);  // (5 − 0.5) / 10
+  EXPECT_EQ(out.size(), EncodingSizes::kGlobal + 3 * 10 + 2 * 17 + 2 * 14);
+
+  // Camera 1's own view: itself in the first slot, no other camera, no obstacle.
+  encodeObservation(episode, sizes, View::own, 1, out);
+  EXPECT_FLOAT_EQ(camera[1], 0.6f);
+  EXPECT_EQ(camera[EncodingSizes::kPerCamera], 0.0f);
+  EXPECT_EQ(obstacle[0], 0.0f);
+
+  const EncodingSizes small{1, 1, 1, 4};
+  std::vector<float> tooSmall(small.size());
+  EXPECT_THROW(encodeObservation(episode, small, View::team, 0, tooSmall), std::invalid_argument);
+}
+
+TEST(Episode, OwnTermsAreTheTeamsTermsOfACameraAlone) {
+  const auto scene = oneTargetScene();
+  auto alone = std::make_shared<scene::Scene>(*scene);
+  alone->cameras.resize(1);
+  const params::Parameters params = shortRun(1.0);
+  Episode team(scene, params), single(alone, params);
+  const reward::RewardTerms own = ownTerms(team, 0);
+  const reward::RewardTerms reference = single.observation().terms;
+  EXPECT_DOUBLE_EQ(own.coverage, reference.coverage);
+  EXPECT_DOUBLE_EQ(own.utilization, reference.utilization);
+  // Alone, it has no other camera to be repelled by; in the team, camera 1 is far (17 m).
+  EXPECT_DOUBLE_EQ(own.repulsion, reference.repulsion);
+}
+
+TEST(EpisodeStepper, ThreadsGiveWhatOneThreadGivesAndAFailureStopsNothingElse) {
+  const auto scene = oneTargetScene();
+  const EncodingSizes sizes = EncodingSizes::of(*scene);
+  const std::size_t n = 7, m = scene->cameras.size();
+  std::vector<float> observations[2];
+  for (unsigned threads : {1u, 3u}) {
+    EpisodeStepper stepper(threads);
+    std::vector<std::unique_ptr<Episode>> owned;
+    std::vector<Episode*> episodes;
+    for (std::size_t i = 0; i < n; ++i) {
+      owned.push_back(std::make_unique<Episode>(scene, shortRun(1.0)));
+      episodes.push_back(owned.back().get());
+    }
+    std::vector<float> out(n * sizes.size());
+    std::vector<reward::RewardTerms> terms(n);
+    for (int k = 0; k < 10; ++k) {
+      std::vector<scene::CameraCommand> commands(n * m);
+      for (std::size_t i = 0; i < commands.size(); ++i)
+        commands[i] = {{0.1 * static_cast<double>(i % 5), -0.2}, 0.05 * static_cast<double>(k)};
+      stepper.step(episodes, commands, m, sizes, out, terms);
+    }
+    for (const Episode* e : episodes)
+      EXPECT_TRUE(e->finished());
+    observations[threads == 1 ? 0 : 1] = out;
+    // Every episode is finished: each step fails, all are tried, the first failure is raised.
+    std::vector<scene::CameraCommand> commands(n * m);
+    EXPECT_THROW(stepper.step(episodes, commands, m, sizes, out, terms), std::logic_error);
+    EXPECT_THROW(stepper.step(episodes, commands, m - 1, sizes, out, terms), std::invalid_argument);
+  }
+  EXPECT_EQ(observations[0], observations[1]);
+}
+
+}  // namespace
+}  // namespace camcov::environment

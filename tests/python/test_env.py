@@ -1,0 +1,283 @@
+"""camcov.env: the Gymnasium and PettingZoo environments, checked by the ecosystem's own checkers
+(Gymnasium's check_env, PettingZoo's parallel_api_test and parallel_seed_test), against
+`camcov run` (an episode driven by a method's policy is that method's run, to the bit), against
+`camcov render` (the frames) and against the scene itself (the observation layout).
+
+Gymnasium and PettingZoo are not Debian packages: their sources are in ../shared/vendor/python
+(or CAMCOV_VENDOR_PYTHON), put on sys.path here, for tests only.
+"""
+import math
+import os
+import pathlib
+import sys
+import warnings
+
+import numpy as np
+import pytest
+
+import camcov
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+VENDOR = pathlib.Path(os.environ.get("CAMCOV_VENDOR_PYTHON",
+                                     REPO.parent / "shared" / "vendor" / "python"))
+if not (VENDOR / "gymnasium").is_dir():
+    pytest.fail(f"Gymnasium and PettingZoo's sources are not in {VENDOR} "
+                "(set CAMCOV_VENDOR_PYTHON)", pytrace=False)
+sys.path.insert(0, str(VENDOR))
+
+import camcov.env as E  # noqa: E402
+from gymnasium.utils.env_checker import check_env  # noqa: E402
+from pettingzoo.test import parallel_api_test, parallel_seed_test  # noqa: E402
+
+SHORT = {"sim.duration": 2.0}  # 20 steps: enough for the checkers, quick
+
+
+@pytest.fixture(scope="module")
+def scenes(published):
+    """Three published scenes (moving, still, one camera chasing a fast target) and a family."""
+    return {"dynamic9": published("dynamic9"), "static14": published("static14"),
+            "dynamic1": published("dynamic1"), "u_rooms": E.family("u_rooms", "tune", 3)}
+
+
+def quietly(check, *args, **kwargs):
+    """Runs a checker, its warnings about unbounded Boxes aside (positions of objects that may
+    leave the room, and the reward's repulsion, have no honest finite bound)."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=".*Box observation space (minimum|maximum)")
+        warnings.filterwarnings("ignore", message=".*not having a spec")
+        return check(*args, **kwargs)
+
+
+@pytest.mark.parametrize("name", ["dynamic9", "static14", "dynamic1", "u_rooms"])
+def test_gymnasiums_checker_passes(scenes, name):
+    quietly(check_env, E.CoverageEnv(scenes[name], params=SHORT), skip_render_check=False)
+
+
+def test_gymnasiums_checker_passes_with_images_and_rendering(scenes):
+    env = E.CoverageEnv(scenes["dynamic9"], params=SHORT, observation="image",
+                        image_size=(64, 48), render_mode="rgb_array", render_size=(160, 120))
+    quietly(check_env, env, skip_render_check=False)
+    observation, _ = env.reset(seed=1)
+    assert observation.shape == (48, 64, 3) and observation.dtype == np.uint8
+    assert env.render().shape == (120, 160, 3)
+
+
+@pytest.mark.parametrize("name", ["dynamic9", "static14", "dynamic1", "u_rooms"])
+@pytest.mark.parametrize("view,agent_reward", [("team", "team"), ("own", "own")])
+def test_pettingzoos_checkers_pass(scenes, name, view, agent_reward):
+    def make():
+        return E.CoverageParallelEnv(scenes[name], params=SHORT, view=view,
+                                     agent_reward=agent_reward)
+
+    quietly(parallel_api_test, make(), num_cycles=100)
+    quietly(parallel_seed_test, make)
+
+
+@pytest.mark.parametrize("scene,method", [("dynamic9", "paper"), ("dynamic1", "camcov"),
+                                          ("static14", "local")])
+def test_a_method_as_a_policy_reproduces_camcov_run_bit_for_bit(scenes, scene, method):
+    env = E.CoverageEnv(scenes[scene])
+    _, info = env.reset(seed=5, options={"seed": 3})  # the run seed: 3
+    assert info["seed"] == 3
+    drive = E.policy(method, env)
+    coverage, summary = [info["coverage"]], None
+    while summary is None:
+        _, _, terminated, truncated, info = env.step(drive(None))
+        assert not terminated
+        coverage.append(info["coverage"])
+        summary = info.get("summary") if truncated else None
+    run = camcov.run(scenes[scene], method, 3)
+    assert np.array_equal(np.array(coverage), run.coverage)
+    assert summary["averageCoverage"] == run.summary["averageCoverage"]
+
+
+def test_a_policy_makes_its_controller_anew_for_each_episode(scenes):
+    env = E.CoverageEnv(scenes["dynamic9"], params={"sim.duration": 1.0})
+    drive = E.policy("paper", env)
+    first = []
+    for _ in range(2):
+        env.reset(options={"seed": 1})
+        actions = [drive(None)]
+        truncated = False
+        while not truncated:
+            _, _, _, truncated, _ = env.step(actions[-1])
+            if not truncated:
+                actions.append(drive(None))
+        first.append(np.array(actions))
+    assert np.array_equal(first[0], first[1])  # the same seed, a fresh controller: the same run
+
+
+def test_the_vector_form_steps_on_threads_as_one_environment_would(scenes):
+    family = scenes["u_rooms"]
+    vector = E.VectorCoverageEnv(family, 3, threads=2, params=SHORT)
+    single = [E.CoverageEnv(family, params=SHORT) for _ in range(3)]
+    observations, _ = vector.reset(seed=10)
+    for i, env in enumerate(single):
+        alone, _ = env.reset(seed=10 + i)
+        assert np.array_equal(observations[i], alone)
+    rng = np.random.default_rng(0)
+    ended = 0
+    for _ in range(25):  # past the end: the next step starts a new episode
+        actions = rng.uniform(-1, 1, vector.action_space.shape)
+        observations, rewards, terminated, truncated, infos = vector.step(actions)
+        assert not terminated.any()
+        for i, env in enumerate(single):
+            if env.episodes.episode.finished:  # next-step autoreset
+                env.reset()
+                continue
+            alone, reward, _, done, info = env.step(actions[i])
+            assert np.array_equal(observations[i], alone) and rewards[i] == reward
+            assert truncated[i] == done
+            if done:
+                ended += 1
+                assert infos["_average_coverage"][i]
+                assert infos["average_coverage"][i] == info["summary"]["averageCoverage"]
+    assert ended == 3
+
+
+def test_the_vector_form_takes_a_methods_policy(scenes):
+    vector = E.VectorCoverageEnv(scenes["dynamic9"], 2, params={"sim.duration": 3.0})
+    vector.reset(seed=1, options={"seed": 7})
+    drive = E.policy("paper", vector)
+    coverage = []
+    for _ in range(30):
+        _, _, _, truncated, infos = vector.step(drive(None))
+        coverage.append(infos["coverage"])
+    assert truncated.all()
+    run = camcov.run(scenes["dynamic9"], "paper", 7, params={"sim.duration": 3.0})
+    for i in range(2):
+        assert np.array_equal(np.array([c[i] for c in coverage]), run.coverage[1:])
+
+
+def test_the_observation_is_the_documented_layout(tiny):
+    scene = camcov.load_scene(tiny("tiny_dynamic"))
+    env = E.CoverageEnv(scene)
+    observation, info = env.reset(seed=0)
+    cameras, targets, obstacles, vertices = env.episodes.sizes
+    assert env.observation_space.shape == (4 + 10 * cameras + (5 + 2 * vertices) * targets +
+                                           (2 + 2 * vertices) * obstacles,)
+    world = scene.world_at(0.0)
+    box_min, box_max = world.boundary.min(axis=0), world.boundary.max(axis=0)
+    centre, half = (box_min + box_max) / 2, (box_max - box_min).max() / 2
+    assert observation[0] == 0.0 and observation[1] == np.float32(info["coverage"])
+    camera = observation[4:14]
+    pose = scene.initial_poses[0]
+    assert camera[0] == 1
+    assert camera[1:3] == pytest.approx((pose[:2] - centre) / half, abs=1e-6)
+    assert camera[3:5] == pytest.approx([math.cos(pose[2]), math.sin(pose[2])], abs=1e-6)
+    assert camera[5] == pytest.approx(scene.cameras[0]["maxVelocity"] / half)
+    assert camera[7] == pytest.approx(scene.half_fovs[0])
+    target = observation[4 + 10 * cameras:][:5 + 2 * vertices]
+    ring = world.targets[0]
+    assert target[0] == 1 and target[4] == pytest.approx(len(ring) / vertices)
+    assert target[2:4] == pytest.approx((ring.mean(axis=0) - centre) / half, abs=1e-6)
+    assert target[5:5 + 2 * len(ring)] == pytest.approx(((ring - centre) / half).ravel(),
+                                                        abs=1e-6)
+
+
+def test_rendering_draws_the_frame_camcov_render_draws(tiny, cli, tmp_path):
+    pil = pytest.importorskip("PIL.Image")
+    env = E.CoverageEnv(tiny("tiny_dynamic"), render_mode="rgb_array", render_size=(200, 150))
+    env.reset(seed=0)
+    png = tmp_path / "frame.png"
+    result = cli("render", tiny("tiny_dynamic"), "--time", "0", "--width", "200", "--height",
+                 "150", "-o", png)
+    assert result.returncode == 0, result.stderr
+    drawn = np.asarray(pil.open(png).convert("RGB"))
+    # camcov render's caption says where the cameras are; the environment's frame, with the
+    # same words, is the same picture.
+    frame = env.episodes.episode.frame(200, 150, subtitle="cameras at their initial poses")
+    assert np.array_equal(frame, drawn)
+    assert env.render().shape == drawn.shape and not np.array_equal(env.render(), drawn)
+
+
+def test_bad_input_raises_naming_the_argument(scenes):
+    env = E.CoverageEnv(scenes["dynamic9"], params=SHORT)
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step(np.zeros(env.action_space.shape))
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"action: expected shape \(5, 3\)"):
+        env.step(np.zeros((4, 3)))
+    bad = np.zeros(env.action_space.shape)
+    bad[2, 1] = math.nan
+    with pytest.raises(ValueError, match="action: camera 2's command is not finite"):
+        env.step(bad)
+    bad[2, 1] = math.inf
+    with pytest.raises(ValueError, match="not finite"):
+        env.step(bad)
+    with pytest.raises(TypeError, match="colour"):
+        E.CoverageEnv(scenes["dynamic9"], colour="red")
+    with pytest.raises(ValueError, match="reward: expected one of"):
+        E.CoverageEnv(scenes["dynamic9"], reward="fun")
+    with pytest.raises(ValueError, match="observation: expected"):
+        E.CoverageEnv(scenes["dynamic9"], observation="sound")
+    with pytest.raises(camcov.InputError, match="sim.duration"):
+        E.CoverageEnv(scenes["dynamic9"], params={"sim.duration": math.nan})
+    with pytest.raises(ValueError, match="the list is empty"):
+        E.CoverageEnv([])
+    with pytest.raises(ValueError, match="family: no family 'x_rooms'"):
+        E.family("x_rooms")
+    with pytest.raises(ValueError, match="method: no method 'oracle'"):
+        E.policy("oracle", env)
+    with pytest.raises(ValueError, match="options\\['scene'\\]"):
+        env.reset(options={"scene": 3})
+    parallel = E.CoverageParallelEnv(scenes["dynamic9"], params=SHORT)
+    parallel.reset(seed=0)
+    with pytest.raises(ValueError, match=r"actions\['camera_1'\]: expected shape \(3,\)"):
+        parallel.step({"camera_1": [1.0, 2.0]})
+    with pytest.raises(ValueError, match="no agents \\['camera_9'\\]"):
+        parallel.step({"camera_9": [0.0, 0.0, 0.0]})
+    vector = E.VectorCoverageEnv(scenes["dynamic9"], 2, params=SHORT)
+    vector.reset(seed=0)
+    with pytest.raises(ValueError, match=r"actions: expected shape \(2, 5, 3\)"):
+        vector.step(np.zeros((5, 3)))
+    nan = np.zeros(vector.action_space.shape)
+    nan[1, 0, 0] = math.nan
+    with pytest.raises(ValueError, match=r"actions\[1\]: camera 0's command is not finite"):
+        vector.step(nan)
+
+
+def test_the_core_needs_neither_gymnasium_nor_pettingzoo(tmp_path):
+    """camcov and camcov.env import without them; only the environments' classes need them."""
+    import subprocess
+    code = ("import sys; sys.modules['gymnasium'] = None; sys.modules['pettingzoo'] = None\n"
+            "import camcov, camcov.env\n"
+            "assert callable(camcov.env.policy) and callable(camcov.env.family)\n"
+            "try:\n    camcov.env.CoverageEnv\nexcept ImportError:\n    print('lazy')\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            cwd=tmp_path, env={**os.environ, "PYTHONPATH": os.pathsep.join(
+                                p for p in sys.path if p and "vendor" not in p)})
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "lazy"
+
+
+def test_every_public_name_of_the_environments_has_a_docstring():
+    import importlib
+
+    from test_docstrings import undocumented
+    for name in ("camcov.env", "camcov._gym_env", "camcov._parallel_env", "camcov._vector_env"):
+        module = importlib.import_module(name)
+        ours = [where for where in undocumented(module)
+                if getattr(getattr(module, where.split(".")[2]), "__module__", "").startswith(
+                    "camcov")]
+        assert ours == [], name
+
+
+def test_the_examples_run_and_training_raises_coverage(published, tmp_path):
+    import subprocess
+    examples = REPO / "examples"
+    environment = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p)}
+    run = subprocess.run([sys.executable, examples / "env_policies.py", published("dynamic9")],
+                         capture_output=True, text=True, cwd=tmp_path, env=environment)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "(the same)" in run.stdout
+    sys.path.insert(0, str(examples))
+    try:
+        import env_cross_entropy
+    finally:
+        sys.path.remove(str(examples))
+    env = E.CoverageEnv(env_cross_entropy.TINY, params={"sim.duration": 10.0})
+    history = env_cross_entropy.train(env, iterations=5, population=20, seed=1,
+                                      report=lambda line: None)
+    assert history[0] == 0.0  # the camera starts facing away
+    assert history[-1] > 0.1, history
