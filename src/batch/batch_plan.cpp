@@ -11,6 +11,7 @@
 #include "records/run_files.h"
 #include "scene/scene_families.h"
 #include "scene/scene_loader.h"
+#include "sim/run_length.h"
 #include "util/code_identity.h"
 #include "util/input_error.h"
 #include "util/natural_order.h"
@@ -134,8 +135,10 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
       plan.manifest.methodLooks[r.methods[m]] = {brought[m]->description, brought[m]->color};
   }
   std::vector<fs::path> folderOf;  // per scene not drawn from a family, its folder; else empty
+  std::vector<params::Parameters> runParameters;  // per scene: its own duration, if any
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
+    runParameters.push_back(sim::withRunLength(r.parameters, s.scene.duration, r.durationGiven));
     const auto family = scene::familyNamedIn(s.scene.description);
     plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family.value_or("")});
     folderOf.push_back(family ? fs::path() : fs::absolute(file).lexically_normal().parent_path());
@@ -150,12 +153,13 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   }
   plan.jobs.reserve(total / r.shard.count + 1);
   std::size_t i = 0;
-  for (const auto& entry : plan.manifest.scenes) {
+  for (std::size_t s = 0; s < plan.manifest.scenes.size(); ++s) {
+    const auto& entry = plan.manifest.scenes[s];
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
       const std::string& method = r.methods[m];
       for (std::uint64_t seed = 1; seed <= r.seeds; ++seed, ++i) {
         if (i % r.shard.count != r.shard.index) continue;
-        plan.jobs.push_back({{entry.file, method, seed, r.parameters, brought[m]},
+        plan.jobs.push_back({{entry.file, method, seed, runParameters[s], brought[m]},
                              entry.name,
                              entry.hash,
                              records::runStem(entry.name, method, seed)});

@@ -35,6 +35,9 @@ struct BatchRequest {
   // Methods the caller brings for this batch (Python's controllers), found before the table's;
   // they must outlive the batch's run.
   std::span<const control::Method> extraMethods;
+  // The caller set sim.duration (`--duration`): it holds for every scene. Otherwise a scene
+  // with a duration of its own runs for that long (sim/run_length.h).
+  bool durationGiven = false;
 };
 
 struct BatchPlan {

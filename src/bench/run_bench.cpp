@@ -55,7 +55,8 @@ BenchResult runBench(const BenchRequest& request, BenchObserver& observer) {
                            request.parameters,
                            batch::parseShard(request.shard),
                            request.command,
-                           request.extraMethods};
+                           request.extraMethods,
+                           request.duration >= 0.0};
   if (request.duration >= 0.0) plan.parameters.sim.duration = request.duration;
   batch::BatchPlan planned = batch::planBatch(plan, kVersion);
   request.outputs.referenceAmong(planned.manifest.methods);  // and a bad --reference too

@@ -31,7 +31,9 @@ Registration addBenchCommand(CLI::App& app) {
   cmd->add_option("--seeds", r.seeds, "seeds 1..N per scene and method")
       ->check(within(1, batch::kMaxSeeds))
       ->capture_default_str();
-  cmd->add_option("--duration", r.duration, "simulated seconds per run (default: sim.duration)")
+  cmd->add_option("--duration", r.duration,
+                  "simulated seconds per run (default: a scene's own duration if it has one, else "
+                  "sim.duration)")
       ->check(within(0.0, 1e6));
   cmd->add_option("--jobs,-j", r.jobs, "worker threads (default: all cores)")
       ->check(within(0, 1024));

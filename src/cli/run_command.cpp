@@ -12,6 +12,7 @@
 #include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
+#include "sim/run_length.h"
 #include "util/run_threads.h"
 #include "viz/run_replay.h"
 
@@ -34,6 +35,8 @@ int run(const RunOptions& o) {
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
   batch::JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
+  job.parameters =
+      sim::withRunLength(job.parameters, scene::loadScene(o.scene).duration, o.duration >= 0.0);
   setRunThreads(o.threads);
   const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);
@@ -63,7 +66,9 @@ Registration addRunCommand(CLI::App& app) {
     names += fmt::format("{}{} ({})", names.empty() ? "" : ", ", m.name, m.description);
   cmd->add_option("--method,-m", o->method, "one of: " + names)->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "random seed of the run")->capture_default_str();
-  cmd->add_option("--duration", o->duration, "simulated seconds (default: sim.duration, 30 s)")
+  cmd->add_option("--duration", o->duration,
+                  "simulated seconds (default: the scene's own duration if it has one, else "
+                  "sim.duration, 30 s)")
       ->check(within(0.0, 1e6));
   cmd->add_option("--out,-o", o->out, "folder for the results files")->capture_default_str();
   cmd->add_option("--video", o->video, "also write the run's video (MP4, 1280x720)");

@@ -306,6 +306,9 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
                            {box.max.x, box.max.y},
                            {box.min.x, box.max.y}});
   if (recording.onPitch) scene.pitch = scene::Pitch{recording.pitch.length, recording.pitch.width};
+  // The window is how long a run of the scene lasts; to the recording's end, its last sample.
+  scene.duration = std::min(scene::kMaxDuration,
+                            scene::roundTo(std::isinf(o.to) ? built.duration : o.to - o.from, 1e3));
   const auto still = [](geometry::Ring shape, Vec2 at) {
     scene::MovingObject object;
     object.shape = std::move(shape);

@@ -19,14 +19,20 @@
 #include "records/batch_summary.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
+#include "scene/scene_loader.h"
+#include "sim/run_length.h"
 #include "util/interruption.h"
 #include "util/person_numbers.h"
 
 namespace camcov::python {
 namespace {
 
-records::RunRecord runWithoutGil(const batch::JobSpec& job) {
+// A run as `camcov run` makes it: for the scene's own duration where it has one, unless the
+// parameters set another sim.duration.
+records::RunRecord runWithoutGil(batch::JobSpec job) {
   py::gil_scoped_release free;
+  job.parameters =
+      sim::withRunLength(job.parameters, scene::loadScene(job.sceneFile).duration, false);
   return batch::runJob(job);
 }
 

@@ -68,6 +68,9 @@ struct Pitch {
   double width = 0.0;   // m, along y
 };
 
+// The longest run a scene or a command may ask for, s (sim.duration's range).
+inline constexpr double kMaxDuration = 1e6;
+
 struct Scene {
   std::string name;         // file stem, e.g. "dynamic9"
   std::string description;  // optional "description" key (our extension), may be empty
@@ -76,6 +79,9 @@ struct Scene {
   std::vector<MovingObject> obstacles;
   std::vector<CameraSpec> cameras;
   std::optional<Pitch> pitch;  // "pitch": {"length", "width"} (our extension)
+  // "duration" (our extension), s: how long a run of it lasts unless the caller says (an
+  // imported recording's window; sim/run_length.h).
+  std::optional<double> duration;
   // What the loader found wrong but allowed ("targets[3]: leaves the boundary: …"), for
   // `camcov validate` to print.
   std::vector<std::string> warnings;

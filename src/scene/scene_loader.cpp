@@ -387,7 +387,8 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     throw SceneError(sourceName, "", e.what());
   }
   const Node root(document, "", sourceName);
-  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch"});
+  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch",
+               "duration"});
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -396,6 +397,14 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     if (root.has("description")) scene.description = root.child("description").string();
   });
   problems.attempt([&] { scene.boundary = simpleRing(root.child("boundary")); });
+  problems.attempt([&] {
+    if (!root.has("duration")) return;
+    const Node node = root.child("duration");
+    const double seconds = positive(node, "duration", "s");
+    if (!(seconds <= kMaxDuration))
+      node.fail(fmt::format("duration {} s lies beyond {:g} s", seconds, kMaxDuration));
+    scene.duration = seconds;
+  });
   problems.attempt([&] {
     if (!root.has("pitch")) return;
     const Node pitch = root.child("pitch");

@@ -56,6 +56,7 @@ nlohmann::json sceneJson(const WrittenScene& file) {
   if (!file.description.empty()) scene["description"] = file.description;
   scene["boundary"] = wktPolygon(file.boundary);
   if (file.pitch) scene["pitch"] = {{"length", file.pitch->length}, {"width", file.pitch->width}};
+  if (file.duration) scene["duration"] = *file.duration;
   scene["cameraFoV"] = file.halfFovDegrees;
   for (const char* key : {"targets", "obstacles", "cameras"})
     scene[key] = nlohmann::json::array();

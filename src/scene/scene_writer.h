@@ -31,7 +31,8 @@ struct WrittenScene {
   std::string description;  // written when not empty
   std::vector<geometry::Vec2> boundary;
   std::optional<Pitch> pitch;
-  double halfFovDegrees = 0.0;  // the scene's cameraFoV: θ, half the field of view
+  std::optional<double> duration;  // s: how long a run of it lasts (an imported window)
+  double halfFovDegrees = 0.0;     // the scene's cameraFoV: θ, half the field of view
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;
   std::vector<CameraEntry> cameras;

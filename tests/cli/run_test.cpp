@@ -32,6 +32,46 @@ TEST(CliRun, WritesJsonAndCsvAndPrintsAverages) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 22);
 }
 
+// An imported recording's window is its scene's "duration": `camcov run` and `camcov bench` run
+// for that long unless the command asks for another length.
+TEST(CliRun, AScenesOwnDurationIsTheRunsUnlessTheCommandSaysOtherwise) {
+  const fs::path out = freshDir("own_duration");
+  auto scene = nlohmann::json::parse(readFile(kScene));
+  scene["duration"] = 1.5;
+  const fs::path file = out / "timed.json";
+  std::ofstream(file) << scene.dump();
+  const auto stepsOf = [&](const std::string& options, const fs::path& folder) {
+    const auto r = runCamcov("run " + file.string() + " --method local " + options + " --out " +
+                             folder.string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(readFile(folder / "timed-local-seed1.json"));
+    EXPECT_NEAR(j["parameters"]["sim"]["duration"].get<double>(),
+                j["summary"]["duration"].get<double>(), 1e-12);
+    return j["series"]["time"].size();
+  };
+  EXPECT_EQ(stepsOf("", out / "own"), 16u);  // 1.5 s in steps of 0.1 s, and t = 0
+  EXPECT_EQ(stepsOf("--duration 0.7", out / "asked"), 8u);
+  EXPECT_EQ(stepsOf("--set sim.duration=0.9", out / "set"), 10u);
+
+  const fs::path bench = out / "bench";
+  const std::string args = "bench --scenes " + file.string() + " " + kScene +
+                           " --methods local --seeds 1 --videos none --explorer none "
+                           "--optimum-budget 0 --no-report --out " +
+                           bench.string();
+  ASSERT_EQ(runCamcov(args).exitCode, 0);
+  const auto timed = nlohmann::json::parse(readFile(bench / "runs" / "timed-local-seed1.json"));
+  const auto plain =
+      nlohmann::json::parse(readFile(bench / "runs" / "fig1_example-local-seed1.json"));
+  EXPECT_EQ(timed["summary"]["duration"], 1.5);
+  EXPECT_EQ(plain["summary"]["duration"], 30.0);
+  // The job's parameters hold the scene's duration, as its results do: a resume redoes nothing.
+  const auto stamp = fs::last_write_time(bench / "runs" / "timed-local-seed1.json");
+  const auto again = runCamcov(args);
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.err.find("already done"), std::string::npos) << again.err;
+  EXPECT_EQ(fs::last_write_time(bench / "runs" / "timed-local-seed1.json"), stamp);
+}
+
 TEST(CliRun, SameArgumentsGiveByteIdenticalFilesAndAnotherSeedDiffers) {
   const fs::path a = freshDir("a"), b = freshDir("b"), c = freshDir("c");
   const std::string args = " --method paper --duration 6 --set global.K=60 --set planner.T2=0.1 ";

@@ -125,6 +125,9 @@ TEST(ImportEthUcy, PedestriansEnterAndLeaveWallsBecomeObstaclesAndTheWindowCuts)
   ASSERT_EQ(window["targets"].size(), 3u);
   EXPECT_NEAR(window["targets"][2]["track"]["samples"][0][0].get<double>(), 0.2, 1e-9)
       << "frame 81 = 3.2 s is 0.2 s into the window";
+  // The window is how long a run of the scene lasts; without one, to the last sample (5.2 s).
+  EXPECT_EQ(window["duration"], 1.0);
+  EXPECT_EQ(scene["duration"], 5.2);
 }
 
 TEST(ImportEthUcy, TheBusiestWindowHasTheMostPeopleOnAverage) {

@@ -281,3 +281,19 @@ def test_the_examples_run_and_training_raises_coverage(published, tmp_path):
                                       report=lambda line: None)
     assert history[0] == 0.0  # the camera starts facing away
     assert history[-1] > 0.1, history
+
+
+def test_a_scenes_own_duration_is_the_episodes_unless_the_parameters_say(tiny):
+    import json
+    with open(tiny("tiny_dynamic")) as f:
+        text = json.load(f)
+    text["duration"] = 1.2  # as `camcov import` writes a recording's window
+    scene = camcov.parse_scene(json.dumps(text), name="timed.json")
+    for params, steps in ((None, 12), ({"sim.duration": 0.5}, 5)):
+        env = E.CoverageEnv(scene, params=params)
+        env.reset(seed=0)
+        taken, truncated = 0, False
+        while not truncated:
+            _, _, _, truncated, _ = env.step(np.zeros(env.action_space.shape))
+            taken += 1
+        assert taken == steps
