@@ -101,25 +101,99 @@ void drawArena(const Painter& p, const kinematics::World& world) {
   p.stroke(kWall, 0.14);
 }
 
-void drawObjects(const Painter& p, const kinematics::World& world,
-                 std::span<const std::optional<Rgb>> targetColours) {
+namespace {
+
+Enlargement enlargementOf(const Painter& p, const geometry::Ring& ring) {
+  if (ring.empty()) return {};
+  Vec2 mean{};
+  geometry::Box box{p.image(ring[0]), p.image(ring[0])};
+  for (const Vec2& v : ring) {
+    mean = mean + v;
+    const Vec2 q = p.image(v);
+    box = {{std::min(box.min.x, q.x), std::min(box.min.y, q.y)},
+           {std::max(box.max.x, q.x), std::max(box.max.y, q.y)}};
+  }
+  const double across = std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  const double wanted = kMinObjectEm * p.em();
+  return {mean * (1.0 / static_cast<double>(ring.size())),
+          across >= wanted ? 1.0 : wanted / std::max(across, 1e-9)};
+}
+
+// `ring` as drawn: itself, or enlarged into `scratch`.
+std::span<const Vec2> asDrawn(const geometry::Ring& ring, const Enlargement& e,
+                              std::vector<Vec2>& scratch) {
+  if (e.factor == 1.0) return ring;
+  scratch.clear();
+  for (const Vec2& v : ring)
+    scratch.push_back(e(v));
+  return scratch;
+}
+
+Enlargement enlargementAt(const std::vector<Enlargement>* list, std::size_t i) {
+  return list != nullptr && i < list->size() ? (*list)[i] : Enlargement{};
+}
+
+}  // namespace
+
+Enlargements enlargementsFor(const Painter& p, const kinematics::World& world) {
+  Enlargements out;
+  for (const auto& t : world.targets)
+    out.targets.push_back(enlargementOf(p, t));
   for (const auto& o : world.obstacles)
-    p.ringPath(o);
+    out.obstacles.push_back(enlargementOf(p, o));
+  return out;
+}
+
+void drawEnlargedMarks(const Painter& p, const kinematics::World& world,
+                       const Enlargements& enlarged) {
+  cairo_t* cr = p.cr();
+  const double em = p.em();
+  const double dots[] = {0.01 * em, 0.22 * em};
+  cairo_save(cr);
+  cairo_set_dash(cr, dots, 2, 0.0);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  const auto ring = [&](const Enlargement& e) {
+    if (e.factor == 1.0) return;
+    const Vec2 at = p.image(e.centre);
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, at.x, at.y, 0.5 * kMinObjectEm * em + 0.3 * em, 0.0, 2.0 * std::numbers::pi);
+  };
+  for (std::size_t i = 0; i < world.targets.size(); ++i)
+    ring(enlargementAt(&enlarged.targets, i));
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    ring(enlargementAt(&enlarged.obstacles, i));
+  setColour(cr, kText);
+  cairo_set_line_width(cr, 0.12 * em);
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
+
+void drawObjects(const Painter& p, const kinematics::World& world,
+                 std::span<const std::optional<Rgb>> targetColours, const Enlargements* enlarged) {
+  std::vector<Vec2> scratch;
+  const auto target = [&](std::size_t i) {
+    return asDrawn(world.targets[i], enlargementAt(enlarged ? &enlarged->targets : nullptr, i),
+                   scratch);
+  };
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    p.ringPath(asDrawn(world.obstacles[i],
+                       enlargementAt(enlarged ? &enlarged->obstacles : nullptr, i), scratch));
   p.fill(kObstacle);
   // Targets in the palette's grey as one path; those with a colour of their own one by one.
   for (std::size_t i = 0; i < world.targets.size(); ++i) {
-    if (i >= targetColours.size() || !targetColours[i]) p.ringPath(world.targets[i]);
+    if (i >= targetColours.size() || !targetColours[i]) p.ringPath(target(i));
   }
   p.fill(kTarget);
   for (std::size_t i = 0; i < std::min(targetColours.size(), world.targets.size()); ++i) {
     if (!targetColours[i]) continue;
-    p.ringPath(world.targets[i]);
+    p.ringPath(target(i));
     p.fill(*targetColours[i]);
   }
 }
 
 // Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
-void drawSegments(const Painter& p, std::span<const visibility::Segment> segments) {
+void drawSegments(const Painter& p, std::span<const visibility::Segment> segments,
+                  const Enlargements* enlarged) {
   cairo_t* cr = p.cr();
   // Round caps and joins: a run of segments that continue one another is one polyline, the
   // same shape as its segments stroked one by one, with fewer edges for Cairo to scan.
@@ -129,10 +203,11 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
     const visibility::Segment* last = nullptr;  // the one of this colour drawn before
     for (const auto& s : segments) {
       if ((s.visibleBy != 0) != seen) continue;
+      const Enlargement e = enlargementAt(enlarged ? &enlarged->targets : nullptr, s.target);
       if (last != nullptr && last->target == s.target && last->b == s.a) {
-        p.lineTo(s.b);
+        p.lineTo(e(s.b));
       } else {
-        p.linePath(s.a, s.b);
+        p.linePath(e(s.a), e(s.b));
       }
       last = &s;
     }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
@@ -68,11 +69,36 @@ geometry::Vec2 imageHeading(double yaw);
 
 // The floor inside the boundary, and the wall.
 void drawArena(const Painter& p, const kinematics::World& world);
-// Obstacles dark, targets grey unless they have a colour of their own (per world target).
+
+// An object too small to make out at the frame's scale (a player on a pitch: a dot of three
+// pixels whose team colour and seen edges cannot be told apart) is drawn enlarged about the
+// mean of its vertices to kMinObjectEm across, its seen and unseen boundary with it, and
+// ringed by a dotted circle that says it is drawn larger than life (drawEnlargedMarks).
+inline constexpr double kMinObjectEm = 1.0;
+struct Enlargement {
+  geometry::Vec2 centre;
+  double factor = 1.0;  // 1: drawn as it is
+  // Exactly p at factor 1: objects of a readable size are drawn as before, to the bit.
+  geometry::Vec2 operator()(geometry::Vec2 p) const {
+    return factor == 1.0 ? p : centre + (p - centre) * factor;
+  }
+};
+struct Enlargements {
+  std::vector<Enlargement> targets;    // per world target
+  std::vector<Enlargement> obstacles;  // per world obstacle
+};
+Enlargements enlargementsFor(const Painter& p, const kinematics::World& world);
+void drawEnlargedMarks(const Painter& p, const kinematics::World& world,
+                       const Enlargements& enlarged);
+
+// Obstacles dark, targets grey unless they have a colour of their own (per world target),
+// enlarged where `enlarged` says.
 void drawObjects(const Painter& p, const kinematics::World& world,
-                 std::span<const std::optional<Rgb>> targetColours = {});
-// The targets' boundaries: seen by some camera green, by none red.
-void drawSegments(const Painter& p, std::span<const visibility::Segment> segments);
+                 std::span<const std::optional<Rgb>> targetColours = {},
+                 const Enlargements* enlarged = nullptr);
+// The targets' boundaries: seen by some camera green, by none red; enlarged with their targets.
+void drawSegments(const Painter& p, std::span<const visibility::Segment> segments,
+                  const Enlargements* enlarged = nullptr);
 // What a camera sees, a translucent amber fill of opacity `alpha`.
 void drawView(const Painter& p, std::span<const geometry::Vec2> view, double alpha = kViewAlpha);
 // A dark disc with the camera's number and a nose in its heading: the heading still shows

@@ -84,8 +84,9 @@ void drawViews(const Painter& p, std::span<const CameraView> cameras, FrameUse u
   cairo_t* cr = p.cr();
   cairo_save(cr);
   if (use == FrameUse::Video) cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);  // see FrameUse
+  const double alpha = viewAlphaFor(cameras.size());
   for (const CameraView& c : cameras)
-    drawView(p, c.view);
+    drawView(p, c.view, alpha);
   cairo_restore(cr);
 }
 
@@ -198,12 +199,46 @@ Vec2 rowBaseline(Vec2 rowTopLeft, double em) {
   return rowTopLeft + Vec2{0.0, 1.15 * em};
 }
 
+// Text that fits `width` px: at `size`, else smaller down to three quarters of it, else cut
+// with an ellipsis at that size. Never clipped at the frame's edge.
+struct Fitted {
+  std::string text;
+  double size = 0.0;
+};
+Fitted fitted(cairo_t* cr, const std::string& s, double size, double width, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  const auto advance = [&](const std::string& t, double at) {
+    cairo_set_font_size(cr, at);
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, t.c_str(), &extents);
+    return extents.x_advance;
+  };
+  const double full = advance(s, size);
+  if (full <= width) return {s, size};
+  const double smallest = 0.75 * size;
+  if (full * smallest / size <= width) return {s, size * width / full};
+  // Whole UTF-8 characters off the end until it fits with the ellipsis.
+  std::string cut = s;
+  while (!cut.empty() && advance(cut + "…", smallest) > width) {
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80)
+      cut.pop_back();                  // the last character's continuation bytes
+    if (!cut.empty()) cut.pop_back();  // and its first
+  }
+  return {cut + "…", smallest};
+}
+
 // The panel's rows that stay the same through a video: title, subtitle and legend.
 void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
-  text(cr, rowBaseline(layout.captionRow(0), em), caption.title, 1.25 * em, kText, Align::Left,
-       true);
-  text(cr, rowBaseline(layout.captionRow(1), em), caption.subtitle, 0.9 * em, kMutedText);
+  const auto line = [&](int row, const std::string& s, double size, Rgb colour, bool bold) {
+    const Vec2 at = rowBaseline(layout.captionRow(row), em);
+    const double width = layout.panel.x + layout.panel.width - at.x - 0.5 * em;
+    const Fitted f = fitted(cr, s, size, width, bold);
+    text(cr, at, f.text, f.size, colour, Align::Left, bold);
+  };
+  line(0, caption.title, 1.25 * em, kText, true);
+  line(1, caption.subtitle, 0.9 * em, kMutedText, false);
   for (int i = 0; i < kPanelRows.legend; ++i) {
     const auto entry = static_cast<Legend>(i);
     const Vec2 row = layout.legendRow(i);
@@ -294,8 +329,10 @@ void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, Fram
   clippedTo(cr, layout.worldArea, [&] {
     const Painter painter(cr, layout.toImage, layout.em);
     drawViews(painter, frame.cameras, use);
-    drawObjects(painter, frame.world, frame.targetColours);
-    drawSegments(painter, frame.segments);
+    const Enlargements enlarged = enlargementsFor(painter, frame.world);
+    drawObjects(painter, frame.world, frame.targetColours, &enlarged);
+    drawSegments(painter, frame.segments, &enlarged);
+    drawEnlargedMarks(painter, frame.world, enlarged);
     drawPathLabels(painter, frame, layout.worldArea);
     drawPlans(painter, frame.cameras);
     drawCameras(painter, frame.cameras);

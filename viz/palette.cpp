@@ -8,6 +8,13 @@
 
 namespace camcov::viz {
 
+double viewAlphaFor(std::size_t cameras) {
+  constexpr double kFloorShowingThrough = 0.17;
+  if (cameras == 0) return kViewAlpha;
+  return std::min(kViewAlpha,
+                  1.0 - std::pow(kFloorShowingThrough, 1.0 / static_cast<double>(cameras)));
+}
+
 Rgb seenByColour(int cameras) {
   if (cameras <= 0) return kUnseen;
   // Each further camera darkens the green by a fifth, down to three.

@@ -2,6 +2,7 @@
 // The colours and legend of everything camcov draws of a scene: frames and videos (Cairo),
 // the sweep debugger, and the run explorer in the browser (reports/explorer), so a camera, a
 // seen edge or a plan looks the same in all of them. Plain data: no Cairo here.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,6 +30,11 @@ inline constexpr Rgb kMutedText{0.38, 0.41, 0.46};
 inline constexpr Rgb kObjectPath{0.45, 0.48, 0.53};
 inline constexpr Rgb kPitchLine{0.74, 0.77, 0.80};  // a football pitch's markings
 inline constexpr double kViewAlpha = 0.28;          // views are translucent: overlaps look darker
+
+// The opacity of each view of a team of `cameras`: the palette's up to five, lighter for a
+// larger team, so that where every view overlaps the floor still shows through at 17 % (eight
+// cameras' views at 28 % each buried a football pitch in amber). Frames and the explorer.
+double viewAlphaFor(std::size_t cameras);
 
 // A target edge by how many cameras see it: none red, one green, more in darker greens (the
 // frames draw seen and unseen; the explorer tells the counts apart).

@@ -158,6 +158,22 @@
   const pad = 0.04 * Math.max(maxX - minX, maxY - minY);
   const viewBox = `${minX - pad} ${-maxY - pad} ${maxX - minX + 2 * pad} ${maxY - minY + 2 * pad}`;
   const em = 0.025 * Math.max(maxX - minX, maxY - minY);  // camera marker size, world units
+  // As the frames draw them (viz/cairo_drawing.h): an object less than this across (a player on
+  // a pitch) is drawn enlarged about the mean of its vertices, its edges with it, and ringed
+  // with dots, which says it is drawn larger than life.
+  const minObject = 0.6 * em;
+  function enlargement(ring) {
+    let cx = 0, cy = 0, x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const [x, y] of ring) {
+      cx += x; cy += y;
+      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    }
+    const across = Math.max(x1 - x0, y1 - y0);
+    const factor = across >= minObject ? 1 : minObject / Math.max(across, 1e-9);
+    const c = [cx / ring.length, cy / ring.length];
+    return {c, factor, at: (p) => factor === 1 ? p
+                              : [c[0] + (p[0] - c[0]) * factor, c[1] + (p[1] - c[1]) * factor]};
+  }
 
   const container = document.getElementById("runs");
   const panels = runs.map((run, i) => {
@@ -221,22 +237,40 @@
     }
     for (const c of step.cameras) {
       if (c.view.length > 2) {
-        el("polygon", {points: pts(c.view), fill: P.view, "fill-opacity": P.viewAlpha,
+        el("polygon", {points: pts(c.view), fill: P.view, "fill-opacity": panel.run.viewAlpha,
                        class: "view"}, svg);
       }
     }
+    const enlarged = [];  // rings drawn larger than life, to ring with dots
+    const drawn = (ring) => {
+      const e = enlargement(ring);
+      if (e.factor !== 1) enlarged.push(e);
+      return e;
+    };
     for (const o of step.obstacles) {
-      el("polygon", {points: pts(o.ring), fill: data.scene.colors.obstacles[o.id] || P.obstacle,
+      el("polygon", {points: pts(o.ring.map(drawn(o.ring).at)),
+                     fill: data.scene.colors.obstacles[o.id] || P.obstacle,
                      "data-obstacle": String(o.id)}, svg);
     }
+    const targetShape = new Map();  // scene target id -> its enlargement
     for (const t of step.targets) {
-      el("polygon", {points: pts(t.ring), fill: data.scene.colors.targets[t.id] || P.target,
+      const e = drawn(t.ring);
+      targetShape.set(t.id, e);
+      el("polygon", {points: pts(t.ring.map(e.at)),
+                     fill: data.scene.colors.targets[t.id] || P.target,
                      "data-target": String(t.id)}, svg);
     }
+    for (const e of enlarged) {
+      el("circle", {cx: e.c[0], cy: -e.c[1], r: 0.5 * minObject + 0.2 * em, fill: "none",
+                    stroke: P.text, "stroke-width": 1.2, "stroke-dasharray": "0.5 3",
+                    "stroke-linecap": "round", "vector-effect": "non-scaling-stroke",
+                    class: "enlarged"}, svg);
+    }
     step.segments.forEach((s, i) => {
+      const e = targetShape.get(s.target), a = e ? e.at(s.a) : s.a, b = e ? e.at(s.b) : s.b;
       const line = el("line", {
         class: "segment", "data-segment": String(i), "data-target": String(s.target),
-        "data-edge": String(s.edge), x1: s.a[0], y1: -s.a[1], x2: s.b[0], y2: -s.b[1],
+        "data-edge": String(s.edge), x1: a[0], y1: -a[1], x2: b[0], y2: -b[1],
         stroke: P.seenBy[Math.min(s.visibleBy.length, 3)], "stroke-width": 5,
         "stroke-linecap": "round", "vector-effect": "non-scaling-stroke"}, svg);
       if (panel.selection && panel.selection.segment === i) line.classList.add("selected");

@@ -318,6 +318,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
           {"dt", run.metadata.parameters.sim.dt},
           {"series", series},
           {"cameras", cameras},
+          {"viewAlpha", viz::viewAlphaFor(scene.cameras.size())},
           {"targets", scene.targets.size()},
           {"obstacles", scene.obstacles.size()},
           {"events", events},

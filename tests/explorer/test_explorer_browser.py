@@ -624,3 +624,47 @@ def test_recorded_targets_come_and_go_as_the_run_and_camcov_inspect_say(explorer
         assert [(s.get_attribute("data-target"), s.get_attribute("data-edge")) for s in segments] \
             == [(str(s["target"]), str(s["edge"])) for s in reference["segments"]], f"t = {t}"
     assert_no_console_errors(explorer)
+
+
+def test_small_objects_are_drawn_enlarged_and_ringed_and_a_large_teams_views_lighter(
+        explorer, camcov, tmp_path):
+    """A 0.2 m target in a 60 m room is drawn at least 0.6 em across (em: 2.5 % of the room),
+    its edges with it, and ringed with dots; eight cameras' views are lighter than one's, as
+    in the frames (viz/palette.h, viewAlphaFor)."""
+    cameras = [{"pos": f"POINT({-25 + 7 * j} -25)", "angle": 90, "maxVelocity": 1,
+                "maxAngularVelocity": 1} for j in range(8)]
+    scene = {"boundary": "POLYGON((-30 -30,30 -30,30 30,-30 30))",
+             "targets": [{"shape": "POLYGON((-0.1 -0.1,0.1 -0.1,0.1 0.1,-0.1 0.1))",
+                          "path": "POINT(0 0)"},
+                         {"shape": "POLYGON((-3 -3,3 -3,3 3,-3 3))", "path": "POINT(15 15)"}],
+             "cameraFoV": 30, "cameras": cameras}
+    pages = {}
+    for team in (1, 8):
+        file = tmp_path / f"team{team}.json"
+        file.write_text(json.dumps({**scene, "cameras": cameras[:team]}))
+        run_file, _ = record_run(camcov, tmp_path / f"runs{team}", "local", file, 1)
+        pages[team] = write_explorer(camcov, [run_file], tmp_path / f"team{team}.html")
+    em = 0.025 * 60
+    explorer.open(pages[8])
+    world = explorer.world(0)
+    small = world.find_element(By.CSS_SELECTOR, 'polygon[data-target="0"]')
+    box = explorer.driver.execute_script("return arguments[0].getBBox();", small)
+    assert min(box["width"], box["height"]) >= 0.6 * em - 1e-6, box
+    large = world.find_element(By.CSS_SELECTOR, 'polygon[data-target="1"]')
+    box = explorer.driver.execute_script("return arguments[0].getBBox();", large)
+    assert box["width"] == pytest.approx(6.0, abs=1e-6), "an object large enough is as it is"
+    rings = world.find_elements(By.CSS_SELECTOR, "circle.enlarged")
+    assert len(rings) == 1
+    assert float(rings[0].get_attribute("cx")) == pytest.approx(0.0, abs=1e-9)
+    for segment in world.find_elements(By.CSS_SELECTOR, '.segment[data-target="0"]'):
+        ends = [float(segment.get_attribute(k)) for k in ("x1", "y1", "x2", "y2")]
+        assert max(abs(v) for v in ends) >= 0.25 * em, "the small target's edges are enlarged"
+    opacity = {}
+    opacity[8] = {float(v.get_attribute("fill-opacity"))
+                  for v in world.find_elements(By.CSS_SELECTOR, "polygon.view")}
+    explorer.open(pages[1])
+    opacity[1] = {float(v.get_attribute("fill-opacity"))
+                  for v in explorer.world(0).find_elements(By.CSS_SELECTOR, "polygon.view")}
+    assert opacity[1] == {0.28}
+    assert len(opacity[8]) == 1 and opacity[8].pop() == pytest.approx(1 - 0.17 ** (1 / 8))
+    assert_no_console_errors(explorer)

@@ -96,6 +96,62 @@ TEST_F(TinyFrame, PngShowsSeenGreenUnseenRedObstacleDarkAndEmptyFloorWhite) {
   EXPECT_GT(view.r, view.b + 0.15);
 }
 
+// A target a few centimetres across is drawn kMinObjectEm across, its seen edge with it, and
+// ringed with dots: without, it would be a pixel.
+TEST_F(TinyFrame, ATargetTooSmallToMakeOutIsDrawnEnlargedAndRinged) {
+  const Vec2 centre{2.0, -3.0};
+  frame_.world.targets.push_back(
+      {centre + Vec2{-0.01, -0.01}, centre + Vec2{0.01, -0.01}, centre + Vec2{0.0, 0.01}});
+  frame_.segments.push_back({centre + Vec2{-0.01, -0.01}, centre + Vec2{0.01, -0.01},
+                             static_cast<std::uint32_t>(frame_.world.targets.size() - 1), 0, 1});
+  ScratchDir dir;
+  writeAndLoad(dir / "small.png");
+  const FrameLayout layout = renderer_.layoutOf(frame_);
+  const Vec2 middle = layout.toImage(centre);
+  cairo_surface_t* surface = png_.get();
+  const auto dark = [&](int x, int y) {  // target grey, seen green or the ring's dots
+    const unsigned char* row =
+        cairo_image_surface_get_data(surface) + y * cairo_image_surface_get_stride(surface);
+    std::uint32_t word;
+    std::memcpy(&word, row + 4 * x, 4);
+    return ((word >> 8) & 255) < 235;
+  };
+  int marked = 0, ringed = 0;
+  const int reach = static_cast<int>(std::ceil(1.5 * layout.em));
+  for (int y = static_cast<int>(middle.y) - reach; y <= static_cast<int>(middle.y) + reach; ++y) {
+    for (int x = static_cast<int>(middle.x) - reach; x <= static_cast<int>(middle.x) + reach; ++x) {
+      if (!dark(x, y)) continue;
+      const double d = std::hypot(x + 0.5 - middle.x, y + 0.5 - middle.y);
+      if (d < 0.45 * layout.em) ++marked;
+      if (d > 0.7 * layout.em) ++ringed;
+    }
+  }
+  // The triangle is half a square of kMinObjectEm: about a third of the disc of 0.45 em.
+  EXPECT_GT(marked, static_cast<int>(0.2 * layout.em * layout.em)) << "enlarged";
+  EXPECT_GT(ringed, 8) << "ringed with dots";
+}
+
+// A title wider than the panel is made smaller, then cut with an ellipsis: the panel's right
+// margin stays the page's colour, never the title's clipped glyphs.
+TEST_F(TinyFrame, ATitleWiderThanThePanelIsFittedNotClipped) {
+  frame_.caption.title = std::string(120, 'W');
+  ScratchDir dir;
+  writeAndLoad(dir / "long.png");
+  const FrameLayout layout = renderer_.layoutOf(frame_);
+  cairo_surface_t* surface = png_.get();
+  const int right = static_cast<int>(layout.panel.x + layout.panel.width) - 1;
+  const int top = static_cast<int>(layout.captionRow(0).y);
+  for (int y = top; y < top + static_cast<int>(layout.rowHeight()); ++y) {
+    for (int x = right - static_cast<int>(0.4 * layout.em); x <= right; ++x) {
+      const unsigned char* row =
+          cairo_image_surface_get_data(surface) + y * cairo_image_surface_get_stride(surface);
+      std::uint32_t word;
+      std::memcpy(&word, row + 4 * x, 4);
+      EXPECT_GT((word >> 8) & 255, 200u) << "title ink at x " << x << ", y " << y;
+    }
+  }
+}
+
 TEST_F(TinyFrame, SvgHoldsTheSameDrawingAsVectors) {
   ScratchDir dir;
   const auto file = dir / "frame.svg";
