@@ -6,11 +6,24 @@
 namespace camcov::environment {
 
 EpisodeStepper::EpisodeStepper(unsigned threads) {
-  for (unsigned w = 1; w < threads; ++w)
-    workers_.emplace_back([this] { serve(); });
+  if (threads < 1 || threads > kMaxThreads) {
+    throw std::invalid_argument("threads: " + std::to_string(threads) + ", expected 1 to " +
+                                std::to_string(kMaxThreads));
+  }
+  try {
+    for (unsigned w = 1; w < threads; ++w)
+      workers_.emplace_back([this] { serve(); });
+  } catch (...) {  // the system gave no more threads: stop those that started, then say so
+    stop();
+    throw;
+  }
 }
 
 EpisodeStepper::~EpisodeStepper() {
+  stop();
+}
+
+void EpisodeStepper::stop() {
   {
     const std::lock_guard hold(lock_);
     stopping_ = true;
@@ -18,6 +31,7 @@ EpisodeStepper::~EpisodeStepper() {
   wake_.notify_all();
   for (std::thread& t : workers_)
     t.join();
+  workers_.clear();
 }
 
 void EpisodeStepper::serve() {
@@ -57,6 +71,7 @@ void EpisodeStepper::step(std::span<Episode* const> episodes,
                           std::span<const scene::CameraCommand> commands, std::size_t stride,
                           const EncodingSizes& sizes, std::span<float> observations,
                           std::span<reward::RewardTerms> terms) {
+  sizes.check();
   const std::size_t n = episodes.size();
   if (commands.size() != n * stride || observations.size() != n * sizes.size() ||
       terms.size() != n) {

@@ -20,7 +20,9 @@ namespace camcov::environment {
 
 class EpisodeStepper {
  public:
-  // `threads` in all, the calling one among them (at least 1).
+  static constexpr unsigned kMaxThreads = 256;
+  // `threads` in all, the calling one among them: 1 to kMaxThreads, else
+  // std::invalid_argument; std::system_error if the system has no more threads to give.
   explicit EpisodeStepper(unsigned threads);
   ~EpisodeStepper();
   EpisodeStepper(const EpisodeStepper&) = delete;
@@ -38,6 +40,7 @@ class EpisodeStepper {
             std::span<reward::RewardTerms> terms);
 
  private:
+  void stop();       // joins the workers
   void serve();      // a worker's loop
   void takeItems();  // items of the current call until none is left
   std::function<void(std::size_t)> task_;

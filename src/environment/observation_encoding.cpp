@@ -7,6 +7,7 @@
 
 #include "geometry/ring.h"
 #include "kinematics/world.h"
+#include "scene/camera.h"
 
 namespace camcov::environment {
 namespace {
@@ -59,6 +60,19 @@ void requireFits(const scene::Scene& scene, const EncodingSizes& sizes) {
 
 }  // namespace
 
+void EncodingSizes::check() const {
+  const auto require = [](std::size_t value, std::size_t limit, const char* what) {
+    if (value > limit) {
+      throw std::invalid_argument("sizes: " + std::to_string(value) + " " + what + ", at most " +
+                                  std::to_string(limit));
+    }
+  };
+  require(cameras, scene::kMaxCameras, "cameras");
+  require(targets, kMaxCount, "targets");
+  require(obstacles, kMaxCount, "obstacles");
+  require(vertices, kMaxCount, "vertices");
+}
+
 EncodingSizes EncodingSizes::of(const scene::Scene& scene) {
   EncodingSizes s{scene.cameras.size(), scene.targets.size(), scene.obstacles.size(), 0};
   for (const auto& o : scene.targets)
@@ -76,6 +90,7 @@ EncodingSizes EncodingSizes::atLeast(const EncodingSizes& o) const {
 void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View view,
                        std::size_t camera, std::span<float> out) {
   const scene::Scene& scene = episode.scene();
+  sizes.check();
   requireFits(scene, sizes);
   if (out.size() != sizes.size())
     throw std::invalid_argument("encodeObservation: the output has the wrong size");

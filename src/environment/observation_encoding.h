@@ -41,6 +41,10 @@ struct EncodingSizes {
   std::size_t size() const {
     return kGlobal + cameras * kPerCamera + targets * perTarget() + obstacles * perObstacle();
   }
+  // At most scene::kMaxCameras cameras and kMaxCount of each other count, so that size()
+  // cannot overflow: std::invalid_argument naming the count otherwise.
+  static constexpr std::size_t kMaxCount = 1000000;
+  void check() const;
   // The smallest sizes that hold `scene` at every instant (deformations keep their vertex
   // counts; a recorded person's disc is its shape).
   static EncodingSizes of(const scene::Scene& scene);

@@ -48,7 +48,13 @@ struct PythonEpisode {
 EncodingSizes sizesFrom(const std::vector<std::size_t>& s) {
   if (s.size() != 4)
     throw py::value_error("sizes: expected (cameras, targets, obstacles, vertices)");
-  return {s[0], s[1], s[2], s[3]};
+  const EncodingSizes sizes{s[0], s[1], s[2], s[3]};
+  try {
+    sizes.check();
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(error.what());
+  }
+  return sizes;
 }
 
 std::vector<std::size_t> sizesTuple(const EncodingSizes& s) {
@@ -241,8 +247,11 @@ void bindEnvironment(py::module_& m) {
       "Steps many episodes at once on threads that wait between calls, without the GIL: what "
       "camcov.env.VectorCoverageEnv steps with.")
       .def(py::init([](unsigned threads) {
-             if (threads < 1) throw py::value_error("threads: expected at least 1");
-             return std::make_unique<environment::EpisodeStepper>(threads);
+             try {
+               return std::make_unique<environment::EpisodeStepper>(threads);
+             } catch (const std::invalid_argument& error) {
+               throw py::value_error(error.what());
+             }
            }),
            py::arg("threads"), "EpisodeStepper(threads): the calling thread among them.")
       .def_property_readonly("threads", &environment::EpisodeStepper::threads,

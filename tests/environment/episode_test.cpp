@@ -147,6 +147,20 @@ TEST(EpisodeStepper, ThreadsGiveWhatOneThreadGivesAndAFailureStopsNothingElse) {
     EXPECT_THROW(stepper.step(episodes, commands, m - 1, sizes, out, terms), std::invalid_argument);
   }
   EXPECT_EQ(observations[0], observations[1]);
+  EXPECT_THROW(EpisodeStepper(0), std::invalid_argument);
+  EXPECT_THROW(EpisodeStepper(EpisodeStepper::kMaxThreads + 1), std::invalid_argument);
+}
+
+TEST(EncodingSizes, CountsThatWouldOverflowTheSizeAreRefused) {
+  const auto scene = oneTargetScene();
+  Episode episode(scene, shortRun(1.0));
+  std::vector<float> out(1);
+  const std::size_t huge = std::size_t{1} << 62;
+  for (const EncodingSizes& sizes :
+       {EncodingSizes{huge, 1, 1, 4}, EncodingSizes{2, huge, 1, 4}, EncodingSizes{2, 1, 1, huge}}) {
+    EXPECT_THROW(sizes.check(), std::invalid_argument);
+    EXPECT_THROW(encodeObservation(episode, sizes, View::team, 0, out), std::invalid_argument);
+  }
 }
 
 }  // namespace

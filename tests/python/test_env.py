@@ -235,6 +235,19 @@ def test_bad_input_raises_naming_the_argument(scenes):
     nan[1, 0, 0] = math.nan
     with pytest.raises(ValueError, match=r"actions\[1\]: camera 0's command is not finite"):
         vector.step(nan)
+    # Sizes, threads and counts that would overflow or exhaust the machine are refused.
+    episode = env.episodes.episode
+    with pytest.raises(ValueError, match="sizes: 4611686018427387904 cameras, at most 64"):
+        episode.observation((2**62, 1, 0, 4))
+    with pytest.raises(ValueError, match="sizes: .* vertices, at most 1000000"):
+        episode.observation((5, 6, 0, 2**61))
+    for threads in (0, 10**6):
+        with pytest.raises((ValueError, TypeError), match="threads"):
+            camcov.EpisodeStepper(threads)
+    with pytest.raises(ValueError, match="threads: expected a whole number from 1 to 256"):
+        E.VectorCoverageEnv(scenes["dynamic9"], 2, threads=1000)
+    with pytest.raises(ValueError, match="num_envs: expected a whole number from 1 to 65536"):
+        E.VectorCoverageEnv(scenes["dynamic9"], 10**7)
 
 
 def test_the_core_needs_neither_gymnasium_nor_pettingzoo(tmp_path):

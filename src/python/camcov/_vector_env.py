@@ -11,6 +11,9 @@ from camcov.env import Episodes
 from gymnasium import spaces
 
 
+MAX_ENVS = 65536  # each holds a simulation; more would exhaust memory before stepping once
+
+
 class VectorCoverageEnv(VectorEnv):
     """num_envs CoverageEnv episodes stepped together in C++ threads, without the GIL: a
     gymnasium.vector.VectorEnv with next-step autoreset (the step after an episode ends
@@ -29,12 +32,13 @@ class VectorCoverageEnv(VectorEnv):
 
     def __init__(self, scene, num_envs, threads=None, params=None, reward="reward"):
         """num_envs episodes of the scenes, stepped on `threads` threads."""
-        if not isinstance(num_envs, int) or num_envs < 1:
-            raise ValueError(f"num_envs: expected a positive whole number, got {num_envs!r}")
+        if not isinstance(num_envs, int) or not 1 <= num_envs <= MAX_ENVS:
+            raise ValueError(f"num_envs: expected a whole number from 1 to {MAX_ENVS}, got "
+                             f"{num_envs!r}")
         if threads is None:
-            threads = min(num_envs, os.cpu_count() or 1)
-        if not isinstance(threads, int) or threads < 1:
-            raise ValueError(f"threads: expected a positive whole number, got {threads!r}")
+            threads = min(num_envs, os.cpu_count() or 1, 256)
+        if not isinstance(threads, int) or not 1 <= threads <= 256:
+            raise ValueError(f"threads: expected a whole number from 1 to 256, got {threads!r}")
         scenes = Episodes(scene, params, reward).scenes  # loaded once, shared by all
         self.vector_episodes = [Episodes(scenes, params, reward) for _ in range(num_envs)]
         self.num_envs = num_envs
