@@ -21,12 +21,11 @@ Episode::Episode(std::shared_ptr<const scene::Scene> scene, const params::Parame
 
 Episode::~Episode() = default;
 
-void Episode::step(std::span<const scene::CameraCommand> commands,
-                   std::span<const std::optional<geometry::Pose>> goals) {
+void Episode::step(std::span<const scene::CameraCommand> commands) {
   if (finished()) throw std::logic_error("Episode::step: the episode is finished");
   NoRecords none;
   simulation_->command(commands);
-  simulation_->advance(goals.empty() ? std::span(noGoals_) : goals, none);
+  simulation_->advance(noGoals_, none);
 }
 
 void Episode::close() {

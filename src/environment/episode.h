@@ -25,7 +25,6 @@ class Episode {
   Episode& operator=(const Episode&) = delete;
 
   const scene::Scene& scene() const { return *scene_; }
-  const std::shared_ptr<const scene::Scene>& sharedScene() const { return scene_; }
   const params::Parameters& params() const { return params_; }
 
   // The present instant t_k = k · dt, as a controller sees it: the world, the poses, S(t) and
@@ -45,10 +44,8 @@ class Episode {
 
   // Commands for [t_k, t_k+1) — one per camera, saturated to its limits and passed through the
   // safety layer; a non-finite one holds that camera still and is an event — then t_k+1,
-  // measured. `goals` (where a policy's cameras head, if any) go to the summary's accounting
-  // only. std::logic_error once finished().
-  void step(std::span<const scene::CameraCommand> commands,
-            std::span<const std::optional<geometry::Pose>> goals = {});
+  // measured. std::logic_error once finished().
+  void step(std::span<const scene::CameraCommand> commands);
 
   // The run so far; its averages (eq. (4)) once closed.
   sim::RunSummary summary() const;
@@ -57,6 +54,7 @@ class Episode {
   std::shared_ptr<const scene::Scene> scene_;
   params::Parameters params_;
   std::unique_ptr<sim::Simulation> simulation_;
+  // An episode records nothing, so no camera's goal matters: none is passed on.
   std::vector<std::optional<geometry::Pose>> noGoals_;
 };
 

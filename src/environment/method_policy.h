@@ -6,9 +6,7 @@
 // ones on the same scenes and seeds.
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <span>
-#include <vector>
 
 #include "control/controller.h"
 #include "control/methods.h"
@@ -23,12 +21,9 @@ class MethodPolicy {
   // The commands for the episode's present instant (one per camera); the controller's events
   // join the episode's.
   void decide(Episode& episode, std::span<scene::CameraCommand> commands);
-  // Where each camera is heading, if it follows a plan: for Episode::step.
-  std::span<const std::optional<geometry::Pose>> goals() const { return goals_; }
 
  private:
   std::unique_ptr<control::Controller> controller_;
-  std::vector<std::optional<geometry::Pose>> goals_;
 };
 
 }  // namespace camcov::environment

@@ -53,7 +53,7 @@ TEST(Episode, DrivenByAMethodsPolicyIsThatMethodsRunToTheBit) {
     std::vector<scene::CameraCommand> commands(scene->cameras.size());
     while (!episode.finished()) {
       policy.decide(episode, commands);
-      episode.step(commands, policy.goals());
+      episode.step(commands);
       coverage.push_back(episode.observation().terms.coverage);
     }
     episode.close();
