@@ -82,11 +82,6 @@ EncodingSizes EncodingSizes::of(const scene::Scene& scene) {
   return s;
 }
 
-EncodingSizes EncodingSizes::atLeast(const EncodingSizes& o) const {
-  return {std::max(cameras, o.cameras), std::max(targets, o.targets),
-          std::max(obstacles, o.obstacles), std::max(vertices, o.vertices)};
-}
-
 void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View view,
                        std::size_t camera, std::span<float> out) {
   const scene::Scene& scene = episode.scene();

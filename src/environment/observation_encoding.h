@@ -48,8 +48,6 @@ struct EncodingSizes {
   // The smallest sizes that hold `scene` at every instant (deformations keep their vertex
   // counts; a recorded person's disc is its shape).
   static EncodingSizes of(const scene::Scene& scene);
-  // Large enough for both.
-  EncodingSizes atLeast(const EncodingSizes& other) const;
 };
 
 enum class View { team, own };

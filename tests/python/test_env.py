@@ -246,6 +246,8 @@ def test_bad_input_raises_naming_the_argument(scenes):
             camcov.EpisodeStepper(threads)
     with pytest.raises(ValueError, match="threads: expected a whole number from 1 to 256"):
         E.VectorCoverageEnv(scenes["dynamic9"], 2, threads=1000)
+    with pytest.raises(ValueError, match="seed: expected one seed or 2, got 3"):
+        vector.reset(seed=[1, 2, 3])
     with pytest.raises(ValueError, match="num_envs: expected a whole number from 1 to 65536"):
         E.VectorCoverageEnv(scenes["dynamic9"], 10**7)
 

@@ -62,6 +62,8 @@ class VectorCoverageEnv(VectorEnv):
         if seed is not None:
             seeds = seed if isinstance(seed, (list, tuple)) else [seed + i
                                                                   for i in range(self.num_envs)]
+            if len(seeds) != self.num_envs:
+                raise ValueError(f"seed: expected one seed or {self.num_envs}, got {len(seeds)}")
             self._rngs = [np.random.default_rng(s) for s in seeds]
         observations = np.stack([self._start(i, options) for i in range(self.num_envs)])
         self._ended[:] = False
