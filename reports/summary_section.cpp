@@ -31,6 +31,16 @@ std::string meanSd(const records::Description& d, bool best) {
   return best ? "<b>" + text + "</b>" : text;
 }
 
+// A weighted scene's runs (their importance-weighted coverage beside the plain one, which the
+// verdicts compare): under the plain mean.
+std::string weightedLine(const records::MethodSummary& m) {
+  if (m.weightedCoverage.count == 0) return "";
+  return fmt::format(
+      "<br><span class=\"muted\" title=\"average importance-weighted coverage (edgeWeights, "
+      "frontWeight)\">weighted {}</span>",
+      meanSd(m.weightedCoverage, false));
+}
+
 std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
   const MethodStyle style = methodStyle(m.method);
   // A method whose every run failed has no numbers, not zeros.
@@ -39,14 +49,14 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
   };
   return fmt::format(
       "<td>{}</td><td class=\"num\">{}</td>"
-      "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
+      "<td class=\"num\">{}{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{}</td>"
       "<td class=\"num\" title=\"of which {} s near objects, {} s between cameras\">{} / {}</td>"
       "<td class=\"num\" title=\"{} runs had an unavoidable contact\">{} / {}</td>"
       "<td class=\"num\">{} / {}</td>",
       methodMark(style.color, escapeXml(m.method)),
       m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
-      meanSd(m.coverage, bestCoverage), number(m.coverage.median, 3),
+      meanSd(m.coverage, bestCoverage), weightedLine(m), number(m.coverage.median, 3),
       meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3),
       number(m.meanObjectCollisionTime, 2), number(m.meanCameraCollisionTime, 2),
       number(m.meanAvoidableContactTime, 2), number(m.meanUnavoidableContactTime, 2),

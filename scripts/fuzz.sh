@@ -5,8 +5,8 @@
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
-# Targets: the scene loader, the visibility sweep, the two track importers and the command
-# line's parser. The corpus starts from tests/fuzz/seeds, every scene of scenes/ and tests/data/
+# Targets: the scene loader, the visibility sweep, the two track importers, the command
+# line's parser and weighted coverage on scenes the bytes choose. The corpus starts from tests/fuzz/seeds, every scene of scenes/ and tests/data/
 # and the track extracts of tests/data/tracks (copied at run time into the build folder, never
 # into the repository).
 # A crash leaves its input in build-asan/artifacts/; replay it with
@@ -20,11 +20,11 @@ case "$budget" in
 esac
 
 dir=$("$repo/scripts/build.sh" sanitize fuzz_scene fuzz_visibility fuzz_lastrow fuzz_ethucy \
-  fuzz_command_line | tail -n 1)
+  fuzz_command_line fuzz_weighted_scene | tail -n 1)
 
 corpus="$dir/corpus"
 rm -rf "$corpus"
-mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line} "$dir/artifacts"
+mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line,weighted_scene} "$dir/artifacts"
 cp "$repo"/tests/fuzz/seeds/scene/*.json "$corpus/scene/"
 find "$repo/scenes" "$repo/tests/data" -name '*.json' -size -64k |
   while read -r f; do cp "$f" "$corpus/scene/$(echo "${f#"$repo"/}" | tr / _)"; done
@@ -58,5 +58,7 @@ run visibility -max_len=1024 -len_control=0 || status=1
 run lastrow -max_len=8192 || status=1
 run ethucy -max_len=8192 || status=1
 run command_line -max_len=512 || status=1
+# Bytes choose a weighted scene (tests/fuzz/weighted_scene_fuzzer.cpp): a few hundred do.
+run weighted_scene -max_len=512 -len_control=0 || status=1
 [ "$status" -eq 0 ] && echo "fuzz: no failures" || echo "fuzz: FAILED, inputs in $dir/artifacts"
 exit "$status"

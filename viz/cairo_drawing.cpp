@@ -193,17 +193,26 @@ void drawObjects(const Painter& p, const kinematics::World& world,
 
 // Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
 void drawSegments(const Painter& p, std::span<const visibility::Segment> segments,
-                  const Enlargements* enlarged) {
+                  const Enlargements* enlarged, const std::vector<std::vector<double>>& weights) {
   cairo_t* cr = p.cr();
   // Round caps and joins: a run of segments that continue one another is one polyline, the
   // same shape as its segments stroked one by one, with fewer edges for Cairo to scan.
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const auto widthOf = [&](const visibility::Segment& s) {
+    return weights.empty() ? kSegmentWidth
+                           : kSegmentWidth * importanceWidthFactor(weights[s.target][s.edge]);
+  };
   for (const bool seen : {false, true}) {
     const visibility::Segment* last = nullptr;  // the one of this colour drawn before
     for (const auto& s : segments) {
       if ((s.visibleBy != 0) != seen) continue;
       const Enlargement e = enlargementAt(enlarged ? &enlarged->targets : nullptr, s.target);
+      // A polyline has one width: a segment of another weight starts a new one.
+      if (last != nullptr && widthOf(*last) != widthOf(s)) {
+        p.stroke(seen ? kSeen : kUnseen, widthOf(*last));
+        last = nullptr;
+      }
       if (last != nullptr && last->target == s.target && last->b == s.a) {
         p.lineTo(e(s.b));
       } else {
@@ -211,7 +220,7 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
       }
       last = &s;
     }
-    p.stroke(seen ? kSeen : kUnseen, kSegmentWidth);
+    if (last != nullptr) p.stroke(seen ? kSeen : kUnseen, widthOf(*last));
   }
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);

@@ -31,7 +31,10 @@ std::string ObjectPath::speedLabel() const {
 }
 
 FrameBuilder::FrameBuilder(const scene::Scene& scene)
-    : kinematics_(scene), sceneName_(scene.name), lenses_(scene::lenses(scene)) {
+    : kinematics_(scene),
+      sceneName_(scene.name),
+      weighted_(scene.isWeighted()),
+      lenses_(scene::lenses(scene)) {
   addPaths(scene.targets, paths_);
   addPaths(scene.obstacles, paths_);
   for (const auto& t : scene.targets)
@@ -62,6 +65,12 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.caption.subtitle.clear();
   out.caption.time = time;
   out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
+  out.caption.weightedCoverage.reset();
+  if (weighted_) {
+    out.caption.weightedCoverage =
+        reward::coverageOf(reward::weightedVisibleLength(out.segments, out.world.targetEdgeWeights),
+                           reward::weightedPerimeter(out.world));
+  }
   out.caption.utilization = reward::utilization(out.segments, cameras, lenses_);
 }
 

@@ -41,10 +41,12 @@ struct ObjectPath {
 };
 
 struct Caption {
-  std::string title;         // the scene's name
-  std::string subtitle;      // what the cameras are doing, e.g. "method paper, seed 1"
-  double time = 0.0;         // s
-  double coverage = 0.0;     // eq. (3), in [0, 1]
+  std::string title;      // the scene's name
+  std::string subtitle;   // what the cameras are doing, e.g. "method paper, seed 1"
+  double time = 0.0;      // s
+  double coverage = 0.0;  // eq. (3), in [0, 1]
+  // Importance-weighted coverage (reward::RewardTerms), for a weighted scene's frames only.
+  std::optional<double> weightedCoverage;
   double utilization = 0.0;  // eq. (5), in [0, 1]
 };
 
@@ -73,6 +75,7 @@ class FrameBuilder {
  private:
   kinematics::Kinematics kinematics_;
   std::string sceneName_;
+  bool weighted_ = false;                    // its caption has weighted coverage
   std::vector<scene::Lens> lenses_;          // of camera j
   std::vector<std::optional<Rgb>> colours_;  // of each scene target
   std::vector<ObjectPath> paths_;

@@ -23,8 +23,19 @@ constexpr double kObjectPathWidth = 0.09;
 constexpr double kPitchLineWidth = 0.08;
 
 // The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
-// entry (palette.h).
-constexpr PanelRows kPanelRows{5, std::size(kLegendEntries)};
+// entry (palette.h). A weighted scene's frames have a row more of each: weighted coverage, and
+// what an edge's width means.
+bool weighted(const Caption& caption) {
+  return caption.weightedCoverage.has_value();
+}
+PanelRows panelRows(const Caption& caption) {
+  const int more = weighted(caption) ? 1 : 0;
+  return {5 + more, static_cast<int>(std::size(kLegendEntries)) + more};
+}
+Legend legendEntry(int row) {
+  return row < static_cast<int>(std::size(kLegendEntries)) ? kLegendEntries[row]
+                                                           : Legend::Importance;
+}
 
 // Object paths are dashed: they are where things will be, not where they are.
 void setPathDash(cairo_t* cr, double em) {
@@ -191,6 +202,17 @@ void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
       line(kObjectPath, kObjectPathWidth);
       cairo_set_dash(cr, nullptr, 0, 0.0);
       break;
+    case Legend::Importance:
+      // Three pieces of edge, from the least important to the most.
+      for (int k = 0; k < 3; ++k) {
+        const double x0 = left.x + k * 0.6 * em;
+        cairo_move_to(cr, x0, left.y);
+        cairo_line_to(cr, x0 + 0.4 * em, left.y);
+        setColour(cr, kSeen);
+        cairo_set_line_width(cr, kSegmentWidth * importanceWidthFactor(0.5 * k) * em);
+        cairo_stroke(cr);
+      }
+      break;
   }
 }
 
@@ -239,8 +261,8 @@ void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& capti
   };
   line(0, caption.title, 1.25 * em, kText, true);
   line(1, caption.subtitle, 0.9 * em, kMutedText, false);
-  for (int i = 0; i < kPanelRows.legend; ++i) {
-    const auto entry = static_cast<Legend>(i);
+  for (int i = 0; i < panelRows(caption).legend; ++i) {
+    const Legend entry = legendEntry(i);
     const Vec2 row = layout.legendRow(i);
     drawLegendSample(cr, entry, row + Vec2{0.0, 0.8 * em}, em);
     text(cr, rowBaseline(row, em) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
@@ -257,9 +279,14 @@ void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
   cairo_restore(cr);
 }
 
-// The caption rows that change every frame: time, coverage, utilization.
-enum MovingRow { kTimeRow = 2, kCoverageRow = 3, kUtilizationRow = 4 };
-constexpr MovingRow kMovingRows[] = {kTimeRow, kCoverageRow, kUtilizationRow};
+// The caption rows that change every frame: time, coverage, utilization, and a weighted
+// scene's weighted coverage.
+enum MovingRow { kTimeRow = 2, kCoverageRow = 3, kUtilizationRow = 4, kWeightedRow = 5 };
+constexpr MovingRow kMovingRows[] = {kTimeRow, kCoverageRow, kUtilizationRow, kWeightedRow};
+// Those the layout has (FrameLayout::rows).
+bool hasRow(const FrameLayout& layout, MovingRow row) {
+  return row < layout.rows.caption;
+}
 
 // A moving row's whole pixels (half an em to the left of its text, for overhanging glyphs),
 // inside the panel.
@@ -277,6 +304,7 @@ PixelRect movingRowArea(const FrameLayout& layout, MovingRow row) {
 void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
   for (const MovingRow row : kMovingRows) {
+    if (!hasRow(layout, row)) continue;
     clippedTo(cr, movingRowArea(layout, row), [&] {
       const Vec2 baseline = rowBaseline(layout.captionRow(row), em);
       switch (row) {
@@ -289,6 +317,10 @@ void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& capt
         case kUtilizationRow:
           drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
           break;
+        case kWeightedRow:
+          drawMeter(cr, baseline, "weighted cov.", caption.weightedCoverage.value_or(0.0), kSeen,
+                    em);
+          break;
       }
     });
   }
@@ -299,13 +331,15 @@ void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& capt
 // Everything drawMoving() may touch: outside these a frame is its still part.
 std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
   std::vector<PixelRect> areas{layout.worldArea};
-  for (const MovingRow row : kMovingRows)
-    areas.push_back(movingRowArea(layout, row));
+  for (const MovingRow row : kMovingRows) {
+    if (hasRow(layout, row)) areas.push_back(movingRowArea(layout, row));
+  }
   return areas;
 }
 
 FrameLayout layoutFor(const Frame& frame, int width, int height) {
-  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary), kPanelRows);
+  return layoutFrame(width, height, geometry::boundingBox(frame.world.boundary),
+                     panelRows(frame.caption));
 }
 
 // A frame is drawn in two parts. The still part is what a frame shares with every other
@@ -331,7 +365,7 @@ void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, Fram
     drawViews(painter, frame.cameras, use);
     const Enlargements enlarged = enlargementsFor(painter, frame.world);
     drawObjects(painter, frame.world, frame.targetColours, &enlarged);
-    drawSegments(painter, frame.segments, &enlarged);
+    drawSegments(painter, frame.segments, &enlarged, frame.world.targetEdgeWeights);
     drawEnlargedMarks(painter, frame.world, enlarged);
     drawPathLabels(painter, frame, layout.worldArea);
     drawPlans(painter, frame.cameras);

@@ -82,9 +82,11 @@ FrameLayout layoutFrame(int width, int height, const geometry::Box& world, Panel
   const double em = fontSize(w, h);
   rows.caption = std::max(1, rows.caption);
   rows.legend = std::max(0, rows.legend);
-  const FrameLayout right = panelRight(w, h, world, rows, em);
-  const FrameLayout bottom = panelBottom(w, h, world, rows, em);
-  return right.toImage.scale() >= bottom.toImage.scale() ? right : bottom;
+  FrameLayout right = panelRight(w, h, world, rows, em);
+  FrameLayout bottom = panelBottom(w, h, world, rows, em);
+  FrameLayout& chosen = right.toImage.scale() >= bottom.toImage.scale() ? right : bottom;
+  chosen.rows = rows;
+  return chosen;
 }
 
 }  // namespace camcov::viz

@@ -29,6 +29,7 @@ struct FrameLayout {
   int columns = 1;
   int rowsPerColumn = 1;
   int legendStart = 0;  // grid row of the legend's first row
+  PanelRows rows;       // the caption's and the legend's
   WorldToImage toImage;
 
   double rowHeight() const { return kRowHeight * em; }

@@ -42,16 +42,19 @@ struct StillKey {
   std::vector<std::vector<geometry::Vec2>> markings;
   std::string title;
   std::string subtitle;
+  bool weighted = false;  // the legend explains the edges' widths
 
   bool matches(const Frame& frame) const {
     return boundary == frame.world.boundary && paths == frame.paths && markings == frame.markings &&
-           title == frame.caption.title && subtitle == frame.caption.subtitle;
+           title == frame.caption.title && subtitle == frame.caption.subtitle &&
+           weighted == frame.caption.weightedCoverage.has_value();
   }
 };
 
 StillKey stillKeyOf(const Frame& frame) {
-  return {frame.world.boundary, frame.paths, frame.markings, frame.caption.title,
-          frame.caption.subtitle};
+  return {frame.world.boundary,   frame.paths,
+          frame.markings,         frame.caption.title,
+          frame.caption.subtitle, frame.caption.weightedCoverage.has_value()};
 }
 
 Surface imageSurface(int width, int height) {

@@ -45,10 +45,18 @@ std::string cssColour(Rgb c);
 std::optional<Rgb> rgbFromHex(std::string_view hex);
 
 // The legend's entries, in the order the frames list them.
-enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath };
+// Importance: a weighted scene's frames only (the width of a target's edges).
+enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath, Importance };
 inline constexpr Legend kLegendEntries[] = {Legend::Seen,      Legend::Unseen, Legend::Target,
                                             Legend::Obstacle,  Legend::Camera, Legend::Plan,
                                             Legend::ObjectPath};
+
+// A weighted scene's target edges are drawn as wide as they are important: weight w (in
+// [0, 1], World::targetEdgeWeights) times this factor of the plain width, from 0.4 (nothing)
+// to 1.6 (the most important). The explorer draws them the same.
+inline double importanceWidthFactor(double weight) {
+  return 0.4 + 1.2 * weight;
+}
 
 constexpr const char* legendText(Legend entry) {
   switch (entry) {
@@ -66,6 +74,8 @@ constexpr const char* legendText(Legend entry) {
       return "planned path and goal";
     case Legend::ObjectPath:
       return "object path and speed";
+    case Legend::Importance:
+      return "wider edge: more important";
   }
   return "";
 }

@@ -104,11 +104,13 @@
       const count = r.u();
       for (let i = 0; i < count; ++i) {
         const target = r.u(), edge = r.u(), ta = r.u() / U.alongEdge, tb = r.u() / U.alongEdge;
-        const visibleBy = r.bits(), reasons = new Array(M).fill(null);
+        const visibleBy = r.bits();
+        const weight = run.weighted ? r.u() / U.weight : null;  // a weighted scene's
+        const reasons = new Array(M).fill(null);
         for (let j = 0; j < M; ++j) if (!visibleBy.includes(j)) reasons[j] = r.u();
         const ring = targetRing.get(target), a = ring[edge], b = ring[(edge + 1) % ring.length];
         const at = (t) => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
-        segments.push({target, edge, ta, tb, a: at(ta), b: at(tb), visibleBy, reasons});
+        segments.push({target, edge, ta, tb, a: at(ta), b: at(tb), visibleBy, reasons, weight});
       }
       steps.push({targets: present[0], obstacles: present[1], cameras, segments});
     }
@@ -185,6 +187,11 @@
     const numbers = html("p", {class: "numbers"}, null, section);
     html("span", {}, "coverage ", numbers);
     const coverage = html("b", {class: "coverage"}, "", numbers);
+    const weighted = run.weighted ? html("b", {class: "weighted-coverage"}, "", null) : null;
+    if (weighted) {
+      html("span", {}, " · weighted coverage ", numbers);
+      numbers.appendChild(weighted);
+    }
     html("span", {}, " · utilization ", numbers);
     const utilization = html("b", {class: "utilization"}, "", numbers);
     html("span", {}, " · reward ", numbers);
@@ -193,7 +200,7 @@
                              "aria-label": `${data.scene.name}, ${run.label}`}, section);
     const info = html("div", {class: "info", "aria-live": "polite"}, null, section);
     html("p", {class: "hint"}, "Click an edge or a camera for its details.", info);
-    return {run, section, coverage, utilization, reward, world, info, selection: null};
+    return {run, section, coverage, weighted, utilization, reward, world, info, selection: null};
   });
 
   // The legend, from the palette the frames use (viz/palette.h).
@@ -210,6 +217,12 @@
     html("span", {class: "swatch"}, null, item).style.background = P.seenBy[n];
     item.appendChild(document.createTextNode(`seen by ${n}${n === 3 ? " or more" : ""} cameras`));
   });
+  // A weighted scene's edges are as wide as they are important.
+  if (runs.some((run) => run.weighted)) {
+    const item = html("span", {class: "item importance"}, null, legend);
+    html("span", {class: "swatch"}, null, item).style.background = P.seenBy[1];
+    item.appendChild(document.createTextNode(P.importance));
+  }
   // The timeline's marks, as the report's plots mark the same events (control/event_kind.h).
   for (const [name, mark] of Object.entries(data.marks)) {
     const item = html("span", {class: `item mark-${name}`}, null, legend);
@@ -271,7 +284,9 @@
       const line = el("line", {
         class: "segment", "data-segment": String(i), "data-target": String(s.target),
         "data-edge": String(s.edge), x1: a[0], y1: -a[1], x2: b[0], y2: -b[1],
-        stroke: P.seenBy[Math.min(s.visibleBy.length, 3)], "stroke-width": 5,
+        stroke: P.seenBy[Math.min(s.visibleBy.length, 3)],
+        // As wide as important, as frames draw them (viz/palette.h importanceWidthFactor).
+        "stroke-width": s.weight === null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * s.weight),
         "stroke-linecap": "round", "vector-effect": "non-scaling-stroke"}, svg);
       if (panel.selection && panel.selection.segment === i) line.classList.add("selected");
       line.addEventListener("click", (e) => {
@@ -364,6 +379,7 @@
     const s = step.segments[i];
     html("h3", {}, `Target ${s.target}, edge ${s.edge}`, info);
     field(info, "length", "length (m)", length(s).toFixed(3));
+    if (s.weight !== null) field(info, "weight", "importance weight (of 1)", s.weight.toFixed(3));
     field(info, "visibleBy", "visibleBy", s.visibleBy.length ? s.visibleBy.join(", ") : "none");
     const list = html("ul", {class: "reasons"}, null, info);
     s.reasons.forEach((code, j) => {
@@ -441,6 +457,7 @@
     for (const panel of panels) {
       const series = panel.run.series, at = Math.min(k, series.time.length - 1);
       panel.coverage.textContent = series.coverage[at].toFixed(4);
+      if (panel.weighted) panel.weighted.textContent = series.weightedCoverage[at].toFixed(4);
       panel.utilization.textContent = series.utilization[at].toFixed(4);
       panel.reward.textContent = series.reward[at].toFixed(4);
       drawWorld(panel, k);

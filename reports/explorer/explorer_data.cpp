@@ -182,6 +182,11 @@ class StepPacker {
       out.putUnsigned(along(s.a));
       out.putUnsigned(along(s.b));
       out.putUnsigned(s.visibleBy);
+      // A weighted scene's (run.weighted): the edge's importance, in thousandths.
+      if (!frame.world.targetEdgeWeights.empty()) {
+        out.putUnsigned(static_cast<std::uint64_t>(
+            std::llround(frame.world.targetEdgeWeights[s.target][s.edge] * kWeightUnits)));
+      }
       for (std::size_t j = 0; j < frame.cameras.size(); ++j) {
         if ((s.visibleBy >> j & 1u) != 0) continue;
         visibility::UnseenReason r =
@@ -227,6 +232,10 @@ nlohmann::json paletteJson() {
             viz::cssColour(viz::seenByColour(2)), viz::cssColour(viz::seenByColour(3))}},
           {"view", viz::cssColour(viz::kView)},
           {"viewAlpha", viz::kViewAlpha},
+          // importanceWidthFactor(w) = widthAtZero + widthPerWeight · w
+          {"widthAtZero", viz::importanceWidthFactor(0.0)},
+          {"widthPerWeight", viz::importanceWidthFactor(1.0) - viz::importanceWidthFactor(0.0)},
+          {"importance", viz::legendText(viz::Legend::Importance)},
           {"camera", viz::cssColour(viz::kCamera)},
           {"plan", viz::cssColour(viz::kPlan)},
           {"objectPath", viz::cssColour(viz::kObjectPath)},
@@ -283,9 +292,12 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
                            {"coverage", nlohmann::json::array()},
                            {"utilization", nlohmann::json::array()},
                            {"reward", nlohmann::json::array()}};
+  const bool weighted = scene.isWeighted();
+  if (weighted) series["weightedCoverage"] = nlohmann::json::array();
   for (const auto& step : run.steps) {
     series["time"].push_back(step.time);
     series["coverage"].push_back(step.terms.coverage);
+    if (weighted) series["weightedCoverage"].push_back(step.terms.weightedCoverage);
     series["utilization"].push_back(step.terms.utilization);
     series["reward"].push_back(step.terms.reward);
   }
@@ -319,6 +331,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
           {"series", series},
           {"cameras", cameras},
           {"viewAlpha", viz::viewAlphaFor(scene.cameras.size())},
+          {"weighted", weighted},
           {"targets", scene.targets.size()},
           {"obstacles", scene.obstacles.size()},
           {"events", events},
@@ -344,7 +357,8 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
         {"terms", kTermUnits},
         {"centimetres", kCentimetres},
         {"yaw", kYawUnits},
-        {"alongEdge", kAlongEdge}}},
+        {"alongEdge", kAlongEdge},
+        {"weight", kWeightUnits}}},
       {"runs", nlohmann::json::array()}};
   for (const records::RunRecord& run : runs) {
     const records::RunMetadata& first = runs.front().metadata;

@@ -42,6 +42,7 @@ inline constexpr double kCentimetres = 100.0;   // per m, for views
 inline constexpr double kYawUnits = 1e4;        // per rad
 inline constexpr double kAlongEdge = 1e6;       // per edge length
 inline constexpr double kTermUnits = 1e6;       // per unit of a reward term
+inline constexpr double kWeightUnits = 1e3;     // per unit of an edge's importance weight
 
 // Throws InputError when the runs are not of one scene (name and file hash) or a run does not
 // fit the scene (viz::RunReplay's checks).

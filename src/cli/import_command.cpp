@@ -17,6 +17,7 @@
 #include "records/atomic_file.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_validation.h"
 #include "util/counted.h"
 #include "util/input_error.h"
 
@@ -104,6 +105,14 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
       ->capture_default_str();
   cmd.add_option("--fov", o.scene.cameraHalfFovDeg, "half-angle field of view θ, degrees")
       ->check(within(0.1, 179.9))
+      ->capture_default_str();
+  cmd.add_option("--front-weight", o.scene.frontWeight,
+                 "how many times a person's front counts in weighted coverage (1: no front)")
+      ->check(within(0.0, scene::kMaxWeight))
+      ->capture_default_str();
+  cmd.add_option("--front-angle", o.scene.frontAngleDeg,
+                 "a person's front: edges facing within this many degrees of where they go")
+      ->check(within(0.0, 180.0, false))
       ->capture_default_str();
   cmd.add_option("--max-gap", o.scene.maxGap,
                  "a track that vanishes for longer comes back as a new target, s")

@@ -68,6 +68,7 @@ int inspect(const InspectOptions& o) {
     out["scene"] = s.name;
     out["time"] = o.time;
     out["coverage"] = terms.coverage;
+    if (s.isWeighted()) out["weightedCoverage"] = terms.weightedCoverage;
     out["utilization"] = terms.utilization;
     out["repulsion"] = terms.repulsion;
     out["reward"] = terms.reward;
@@ -87,6 +88,9 @@ int inspect(const InspectOptions& o) {
                                  {"edge", seg.edge},
                                  {"length", visibility::length(seg)},
                                  {"visibleBy", cameraList(seg.visibleBy)}});
+      // Where weighted, the edge's importance weight (World::targetEdgeWeights, in [0, 1]).
+      if (s.isWeighted())
+        out["segments"].back()["weight"] = model.world().targetEdgeWeights[seg.target][seg.edge];
     }
     std::cout << out.dump(2) << "\n";
     return 0;
@@ -95,6 +99,8 @@ int inspect(const InspectOptions& o) {
       "{} at t = {} s: coverage {:.4f}, utilization {:.4f}, repulsion {:.4f}, "
       "reward {:.4f}\n",
       s.name, o.time, terms.coverage, terms.utilization, terms.repulsion, terms.reward);
+  if (s.isWeighted())
+    std::cout << fmt::format("  weighted coverage {:.4f}\n", terms.weightedCoverage);
   for (unsigned j = 0; j < cameras.size(); ++j) {
     std::cout << fmt::format("  camera {}: ({:.3f}, {:.3f}) yaw {:.1f}°, sees {:.3f} m\n", j,
                              cameras[j].x, cameras[j].y, geometry::radToDeg(cameras[j].yaw),

@@ -48,7 +48,11 @@ double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, do
   std::vector<geometry::Pose> team;
   for (const auto& path : move.paths)
     team.push_back(path.back());
-  const double arrived = model.terms(team).coverage;
+  // The coverage the reward takes (weighted, unless the parameters say plain).
+  const auto coverageOf = [&model](const std::vector<geometry::Pose>& poses) {
+    return reward::coverageTerm(model.params(), model.terms(poses));
+  };
+  const double arrived = coverageOf(team);
   if (!(transit > 0.0)) return arrived;
   const double end = std::min(transit, horizon);
   const auto coverageAt = [&](double t) {
@@ -56,7 +60,7 @@ double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, do
       const double u = move.travel[j] > 0.0 ? std::min(1.0, t / move.travel[j]) : 1.0;
       team[j] = along(move.paths[j], u);
     }
-    return model.terms(team).coverage;
+    return coverageOf(team);
   };
   // The trapezoid rule over the transit's first `end` seconds.
   double integral = 0.0, before = coverageAt(0.0), tBefore = 0.0;

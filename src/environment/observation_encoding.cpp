@@ -102,7 +102,7 @@ void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View 
   float* at = out.data();
   const double duration = episode.steps() * episode.params().sim.dt;
   *at++ = static_cast<float>(duration > 0.0 ? std::min(1.0, o.time / duration) : 1.0);
-  *at++ = static_cast<float>(o.terms.coverage);
+  *at++ = static_cast<float>(reward::coverageTerm(episode.params().reward, o.terms));
   *at++ = static_cast<float>(o.terms.utilization);
   *at++ = static_cast<float>(o.terms.reward);
 
@@ -174,6 +174,11 @@ reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera) {
   const geometry::Pose& pose = o.cameras[camera];
   reward::RewardTerms terms;
   terms.coverage = reward::coverage(own, reward::targetPerimeter(o.world));
+  terms.weightedCoverage =
+      o.world.targetEdgeWeights.empty()
+          ? terms.coverage
+          : reward::coverageOf(reward::weightedVisibleLength(own, o.world.targetEdgeWeights),
+                               reward::weightedPerimeter(o.world));
   terms.utilization =
       reward::utilization(own, std::span(&pose, 1), std::span(&scene.cameras[camera].lens, 1));
   terms.repulsion = reward::repulsion(o.world, std::span(&pose, 1), lambdas.d2);
@@ -181,7 +186,8 @@ reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera) {
     if (i != camera)
       terms.repulsion += reward::pairTerm(pose.position(), o.cameras[i].position(), lambdas.d2);
   }
-  terms.reward = reward::combine(lambdas, terms.coverage, terms.utilization, terms.repulsion);
+  terms.reward = reward::combine(lambdas, reward::coverageTerm(lambdas, terms), terms.utilization,
+                                 terms.repulsion);
   return terms;
 }
 

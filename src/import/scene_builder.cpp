@@ -323,6 +323,8 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     scene::MovingObject object = still(mmRing(disc({0.0, 0.0}, radius)), track.positions.front());
     object.track = std::move(track);
     object.color = t.color;
+    if (t.kind != "ball" && o.frontWeight != 1.0)
+      object.front = scene::FrontWeighting{o.frontWeight, geometry::degToRad(o.frontAngleDeg)};
     return object;
   };
   for (const auto& t : kept.targets)

@@ -44,6 +44,11 @@ struct SceneOptions {
   double cameraSpeed = 2.0;                                // m/s, v_max
   double cameraTurnRate = 1.0;                             // rad/s, γ̇_max
   double cameraHalfFovDeg = 30.0;                          // θ, degrees
+  // A person's front (their face and chest: who they are and what they do) counts this many
+  // times the rest of them, within this half-angle of where they are going
+  // (scene::FrontWeighting); 1: no front. Not the ball's.
+  double frontWeight = 2.0;
+  double frontAngleDeg = 60.0;  // degrees
   std::string description;
 };
 

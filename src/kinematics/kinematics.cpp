@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinematics/edge_importance.h"
 #include "scene/deformation.h"
 
 namespace camcov::kinematics {
@@ -18,6 +19,8 @@ Kinematics::Kinematics(const scene::Scene& scene) : scene_(scene) {
     targetMotion_.push_back(motionOf(object));
   for (const auto& object : scene.obstacles)
     obstacleMotion_.push_back(motionOf(object));
+  weighted_ = scene.isWeighted();
+  importanceScale_ = importanceScale(scene);
 }
 
 ObjectPose Kinematics::pose(const scene::MovingObject& object, const Motion& motion, double t) {
@@ -108,6 +111,21 @@ void Kinematics::worldAt(double t, World& out) const {
   };
   fill(scene_.targets, targetMotion_, out.targets, out.targetIds);
   fill(scene_.obstacles, obstacleMotion_, out.obstacles, out.obstacleIds);
+  out.targetEdgeWeights.resize(weighted_ ? out.targets.size() : 0);
+  for (std::size_t k = 0; k < out.targetEdgeWeights.size(); ++k) {
+    const std::size_t i = out.targetIds[k];
+    edgeWeightsAt(scene_.targets[i], out.targets[k], targetMotion(i, t), importanceScale_,
+                  out.targetEdgeWeights[k]);
+  }
+}
+
+std::optional<geometry::Vec2> Kinematics::targetMotion(std::size_t i, double t) const {
+  const scene::MovingObject& target = scene_.targets[i];
+  if (!target.front) return std::nullopt;
+  const auto referenceAt = [&](double when) {
+    return pose(target, targetMotion_[i], when).reference;
+  };
+  return recentMotion(referenceAt, t, target.track ? target.track->start() : 0.0);
 }
 
 World Kinematics::worldAt(double t) const {

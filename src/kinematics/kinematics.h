@@ -56,9 +56,14 @@ class Kinematics {
   static void place(const scene::MovingObject& object, const Motion& motion, double t,
                     geometry::Ring& out);
 
+  // The direction of motion of target i at t (edge_importance.h), if it has a front.
+  std::optional<geometry::Vec2> targetMotion(std::size_t i, double t) const;
+
   scene::Scene scene_;  // a copy: small, and a Kinematics must not outlive what it describes
   std::vector<Motion> targetMotion_;
   std::vector<Motion> obstacleMotion_;
+  bool weighted_ = false;  // scene_.isWeighted()
+  double importanceScale_ = 1.0;
 };
 
 }  // namespace camcov::kinematics

@@ -17,6 +17,9 @@ struct World {
   // those absent at t (recorded tracks). Without tracks, 0, 1, 2, ...
   std::vector<std::uint32_t> targetIds;
   std::vector<std::uint32_t> obstacleIds;
+  // Importance weights (kinematics/edge_importance.h): targetEdgeWeights[i][e] of edge e of
+  // targets[i], each in [0, 1]. Empty in a scene without weights: every edge weighs 1.
+  std::vector<std::vector<double>> targetEdgeWeights;
 };
 
 // The scene's index of world target i (world obstacle i): a World made by hand has no ids.

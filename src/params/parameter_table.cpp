@@ -47,6 +47,11 @@ constexpr std::array kTable{
                                        "sensing radius: objects farther away add no repulsion, "
                                        "eq. (7); also the range of the executor's repulsive force",
                                        1e-6, kInf),
+    row<&P::reward, &RewardParams::weighted>(
+        "reward.weighted", "", "",
+        "our extension: coverage in the reward weighs each metre of target boundary by the "
+        "scene's importance weights (edgeWeights, frontWeight); false: every metre the same",
+        0, 1),
     row<&P::global, &GlobalParams::K>(
         "global.K", "K", "", "samples per camera in Algorithm 2; run time grows linearly", 1, 1e7),
     row<&P::global, &GlobalParams::T1>(

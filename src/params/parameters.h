@@ -11,6 +11,10 @@ struct RewardParams {
   double lambda2 = 0.2;  // λ2, weight of utilization eq. (5)
   double lambda3 = 1.0;  // λ3, weight of repulsion eq. (6)
   double d2 = 2.0;       // d2, m, sensing radius of invdist eq. (7)
+  // Our extension: coverage eq. (3) weighs each metre of target boundary by its importance
+  // (the scene's edgeWeights and frontWeight); off, every metre the same. No effect on a scene
+  // without weights.
+  bool weighted = true;
 };
 
 // Global optimization, Algorithm 2 and its trigger (section V-A).

@@ -22,9 +22,11 @@ geometry::Pose LocalOptimizer::compassStep(reward::RewardModel& model,
         team[j] = probe;
         const auto t = model.terms(team);
         const bool turn = axis == 2;
+        const double coverage = reward::coverageTerm(model.params(), t),
+                     bestCoverage = reward::coverageTerm(model.params(), bestTerms);
         if (t.reward > currentReward &&
-            (t.coverage > bestTerms.coverage ||
-             (turn && t.coverage == bestTerms.coverage && t.reward > bestTerms.reward))) {
+            (coverage > bestCoverage ||
+             (turn && coverage == bestCoverage && t.reward > bestTerms.reward))) {
           bestTerms = t;
           best = probe;
         }

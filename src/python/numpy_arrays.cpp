@@ -153,6 +153,7 @@ py::object jsonToPython(const nlohmann::json& value) {
 py::dict termsToDict(const reward::RewardTerms& terms) {
   py::dict d;
   d["coverage"] = terms.coverage;
+  d["weightedCoverage"] = terms.weightedCoverage;
   d["utilization"] = terms.utilization;
   d["repulsion"] = terms.repulsion;
   d["reward"] = terms.reward;

@@ -134,15 +134,17 @@ std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
 // The terms of every team as arrays (N,).
 py::dict termsToArrays(std::span<const reward::RewardTerms> terms) {
   const auto n = static_cast<py::ssize_t>(terms.size());
-  Array coverage(n), utilization(n), repulsion(n), reward(n);
+  Array coverage(n), weightedCoverage(n), utilization(n), repulsion(n), reward(n);
   for (py::ssize_t k = 0; k < n; ++k) {
     coverage.mutable_at(k) = terms[k].coverage;
+    weightedCoverage.mutable_at(k) = terms[k].weightedCoverage;
     utilization.mutable_at(k) = terms[k].utilization;
     repulsion.mutable_at(k) = terms[k].repulsion;
     reward.mutable_at(k) = terms[k].reward;
   }
   py::dict d;
   d["coverage"] = coverage;
+  d["weightedCoverage"] = weightedCoverage;
   d["utilization"] = utilization;
   d["repulsion"] = repulsion;
   d["reward"] = reward;

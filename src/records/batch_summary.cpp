@@ -166,7 +166,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
   m.scene = scene;
   m.method = method;
   m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
-  std::vector<double> utilization, finalCoverage;
+  std::vector<double> utilization, finalCoverage, weightedCoverage;
   std::vector<std::pair<double, std::uint64_t>> bySeed;
   for (const JobOutcome* job : jobs) {
     if (job->failed) {
@@ -178,6 +178,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
     coverage.push_back(s.averageCoverage);
     utilization.push_back(s.averageUtilization);
     if (!std::isnan(s.finalCoverage)) finalCoverage.push_back(s.finalCoverage);
+    if (s.averageWeightedCoverage) weightedCoverage.push_back(*s.averageWeightedCoverage);
     bySeed.push_back({s.averageCoverage, job->seed});
     m.meanObjectCollisionTime += s.objectCollisionTime;
     m.meanCameraCollisionTime += s.cameraCollisionTime;
@@ -203,6 +204,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
   m.coverage = describe(coverage);
   m.utilization = describe(utilization);
   m.finalCoverage = describe(finalCoverage);
+  m.weightedCoverage = describe(weightedCoverage);
   return m;
 }
 
@@ -374,6 +376,8 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"minCameraDistance", finiteOrNull(m.minCameraDistance)},
                             {"medianSeed", m.medianSeed},
                             {"bestSeed", m.bestSeed}});
+    if (m.weightedCoverage.count > 0)
+      j["methods"].back()["averageWeightedCoverage"] = describeJson(m.weightedCoverage);
   }
   j["scenes"] = summary.scenes;
   j["reference"] = summary.reference;
@@ -460,6 +464,8 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       ms.coverage = describedFrom(m.at("averageCoverage"));
       ms.utilization = describedFrom(m.at("averageUtilization"));
       if (m.contains("finalCoverage")) ms.finalCoverage = describedFrom(m.at("finalCoverage"));
+      if (m.contains("averageWeightedCoverage"))
+        ms.weightedCoverage = describedFrom(m.at("averageWeightedCoverage"));
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
       ms.runsWithCollision = m.at("runsWithCollision").get<int>();

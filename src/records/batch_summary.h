@@ -34,9 +34,12 @@ struct MethodSummary {
   std::string method;
   int runs = 0;
   int failed = 0;
-  Description coverage;                  // of the runs' average coverage, eq. (4)
-  Description utilization;               // of the runs' average utilization
-  Description finalCoverage;             // of the runs' coverage at the last step
+  Description coverage;       // of the runs' average coverage, eq. (4)
+  Description utilization;    // of the runs' average utilization
+  Description finalCoverage;  // of the runs' coverage at the last step
+  // Of the runs' average weighted coverage (sim::RunSummary): a weighted scene's; count 0
+  // elsewhere.
+  Description weightedCoverage;
   double meanObjectCollisionTime = 0.0;  // s below δ, mean over runs
   double meanCameraCollisionTime = 0.0;
   int runsWithCollision = 0;  // runs with any time below δ

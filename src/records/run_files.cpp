@@ -44,6 +44,10 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
   s.unavoidableContacts = j.at("unavoidableContacts").get<int>();
   s.boundaryClamps = j.at("boundaryClamps").get<int>();
   s.stepsWithoutTargets = j.value("stepsWithoutTargets", 0);
+  if (j.contains("averageWeightedCoverage"))
+    s.averageWeightedCoverage = j.at("averageWeightedCoverage").get<double>();
+  if (j.contains("finalWeightedCoverage"))
+    s.finalWeightedCoverage = j.at("finalWeightedCoverage").get<double>();
   return s;
 }
 
@@ -67,6 +71,9 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
                       {"boundaryClamps", s.boundaryClamps}};
   // Only recorded tracks leave a scene empty; other runs keep their bytes.
   if (s.stepsWithoutTargets > 0) j["stepsWithoutTargets"] = s.stepsWithoutTargets;
+  // Only weighted scenes have weighted coverage; the same.
+  if (s.averageWeightedCoverage) j["averageWeightedCoverage"] = *s.averageWeightedCoverage;
+  if (s.finalWeightedCoverage) j["finalWeightedCoverage"] = *s.finalWeightedCoverage;
   return j;
 }
 
@@ -121,6 +128,12 @@ nlohmann::json runToJson(const RunRecord& run) {
       goals[c].push_back(row.goals[c] ? pose(*row.goals[c]) : nlohmann::json());
     }
   }
+  // Weighted scenes' runs (RunSummary::averageWeightedCoverage) record weighted coverage too.
+  if (run.summary.averageWeightedCoverage) {
+    series["weightedCoverage"] = nlohmann::json::array();
+    for (const StepRow& row : run.steps)
+      series["weightedCoverage"].push_back(row.terms.weightedCoverage);
+  }
   // Scenes whose targets come and go (recorded tracks) say how many are present at each step.
   if (!run.steps.empty() && run.steps.front().targetsPresent >= 0) {
     series["targetsPresent"] = nlohmann::json::array();
@@ -169,9 +182,14 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     for (std::size_t k = 0; k < time.size(); ++k) {
       StepRow row;
       row.time = time.at(k).get<double>();
-      row.terms = {
-          series.at("coverage").at(k).get<double>(), series.at("utilization").at(k).get<double>(),
-          series.at("repulsion").at(k).get<double>(), series.at("reward").at(k).get<double>()};
+      row.terms.coverage = series.at("coverage").at(k).get<double>();
+      // Recorded for weighted scenes only; elsewhere the two are one.
+      row.terms.weightedCoverage = series.contains("weightedCoverage")
+                                       ? series.at("weightedCoverage").at(k).get<double>()
+                                       : row.terms.coverage;
+      row.terms.utilization = series.at("utilization").at(k).get<double>();
+      row.terms.repulsion = series.at("repulsion").at(k).get<double>();
+      row.terms.reward = series.at("reward").at(k).get<double>();
       row.minObjectDistance = numberOrInfinity(series.at("minObjectDistance").at(k));
       row.minCameraDistance = numberOrInfinity(series.at("minCameraDistance").at(k));
       row.minObjectDistanceInStep = numberOrInfinity(series.at("minObjectDistanceInStep").at(k));
@@ -224,6 +242,8 @@ std::string runToCsv(const RunRecord& run) {
       "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance,"
       "min_object_distance_in_step,min_camera_distance_in_step,avoidable_contact_time,"
       "unavoidable_contact_time";
+  const bool weighted = run.summary.averageWeightedCoverage.has_value();
+  if (weighted) csv += ",weighted_coverage";
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
   for (std::size_t c = 0; c < cameras; ++c)
     csv += fmt::format(",cam{0}_x,cam{0}_y,cam{0}_yaw", c);
@@ -234,6 +254,7 @@ std::string runToCsv(const RunRecord& run) {
                        row.minObjectDistance, row.minCameraDistance, row.minObjectDistanceInStep,
                        row.minCameraDistanceInStep, row.avoidableContactTime,
                        row.unavoidableContactTime);
+    if (weighted) csv += fmt::format(",{}", row.terms.weightedCoverage);
     for (const auto& p : row.cameras)
       csv += fmt::format(",{},{},{}", p.x, p.y, p.yaw);
     csv += '\n';

@@ -77,8 +77,9 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
   teamSeen_ = 0.0;
   for (const visibility::Segment& s : model.segments()) {
     if (s.visibleBy == 0) continue;
-    const double seen = visibility::length(s);
-    edges_[occluders.targetEdgeOffset(s.target) + s.edge].unseen -= seen;
+    const std::uint32_t e = occluders.targetEdgeOffset(s.target) + s.edge;
+    const double seen = model.rewardWeight(e) * visibility::length(s);
+    edges_[e].unseen -= seen;
     teamSeen_ += seen;
   }
   for (Target& t : targets_) {
@@ -113,7 +114,7 @@ void AddedCameraBound::takeInstant(const RewardModel& model) {
     Edge& edge = edges_[e];
     edge.a = occluders.targetEdgeStart(e);
     edge.b = occluders.targetEdgeEnd(e);
-    edge.length = geometry::distance(edge.a, edge.b);
+    edge.length = model.rewardWeight(e) * geometry::distance(edge.a, edge.b);
     edge.hasTwins = false;
   }
   for (std::uint32_t piece = 0; piece < occluders.pieceCount(); ++piece) {
@@ -144,7 +145,7 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
     }
     angles += fine ? std::min(disc, edgeAngles) : disc;
   }
-  const double coverage = coverageOf(teamSeen_ + gain, model_->perimeter());
+  const double coverage = coverageOf(teamSeen_ + gain, model_->rewardPerimeter());
   const double cameraAngles = weight_ * std::min(2.0 * halfFov_, angles);
   const double utilization =
       (teamAngles_ + cameraAngles) / (2.0 * theta0_) / static_cast<double>(team_.size() + 1);

@@ -5,7 +5,8 @@
 // samples score well below the best.
 //
 // The added camera q, with half-angle θ_q, at the team's instant:
-//  - coverage, eq. (3): q adds at most what the team leaves unseen of the target edges q may
+//  - coverage, eq. (3), weighted as the reward weighs it: q adds at most what the team leaves
+//    unseen (times each edge's weight) of the target edges q may
 //    see — those of targets whose disc (about their box's centre) meets q's field of view,
 //    facing q (a point on an edge's solid side sees nothing of it, as the sweep decides).
 //    Occlusion is ignored.
@@ -57,8 +58,8 @@ class AddedCameraBound {
   };
   struct Edge {
     geometry::Vec2 a, b;
-    double length = 0.0;
-    double unseen = 0.0;    // its length less what the team sees of it
+    double length = 0.0;    // times its weight in the reward (RewardModel::rewardWeight)
+    double unseen = 0.0;    // its length less what the team sees of it, weighted the same
     bool hasTwins = false;  // shared with another ring: the sweep keeps it whatever the side
   };
 

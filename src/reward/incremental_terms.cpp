@@ -51,7 +51,7 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
                                                    visibility::Sweep& sweep,
                                                    std::span<const geometry::Pose> cameras,
                                                    std::span<const scene::Lens> lenses,
-                                                   double perimeter) {
+                                                   const Lengths& lengths) {
   if (occluders.buildId() != build_) reset(occluders);
   const std::size_t kept = cameras_.size();
   for (std::size_t j = cameras.size(); j < kept; ++j)
@@ -71,8 +71,12 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
   for (const std::uint32_t e : dirty_) {
     Edge& edge = edges_[e];
     visible_.subtract(edge.length);
-    edge.length = unionLength(occluders, e);
+    weighted_.subtract(edge.weighted);
+    const UnionLength now = unionLength(occluders, e, lengths.weights);
+    edge.length = now.plain;
+    edge.weighted = now.weighted;
     visible_.add(edge.length);
+    weighted_.add(edge.weighted);
     edge.dirty = false;
   }
   dirty_.clear();
@@ -80,7 +84,13 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
   angles_.clear();
   for (const Camera& c : cameras_)
     angles_.push_back(c.angles);
-  return {coverageOf(visible_.value(), perimeter), utilizationOf(angles_, lenses)};
+  Terms t;
+  t.coverage = coverageOf(visible_.value(), lengths.perimeter);
+  t.weightedCoverage = lengths.weights.empty()
+                           ? t.coverage
+                           : coverageOf(weighted_.value(), lengths.weightedPerimeter);
+  t.utilization = utilizationOf(angles_, lenses);
+  return t;
 }
 
 void IncrementalTerms::reset(const visibility::Occluders& occluders) {
@@ -88,10 +98,11 @@ void IncrementalTerms::reset(const visibility::Occluders& occluders) {
   cameras_.clear();
   dirty_.clear();
   visible_ = {};
+  weighted_ = {};
   edges_.resize(occluders.targetEdgeCount());
   for (Edge& e : edges_) {
     e.seenBy.clear();  // keeps its buffer
-    e.length = 0;
+    e.length = e.weighted = 0;
     e.dirty = false;
   }
 }
@@ -137,17 +148,22 @@ void IncrementalTerms::markDirty(std::uint32_t edge) {
   dirty_.push_back(edge);
 }
 
-FixedPointSum::Units IncrementalTerms::unionLength(const visibility::Occluders& occluders,
-                                                   std::uint32_t edge) {
+IncrementalTerms::UnionLength IncrementalTerms::unionLength(const visibility::Occluders& occluders,
+                                                            std::uint32_t edge,
+                                                            std::span<const double> weights) {
   const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
-  if (a == b) return 0;  // a repeated vertex: S has no segment there
+  if (a == b) return {};  // a repeated vertex: S has no segment there
   const auto& seenBy = edges_[edge].seenBy;
-  FixedPointSum::Units total = 0;
+  const double w = weights.empty() ? 1.0 : weights[edge];
+  UnionLength total;
+  // Run by run, as weightedVisibleLength() adds S's runs.
   forEachRun(
       std::span<const Interval>(seenBy), [](const Interval&) { return 0; },
       [&](int, double lo, double hi) {
-        total += FixedPointSum::units(
-            geometry::distance(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi)));
+        const double length =
+            geometry::distance(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi));
+        total.plain += FixedPointSum::units(length);
+        if (!weights.empty()) total.weighted += FixedPointSum::units(w * length);
       });
   return total;
 }

@@ -8,7 +8,8 @@
 //  - utilization: per camera, the angles of the runs it sees — its own sweep alone decides
 //    them, so they are kept with the camera and summed over the cameras, O(M);
 //  - vis(S): per target edge, the length of the union of every camera's intervals on it —
-//    kept per edge in a fixed-point sum, which a changed edge updates exactly, O(1).
+//    kept per edge in a fixed-point sum, which a changed edge updates exactly, O(1); and the
+//    same with each run's length times its edge's importance weight.
 // A call sweeps the cameras whose pose or θ changed (Sweep keeps their last sweeps), takes
 // their angles, and measures again the union of the edges their intervals leave or reach. The
 // terms are those of reward::coverage() and reward::utilization() on S, to the bit
@@ -33,15 +34,22 @@ class IncrementalTerms {
  public:
   struct Terms {
     double coverage = 0.0;
+    double weightedCoverage = 0.0;
     double utilization = 0.0;
   };
+  // The targets' edges at the instant: their perimeter, and where weighted, each global edge's
+  // weight (Occluders numbering) and their weighted perimeter (weightedPerimeter()).
+  struct Lengths {
+    double perimeter = 0.0;
+    std::span<const double> weights;  // empty: every edge 1
+    double weightedPerimeter = 0.0;
+  };
 
-  // The terms of `cameras` (camera j with lens lenses[j]) at the instant of
-  // `occluders`, whose targets' perimeter is `perimeter`. `sweep` answers the sweeps; a new
-  // arrangement (Occluders::buildId()) starts afresh.
+  // The terms of `cameras` (camera j with lens lenses[j]) at the instant of `occluders`.
+  // `sweep` answers the sweeps; a new arrangement (Occluders::buildId()) starts afresh.
   Terms evaluate(const visibility::Occluders& occluders, visibility::Sweep& sweep,
                  std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses,
-                 double perimeter);
+                 const Lengths& lengths);
 
  private:
   struct Camera {
@@ -55,9 +63,13 @@ class IncrementalTerms {
     double lo, hi;
   };
   struct Edge {
-    std::vector<Interval> seenBy;     // every camera's intervals on this edge
-    FixedPointSum::Units length = 0;  // of their union
+    std::vector<Interval> seenBy;       // every camera's intervals on this edge
+    FixedPointSum::Units length = 0;    // of their union
+    FixedPointSum::Units weighted = 0;  // the same, each run's length times the edge's weight
     bool dirty = false;
+  };
+  struct UnionLength {
+    FixedPointSum::Units plain = 0, weighted = 0;
   };
 
   void reset(const visibility::Occluders& occluders);
@@ -65,13 +77,15 @@ class IncrementalTerms {
            std::span<const visibility::SeenInterval> seen);
   void leave(std::uint32_t camera);
   void markDirty(std::uint32_t edge);
-  FixedPointSum::Units unionLength(const visibility::Occluders& occluders, std::uint32_t edge);
+  UnionLength unionLength(const visibility::Occluders& occluders, std::uint32_t edge,
+                          std::span<const double> weights);
 
   std::uint64_t build_ = 0;  // Occluders::buildId() of what is kept; 0: nothing
   std::vector<Camera> cameras_;
   std::vector<Edge> edges_;
   std::vector<std::uint32_t> dirty_;
-  FixedPointSum visible_;  // vis(S): Σ over edges of their union's length
+  FixedPointSum visible_;   // vis(S): Σ over edges of their union's length
+  FixedPointSum weighted_;  // the same weighted
   std::vector<double> angles_;
 };
 

@@ -19,10 +19,9 @@ bool sameEdge(const visibility::Segment& a, const visibility::Segment& b) {
   return a.target == b.target && a.edge == b.edge;
 }
 
-}  // namespace
-
-double visibleLength(std::span<const visibility::Segment> segments) {
-  FixedPointSum total;
+// Calls f(first, last) for each run of consecutive seen segments of one edge.
+template <class F>
+void forEachSeenRun(std::span<const visibility::Segment> segments, F&& f) {
   const visibility::Segment* first = nullptr;  // of the run of seen segments being walked
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& s = segments[i];
@@ -31,10 +30,30 @@ double visibleLength(std::span<const visibility::Segment> segments) {
     const bool runGoesOn =
         i + 1 < segments.size() && segments[i + 1].visibleBy != 0 && sameEdge(s, segments[i + 1]);
     if (!runGoesOn) {
-      total.add(FixedPointSum::units(geometry::distance(first->a, s.b)));
+      f(*first, s);
       first = nullptr;
     }
   }
+}
+
+}  // namespace
+
+double visibleLength(std::span<const visibility::Segment> segments) {
+  FixedPointSum total;
+  forEachSeenRun(segments, [&](const visibility::Segment& first, const visibility::Segment& last) {
+    total.add(FixedPointSum::units(geometry::distance(first.a, last.b)));
+  });
+  return total.value();
+}
+
+double weightedVisibleLength(std::span<const visibility::Segment> segments,
+                             const std::vector<std::vector<double>>& weights) {
+  if (weights.empty()) return visibleLength(segments);
+  FixedPointSum total;
+  forEachSeenRun(segments, [&](const visibility::Segment& first, const visibility::Segment& last) {
+    const double w = weights[first.target][first.edge];
+    total.add(FixedPointSum::units(w * geometry::distance(first.a, last.b)));
+  });
   return total.value();
 }
 
@@ -42,6 +61,19 @@ double targetPerimeter(const kinematics::World& world) {
   double total = 0.0;
   for (const auto& target : world.targets)
     total += geometry::perimeter(target);
+  return total;
+}
+
+double weightedPerimeter(const kinematics::World& world) {
+  if (world.targetEdgeWeights.empty()) return targetPerimeter(world);
+  double total = 0.0;
+  for (std::size_t i = 0; i < world.targets.size(); ++i) {
+    const geometry::Ring& ring = world.targets[i];
+    double length = 0.0;  // as geometry::perimeter() adds them
+    for (std::size_t e = 0, n = ring.size(); e < n; ++e)
+      length += world.targetEdgeWeights[i][e] * geometry::distance(ring[e], ring[(e + 1) % n]);
+    total += length;
+  }
   return total;
 }
 

@@ -13,11 +13,22 @@
 namespace camcov::reward {
 
 struct RewardTerms {
-  double coverage = 0.0;     // eq. (3), in [0, 1]
+  double coverage = 0.0;  // eq. (3), in [0, 1]: length seen over length
+  // eq. (3) with each metre weighted by its importance (World::targetEdgeWeights): weighted
+  // length seen over weighted length. Equal to coverage in a world without weights.
+  double weightedCoverage = 0.0;
   double utilization = 0.0;  // eq. (5), in [0, 1]
   double repulsion = 0.0;    // eq. (6), >= 0
-  double reward = 0.0;       // eq. (8): λ1·coverage + λ2·utilization − λ3·repulsion
+  double reward = 0.0;       // eq. (8): λ1·coverage + λ2·utilization − λ3·repulsion, with
+                             // the coverage coverageTerm() picks
 };
+
+// The coverage the reward eq. (8) takes: weighted unless the parameters say plain. Utilization
+// and repulsion are not weighted: one measures how much of a camera's view holds targets at
+// all, the other keeps cameras off objects, and neither is about what of a target is seen.
+inline double coverageTerm(const params::RewardParams& p, const RewardTerms& t) {
+  return p.weighted ? t.weightedCoverage : t.coverage;
+}
 
 // How the sums of eq. (2) and (5) are taken, so that the optimizers' incremental terms
 // (incremental_terms.h) give the same numbers to the bit as these functions on S:
@@ -33,6 +44,12 @@ struct RewardTerms {
 double visibleLength(std::span<const visibility::Segment> segments);
 // length(∂T): sum of the targets' perimeters.
 double targetPerimeter(const kinematics::World& world);
+// vis(S) and length(∂T) with each edge's length times its weight (weights[target][edge],
+// World::targetEdgeWeights), summed as their plain forms are: with every weight 1 the same to
+// the bit. Empty weights: the plain forms.
+double weightedVisibleLength(std::span<const visibility::Segment> segments,
+                             const std::vector<std::vector<double>>& weights);
+double weightedPerimeter(const kinematics::World& world);
 // Coverage, eq. (3). 0 when the targets have no boundary length.
 double coverage(std::span<const visibility::Segment> segments, double perimeter);
 // The same from vis(S).

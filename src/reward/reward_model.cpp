@@ -13,6 +13,10 @@ RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
 void RewardModel::setWorld(const kinematics::World& world) {
   world_ = world;
   perimeter_ = targetPerimeter(world_);
+  weightedPerimeter_ = weightedPerimeter(world_);
+  weights_.clear();  // in the order of the targets' edges, as Occluders numbers them
+  for (const std::vector<double>& w : world_.targetEdgeWeights)
+    weights_.insert(weights_.end(), w.begin(), w.end());
   objectBoxes_ = reward::objectBoxes(world_);
   // A new arrangement, unless this model alone holds its last one: then its buffers are reused.
   if (!occluders_ || occluders_.use_count() > 1)
@@ -24,6 +28,8 @@ void RewardModel::setWorld(const kinematics::World& world) {
 void RewardModel::setInstant(const RewardModel& measured) {
   world_ = measured.world_;
   perimeter_ = measured.perimeter_;
+  weights_ = measured.weights_;
+  weightedPerimeter_ = measured.weightedPerimeter_;
   objectBoxes_ = measured.objectBoxes_;
   occluders_ = measured.occluders_;
   sweep_.keepSweepsOf(measured.sweep_);
@@ -34,20 +40,30 @@ RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
   sweep_.segments(*occluders_, cameras, lenses_, segments_);
   RewardTerms t;
   t.coverage = coverage(segments_, perimeter_);
+  t.weightedCoverage = weights_.empty()
+                           ? t.coverage
+                           : coverageOf(weightedVisibleLength(segments_, world_.targetEdgeWeights),
+                                        weightedPerimeter_);
   t.utilization = utilization(segments_, cameras, lenses_);
   t.repulsion = repulsion(world_, objectBoxes_, cameras, params_.d2);
-  t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
+  t.reward = combine(params_, coverageTerm(params_, t), t.utilization, t.repulsion);
   return t;
 }
 
 RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
-  const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, lenses_, perimeter_);
+  const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, lenses_,
+                                          {perimeter_, weights_, weightedPerimeter_});
   RewardTerms t;
   t.coverage = kept.coverage;
+  t.weightedCoverage = kept.weightedCoverage;
   t.utilization = kept.utilization;
   t.repulsion = repulsion_.evaluate(world_, objectBoxes_, cameras, params_.d2);
-  t.reward = combine(params_, t.coverage, t.utilization, t.repulsion);
+  t.reward = combine(params_, coverageTerm(params_, t), t.utilization, t.repulsion);
   return t;
+}
+
+double RewardModel::rewardPerimeter() const {
+  return params_.weighted && !weights_.empty() ? weightedPerimeter_ : perimeter_;
 }
 
 void RewardModel::visibilityPolygon(geometry::Vec2 point, geometry::Ring& out) {

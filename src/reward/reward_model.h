@@ -3,6 +3,7 @@
 // planner call it thousands of times per step, so the per-instant work (the occluder
 // arrangement, the perimeter) is done once in setWorld() and every buffer is reused.
 // One RewardModel per thread.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -36,6 +37,14 @@ class RewardModel {
   const scene::Lens& lens(std::size_t camera) const { return lenses_[camera]; }
   // length(∂T) at this instant, and the bounding box of every target, then of every obstacle.
   double perimeter() const { return perimeter_; }
+  // What the reward's coverage (coverageTerm()) divides by, and each target edge's part in it
+  // (global numbering, Occluders::targetEdgeOffset): the weighted perimeter and the edges'
+  // importance weights, or the plain perimeter and 1 when the world or the parameters are
+  // unweighted.
+  double rewardPerimeter() const;
+  double rewardWeight(std::uint32_t globalEdge) const {
+    return params_.weighted && !weights_.empty() ? weights_[globalEdge] : 1.0;
+  }
   std::span<const geometry::Box> objectBoxes() const { return objectBoxes_; }
   const params::RewardParams& params() const { return params_; }
 
@@ -57,6 +66,8 @@ class RewardModel {
   std::vector<scene::Lens> lenses_;
   kinematics::World world_;
   double perimeter_ = 0.0;
+  std::vector<double> weights_;  // World::targetEdgeWeights by global edge; empty: unweighted
+  double weightedPerimeter_ = 0.0;
   std::vector<geometry::Box> objectBoxes_;            // for repulsion()
   std::shared_ptr<visibility::Occluders> occluders_;  // shared by setInstant()
   visibility::Sweep sweep_;

@@ -63,15 +63,12 @@ geometry::Pose moved(const geometry::Pose& pose, const CameraCommand& u, double 
 }
 
 nlohmann::json describeCamera(const CameraSpec& camera) {
-  // Degrees come back from radians a bit off (a file's 30 reads back 29.999999999999996):
-  // rounded to 1e-9°, far below anything a camera's pose or lens can tell apart.
-  const auto degrees = [](double radians) { return roundTo(geometry::radToDeg(radians), 1e9); };
   nlohmann::json j{{"x", camera.initial.x},
                    {"y", camera.initial.y},
-                   {"angle", degrees(camera.initial.yaw)},
+                   {"angle", writtenDegrees(camera.initial.yaw)},
                    {"maxVelocity", camera.maxVelocity},
                    {"maxAngularVelocity", camera.maxAngularVelocity},
-                   {"cameraFoV", degrees(camera.lens.halfFov)}};
+                   {"cameraFoV", writtenDegrees(camera.lens.halfFov)}};
   if (camera.lens.limited()) j["sensingRange"] = camera.lens.range;
   return j;
 }

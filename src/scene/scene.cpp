@@ -16,6 +16,11 @@ bool Scene::hasPresenceWindows() const {
          std::any_of(obstacles.begin(), obstacles.end(), tracked);
 }
 
+bool Scene::isWeighted() const {
+  return std::any_of(targets.begin(), targets.end(),
+                     [](const MovingObject& o) { return o.isWeighted(); });
+}
+
 bool Scene::holdsStill() const {
   const auto isStatic = [](const MovingObject& o) { return o.isStatic(); };
   return std::all_of(targets.begin(), targets.end(), isStatic) &&

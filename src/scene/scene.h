@@ -41,6 +41,15 @@ struct Track {
   bool presentAt(double t) const { return t >= start() && t <= end(); }
 };
 
+// Our extension (the paper's future work, section VII): a target's front, the edges facing
+// where it is going, counts `weight` times as much. An edge is in front when its outward normal
+// lies within `halfAngle` of the direction of motion, which is estimated from the present and
+// the past only (kinematics/edge_importance.h).
+struct FrontWeighting {
+  double weight = 1.0;     // "frontWeight", >= 0
+  double halfAngle = 0.0;  // rad, "frontAngle" in degrees in the file, in (0, 180°]
+};
+
 // A target or an obstacle.
 struct MovingObject {
   geometry::Ring shape;              // local coordinates about the reference point, CCW
@@ -52,6 +61,12 @@ struct MovingObject {
   std::optional<Deformation> deformation;
   std::optional<Track> track;  // recorded motion instead of the path (our extension)
   std::string color;           // "#rrggbb" to draw it in (e.g. a team's), empty: the default
+  // Targets only (our extension): how much each metre of edge i of `shape` (vertex i to i + 1
+  // of the normalised, counter-clockwise ring) counts in coverage, >= 0; empty: every edge 1.
+  std::vector<double> edgeWeights;
+  std::optional<FrontWeighting> front;
+
+  bool isWeighted() const { return !edgeWeights.empty() || front.has_value(); }
 
   bool isStatic() const {
     return path.size() == 1 && angularVelocity == 0.0 && !deformation.has_value() &&
@@ -86,6 +101,9 @@ struct Scene {
   // `camcov validate` to print.
   std::vector<std::string> warnings;
 
+  // Some target's edges are weighted (MovingObject::isWeighted): its records carry weighted
+  // coverage beside the plain one.
+  bool isWeighted() const;
   // Some object comes and goes (a recorded track): its records carry targetsPresent.
   bool hasPresenceWindows() const;
   // Nothing in it moves, turns, deforms or comes and goes (isStatic): the cameras face one

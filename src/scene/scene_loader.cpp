@@ -258,12 +258,66 @@ std::string colour(const Node& node) {
   return text;
 }
 
-MovingObject movingObject(const Node& node) {
-  node.object({"shape", "path", "velocity", "angularVelocity", "deformation", "track", "color"});
+// An importance weight: finite, >= 0, at most kMaxWeight.
+double weight(const Node& node, const char* what) {
+  const double w = node.number();
+  if (w < 0.0 || w > kMaxWeight)
+    node.fail(fmt::format("{} must lie in [0, {}], is {}", what, kMaxWeight, w));
+  return w;
+}
+
+// "edgeWeights": one weight per edge of the shape as written (edge i from vertex i to i + 1),
+// returned in the order of the normalised ring's edges.
+std::vector<double> edgeWeights(const Node& node, const Node& shapeNode) {
+  geometry::Ring written = shapeNode.wktRing();
+  if (written.size() > 1 && written.front() == written.back()) written.pop_back();
+  const std::size_t n = written.size(), count = node.arraySize();
+  if (count != n)
+    node.fail(fmt::format("needs one weight per edge of the shape: {}, has {}", n, count));
+  std::vector<double> weights;
+  for (std::size_t i = 0; i < n; ++i)
+    weights.push_back(weight(node.element(i), "an edge weight"));
+  if (std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0.0; }))
+    node.fail("every edge weight is 0: the target would count for nothing (make it an obstacle)");
+  // normalizeRing() reversed a clockwise ring: its edge k is the written edge n − 2 − k.
+  if (geometry::signedArea(written) < 0.0) {
+    std::reverse(weights.begin(), weights.end());
+    std::rotate(weights.begin(), weights.begin() + 1, weights.end());
+  }
+  return weights;
+}
+
+FrontWeighting front(const Node& object) {
+  FrontWeighting f;
+  f.weight = weight(object.child("frontWeight"), "frontWeight");
+  double degrees = kDefaultFrontAngle;
+  if (object.has("frontAngle")) {
+    const Node angle = object.child("frontAngle");
+    degrees = angle.number();
+    if (degrees <= 0.0 || degrees > 180.0)
+      angle.fail(fmt::format("frontAngle must be in (0, 180] degrees, is {}°", degrees));
+  }
+  f.halfAngle = geometry::degToRad(degrees);
+  return f;
+}
+
+// `isTarget`: importance weights are allowed (obstacles are not covered).
+MovingObject movingObject(const Node& node, bool isTarget) {
+  node.object({"shape", "path", "velocity", "angularVelocity", "deformation", "track", "color",
+               "edgeWeights", "frontWeight", "frontAngle"});
   MovingObject object;
   const Node shapeNode = node.child("shape");
   object.shape = simpleRing(shapeNode);
   if (node.has("color")) object.color = colour(node.child("color"));
+  for (const char* key : {"edgeWeights", "frontWeight", "frontAngle"}) {
+    if (!isTarget && node.has(key))
+      node.child(key).fail("an obstacle is not covered, so it has no importance weights");
+  }
+  if (node.has("frontAngle") && !node.has("frontWeight"))
+    node.child("frontAngle").fail("frontAngle needs frontWeight");
+  if (node.has("edgeWeights"))
+    object.edgeWeights = edgeWeights(node.child("edgeWeights"), shapeNode);
+  if (node.has("frontWeight")) object.front = front(node);
   if (node.has("track")) {
     // Recorded motion replaces the loop: the two cannot be mixed.
     for (const char* key : {"path", "velocity", "angularVelocity", "deformation"}) {
@@ -330,10 +384,10 @@ class Problems {
   std::vector<PlacementDefect> found_;
 };
 
-std::vector<MovingObject> objects(const Node& node, Problems& problems) {
+std::vector<MovingObject> objects(const Node& node, Problems& problems, bool isTarget) {
   std::vector<MovingObject> result;
   for (std::size_t i = 0, n = node.arraySize(); i < n; ++i)
-    problems.attempt([&] { result.push_back(movingObject(node.element(i))); });
+    problems.attempt([&] { result.push_back(movingObject(node.element(i), isTarget)); });
   return result;
 }
 
@@ -421,11 +475,11 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   problems.attempt([&] {
     const Node targets = root.child("targets");
     const std::size_t written = targets.arraySize();
-    scene.targets = objects(targets, problems);
+    scene.targets = objects(targets, problems, true);
     if (written == 0) targets.fail("a scene needs at least one target");
   });
   problems.attempt([&] {
-    if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"), problems);
+    if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"), problems, false);
   });
 
   // A camera without its own field of view takes the scene's; if that is bad, the cameras

@@ -20,6 +20,12 @@ inline constexpr double kMaxSpeed = 1e4;       // m/s and rad/s, every velocity,
 // Beyond ±1e6 degrees (2,778 turns) a yaw in double precision has lost its fraction of a
 // degree: such a number is a mistake, not an angle.
 inline constexpr double kMaxYawDegrees = 1e6;
+// Importance weights ("edgeWeights", "frontWeight") are relative: at most 1e6 times each other.
+inline constexpr double kMaxWeight = 1e6;
+// A target's front without "frontAngle": the edges whose outward normal is within 60° of the
+// direction of motion — the face and chest of a person, not the flanks, which a camera at the
+// side sees only at a grazing angle (docs/scene-format.md, "Importance weights").
+inline constexpr double kDefaultFrontAngle = 60.0;
 
 // Zero-length edges, zero area, self-intersections. Empty string for a simple polygon.
 std::string describeRingDefect(const geometry::Ring& ring);

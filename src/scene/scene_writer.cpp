@@ -20,6 +20,13 @@ std::string wktPoint(geometry::Vec2 p) {
 nlohmann::json objectJson(const MovingObject& object) {
   nlohmann::json j{{"shape", wktPolygon(object.shape)}};
   if (!object.color.empty()) j["color"] = object.color;
+  // In the order of the ring written above (normalised, counter-clockwise), as the loader keeps
+  // them.
+  if (!object.edgeWeights.empty()) j["edgeWeights"] = object.edgeWeights;
+  if (object.front) {
+    j["frontWeight"] = object.front->weight;
+    j["frontAngle"] = writtenDegrees(object.front->halfAngle);
+  }
   if (object.track) {
     const Track& track = *object.track;
     nlohmann::json samples = nlohmann::json::array();

@@ -43,6 +43,11 @@ struct WrittenScene {
 inline double roundTo(double v, double perUnit) {
   return std::round(v * perUnit) / perUnit + 0.0;
 }
+// An angle in radians as a file's degrees: they come back a bit off (a file's 30 reads back
+// 29.999999999999996), so rounded to 1e-9°, far below anything a pose or lens can tell apart.
+inline double writtenDegrees(double radians) {
+  return roundTo(geometry::radToDeg(radians), 1e9);
+}
 // To the millimetre, as the generators and importers write coordinates.
 inline double mm(double v) {
   return roundTo(v, 1e3);

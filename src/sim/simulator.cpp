@@ -138,6 +138,7 @@ Simulation::Simulation(const scene::Scene& scene, const params::Parameters& para
   s.contacts.resize(cameras_.size());
   s.summary.duration = steps_ * s.dt;
   s.summary.minObjectDistance = s.summary.minCameraDistance = kInf;
+  if (scene.isWeighted()) s.summary.averageWeightedCoverage = 0.0;
   measure();
 }
 
@@ -190,6 +191,10 @@ void Simulation::measure() {
       // trapezoid rule, eq. (4)
       const double dt = s.dt;
       summary.averageCoverage += 0.5 * (s.previous.coverage + record.terms.coverage) * dt;
+      if (summary.averageWeightedCoverage) {
+        *summary.averageWeightedCoverage +=
+            0.5 * (s.previous.weightedCoverage + record.terms.weightedCoverage) * dt;
+      }
       summary.averageUtilization += 0.5 * (s.previous.utilization + record.terms.utilization) * dt;
       summary.averageReward += 0.5 * (s.previous.reward + record.terms.reward) * dt;
     }
@@ -282,17 +287,22 @@ RunSummary Simulation::summary() const {
   summary.finalCoverage = s.previous.coverage;
   // Without gaps this is steps · dt exactly, so runs without tracks keep their bytes.
   const double measured = (steps_ - s.intervalsWithoutTargets) * s.dt;
+  auto& weighted = summary.averageWeightedCoverage;
   if (measured > 0.0) {
     summary.averageCoverage /= measured;
     summary.averageUtilization /= measured;
     summary.averageReward /= measured;
+    if (weighted) *weighted /= measured;
   } else if (summary.duration > 0.0) {
     summary.averageCoverage = summary.averageUtilization = summary.averageReward = 0.0;
+    if (weighted) weighted = 0.0;
   } else {
     summary.averageCoverage = s.previous.coverage;
     summary.averageUtilization = s.previous.utilization;
     summary.averageReward = s.previous.reward;
+    if (weighted) weighted = s.previous.weightedCoverage;
   }
+  if (weighted) summary.finalWeightedCoverage = s.previous.weightedCoverage;
   return summary;
 }
 

@@ -50,6 +50,10 @@ struct RunSummary {
   // Coverage at the last step, t = duration: where the team ended up (the report sets it
   // against the offline optimum of a scene that holds still).
   double finalCoverage = 0.0;
+  // The same two with importance weights (RewardTerms::weightedCoverage), for a scene that has
+  // them (scene::Scene::isWeighted); none otherwise, so such runs' records stay as they were.
+  std::optional<double> averageWeightedCoverage;
+  std::optional<double> finalWeightedCoverage;
   // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.
   double minObjectDistance = 0.0;  // over the whole run, m
   double minCameraDistance = 0.0;

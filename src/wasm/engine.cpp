@@ -58,6 +58,7 @@ std::string inspect(const std::string& sceneText, const std::string& name, doubl
                        {"repulsion", terms.repulsion},
                        {"reward", terms.reward},
                        {"targetPerimeter", camcov::reward::targetPerimeter(model.world())}};
+    if (scene.isWeighted()) out["weightedCoverage"] = terms.weightedCoverage;
     out["cameras"] = nlohmann::json::array();
     for (unsigned j = 0; j < cameras.size(); ++j)
       out["cameras"].push_back({{"visibleLength", camcov::reward::visibleLengthOf(segments, j)}});

@@ -18,7 +18,9 @@ RunRecord sampleRun() {
   for (int k = 0; k < 2; ++k) {
     StepRow row;
     row.time = 0.1 * k;
-    row.terms = {0.2 + k * 0.1, 0.5, 0.0, 0.3};
+    row.terms.coverage = row.terms.weightedCoverage = 0.2 + k * 0.1;
+    row.terms.utilization = 0.5;
+    row.terms.reward = 0.3;
     row.minObjectDistance = 2.5;
     row.minCameraDistance = std::numeric_limits<double>::infinity();
     row.minObjectDistanceInStep = 2.25;

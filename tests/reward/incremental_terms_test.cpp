@@ -73,7 +73,7 @@ TEST(IncrementalTerms, EqualTheTermsOfSToTheBitOverLongSequencesOfProbes) {
     for (int call = 0; call < 400; ++call) {
       if (call == 200) occluders.build(randomWorld(random));  // a new instant
       afresh.segments(occluders, caller.team, caller.thetas, s);
-      const auto t = terms.evaluate(occluders, kept, caller.team, caller.thetas, 37.0);
+      const auto t = terms.evaluate(occluders, kept, caller.team, caller.thetas, {37.0, {}, 37.0});
       expectSameBits(coverage(s, 37.0), t.coverage, "coverage");
       expectSameBits(utilization(s, caller.team, caller.thetas), t.utilization, "utilization");
       if (HasFailure()) return;

@@ -94,6 +94,15 @@ const BadCase kBadCases[] = {
     {"track_outside_boundary", "targets[0].track.samples[1]", "outside the boundary"},
     {"color_not_hex", "targets[0].color", "#rrggbb"},
     {"pitch_negative_length", "pitch.length", "must be positive"},
+    // Importance weights (docs/scene-format.md, "Importance weights").
+    {"weights_negative", "targets[0].edgeWeights[1]", "must lie in [0, 1000000], is -0.5"},
+    {"weights_wrong_count", "targets[0].edgeWeights", "one weight per edge of the shape: 4, has 3"},
+    {"weights_not_number", "targets[0].edgeWeights[1]", "expected a number, found string"},
+    {"weights_all_zero", "targets[0].edgeWeights", "every edge weight is 0"},
+    {"weights_on_obstacle", "obstacles[0].edgeWeights", "an obstacle is not covered"},
+    {"front_weight_negative", "targets[0].frontWeight", "must lie in [0, 1000000]"},
+    {"front_angle_without_weight", "targets[0].frontAngle", "frontAngle needs frontWeight"},
+    {"front_angle_out_of_range", "targets[0].frontAngle", "(0, 180] degrees, is 270°"},
 };
 
 class BadScene : public ::testing::TestWithParam<BadCase> {};
