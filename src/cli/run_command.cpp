@@ -46,6 +46,11 @@ int run(const RunOptions& o) {
       "objects {:.3f} m; closer than δ {:.2f} s avoidable, {:.2f} s unavoidable\n  -> {}\n",
       record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization, s.duration,
       s.minObjectDistance, s.avoidableContactTime, s.unavoidableContactTime, file.string());
+  if (s.averageWeightedCoverage) {
+    std::cout << fmt::format("  average weighted coverage {:.4f} (the reward's{})\n",
+                             *s.averageWeightedCoverage,
+                             job.parameters.reward.weighted ? "" : " is plain: reward.weighted=false");
+  }
   if (!o.video.empty()) {
     viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,
                        viz::runVideoSettings(record));

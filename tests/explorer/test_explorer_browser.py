@@ -668,3 +668,42 @@ def test_small_objects_are_drawn_enlarged_and_ringed_and_a_large_teams_views_lig
     assert opacity[1] == {0.28}
     assert len(opacity[8]) == 1 and opacity[8].pop() == pytest.approx(1 - 0.17 ** (1 / 8))
     assert_no_console_errors(explorer)
+
+
+def test_a_weighted_scene_shows_weighted_coverage_and_edges_as_wide_as_important(
+        explorer, camcov, tmp_path):
+    """tiny_dynamic with importance weights on its first target (docs/scene-format.md,
+    "Importance weights"): the panel shows the run's weighted coverage beside the plain one, a
+    clicked edge its weight as `camcov inspect --json` gives it, and the heavier edges are drawn
+    wider, as the frames draw them."""
+    scene = json.loads(SCENE.read_text())
+    edges = scene["targets"][0]["shape"].count(",") + 1
+    scene["targets"][0]["edgeWeights"] = [4] + [1] * (edges - 1)
+    scene_file = tmp_path / "weighted.json"
+    scene_file.write_text(json.dumps(scene))
+    run_file, run = record_run(camcov, tmp_path / "runs", "paper", scene_file, 2)
+    series = run["series"]
+    assert "weightedCoverage" in series
+    page = write_explorer(camcov, [run_file], tmp_path / "weighted.html")
+    explorer.open(page)
+    k = step_nearest(run, 1.0)
+    explorer.seek(k)
+    shown = explorer.text(".weighted-coverage", within=explorer.run(0))
+    assert_shows_fraction(shown, series["weightedCoverage"][k], "weighted coverage")
+    assert_shows_fraction(explorer.text(".coverage", within=explorer.run(0)),
+                          series["coverage"][k], "plain coverage")
+    assert "wider edge: more important" in explorer.driver.find_element(By.ID, "legend").text
+    reference = inspect_step(camcov, run, k, tmp_path, scene_file)
+    widths = {}
+    for i, segment in enumerate(reference["segments"]):
+        element = explorer.world(0).find_element(By.CSS_SELECTOR, f'.segment[data-segment="{i}"]')
+        widths.setdefault(segment["weight"], set()).add(float(element.get_attribute("stroke-width")))
+    # The heaviest edge (weight 4 of 4) 1.6 times the plain 5 px, the others (1 of 4) 0.7 times.
+    assert [pytest.approx(w) for w in sorted(widths[1.0])] == [5 * 1.6], widths
+    assert [pytest.approx(w) for w in sorted(widths[0.25])] == [5 * 0.7], widths
+    heavy = next(i for i, s in enumerate(reference["segments"]) if s["weight"] == 1.0)
+    explorer.click(explorer.world(0).find_element(By.CSS_SELECTOR,
+                                                  f'.segment[data-segment="{heavy}"]'))
+    explorer.wait_for(lambda: explorer.field(0, "weight"), lambda text: first_number(text) == 1.0,
+                      "the importance weight of a clicked edge")
+    assert_no_console_errors(explorer)

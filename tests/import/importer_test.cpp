@@ -95,6 +95,30 @@ TEST(ImportLastRow, PlayersAreTeamColouredDiscsAtTheScaledRecordedPositions) {
   EXPECT_EQ(ball["obstacles"][0]["track"]["samples"].size(), 6u);
 }
 
+TEST(ImportLastRow, PlayersHaveAFrontTheBallDoesNot) {
+  const ScratchDir dir;
+  const std::string csv = (kTracks / "lastrow_extract.csv").string();
+  const nlohmann::json scene = importScene("lastrow " + csv + " --ball target", dir / "f.json");
+  int fronts = 0;
+  for (const auto& target : scene["targets"]) {
+    if (!target.contains("frontWeight")) continue;
+    EXPECT_EQ(target["frontWeight"], 2.0) << "the default";
+    EXPECT_EQ(target["frontAngle"], 60.0);
+    ++fronts;
+  }
+  EXPECT_EQ(fronts, 2) << "the two players, not the ball";
+  const nlohmann::json chosen =
+      importScene("lastrow " + csv + " --front-weight 5 --front-angle 30", dir / "g.json");
+  EXPECT_EQ(chosen["targets"][0]["frontWeight"], 5.0);
+  EXPECT_EQ(chosen["targets"][0]["frontAngle"], 30.0);
+  const nlohmann::json none = importScene("lastrow " + csv + " --front-weight 1", dir / "h.json");
+  EXPECT_FALSE(none["targets"][0].contains("frontWeight")) << "1: no front";
+  const auto bad = runCamcov("import lastrow " + csv + " --front-angle 0 -o " +
+                             (dir / "i.json").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir / "i.json"));
+}
+
 TEST(ImportEthUcy, PedestriansEnterAndLeaveWallsBecomeObstaclesAndTheWindowCuts) {
   const ScratchDir dir;
   const fs::path out = dir / "zara.json";

@@ -310,5 +310,32 @@ TEST(Report, RecordedPeopleHaveTheirOwnGroupAndThePeoplePresentOverTime) {
   EXPECT_EQ(countOf(series, "aria-label=\"people present over time, comes_and_goes\""), 1);
 }
 
+// A weighted scene's rows give the average weighted coverage under the plain one, as the
+// batch summary records it; a scene without weights has none.
+TEST(Report, AWeightedScenesRowsShowItsWeightedCoverageToo) {
+  const ScratchDir dir;
+  const std::string scenes = (ownScenesDir() / "weighted_stage_and_walkers.json").string() + " " +
+                             (ownScenesDir() / "fig1_example.json").string();
+  const auto r = runCamcov("bench --scenes " + scenes + " --methods local --seeds 2 --duration 3 " +
+                           "--videos none --explorer none --optimum-budget 0 --out " +
+                           (dir / "results").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto summary = nlohmann::json::parse(readFile(dir / "results" / "summary.json"));
+  std::string expected;
+  for (const auto& m : summary["methods"]) {
+    if (m["scene"] == "fig1_example") {
+      EXPECT_FALSE(m.contains("averageWeightedCoverage"));
+      continue;
+    }
+    const auto& w = m.at("averageWeightedCoverage");
+    EXPECT_EQ(w["count"], 2);
+    expected = fmt::format("weighted {:.3f} ± {:.3f}", w["mean"].get<double>(),
+                           w["sd"].get<double>());
+  }
+  const std::string table = section(readFile(dir / "results" / "report.html"), "summary");
+  EXPECT_EQ(countOf(table, expected), 1) << expected;
+  EXPECT_EQ(countOf(table, ">weighted "), 1) << "fig1_example has no weighted line";
+}
+
 }  // namespace
 }  // namespace camcov::testing

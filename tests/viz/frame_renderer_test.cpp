@@ -131,6 +131,33 @@ TEST_F(TinyFrame, ATargetTooSmallToMakeOutIsDrawnEnlargedAndRinged) {
   EXPECT_GT(ringed, 8) << "ringed with dots";
 }
 
+// A weighted scene's edges are as wide as they are important, and its panel has a row for
+// weighted coverage and a legend row for the widths.
+TEST_F(TinyFrame, AWeightedWorldsEdgesAreAsWideAsImportant) {
+  const auto seenWidth = [&](double weight, const char* file) {
+    frame_.world.targetEdgeWeights.clear();
+    for (const geometry::Ring& ring : frame_.world.targets)
+      frame_.world.targetEdgeWeights.emplace_back(ring.size(), weight);
+    frame_.caption.weightedCoverage = frame_.caption.coverage;
+    ScratchDir dir;
+    writeAndLoad(dir / file);
+    // Green pixels on the row through the seen left edge of the square (x = 1).
+    int green = 0;
+    for (double x = 0.5; x <= 1.5; x += 0.002) {
+      const Colour c = at({x, 0.0});
+      if (c.g > c.r + 0.3 && c.g > c.b + 0.3) ++green;
+    }
+    return green;
+  };
+  const int heavy = seenWidth(1.0, "heavy.png"), light = seenWidth(0.0, "light.png");
+  EXPECT_GT(heavy, 3 * light) << "1.6 against 0.4 times the plain width";
+  const FrameLayout layout = renderer_.layoutOf(frame_);
+  EXPECT_EQ(layout.rows.caption, 6) << "time, coverage, utilization, weighted coverage";
+  EXPECT_EQ(layout.rows.legend, 8) << "and what the widths mean";
+  frame_.caption.weightedCoverage.reset();
+  EXPECT_EQ(renderer_.layoutOf(frame_).rows.legend, 7);
+}
+
 // A title wider than the panel is made smaller, then cut with an ellipsis: the panel's right
 // margin stays the page's colour, never the title's clipped glyphs.
 TEST_F(TinyFrame, ATitleWiderThanThePanelIsFittedNotClipped) {
