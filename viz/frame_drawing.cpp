@@ -28,9 +28,10 @@ constexpr double kPitchLineWidth = 0.08;
 bool weighted(const Caption& caption) {
   return caption.weightedCoverage.has_value();
 }
+constexpr int kPlainCaptionRows = 5;  // title, subtitle, time, coverage, utilization
 PanelRows panelRows(const Caption& caption) {
   const int more = weighted(caption) ? 1 : 0;
-  return {5 + more, static_cast<int>(std::size(kLegendEntries)) + more};
+  return {kPlainCaptionRows + more, static_cast<int>(std::size(kLegendEntries)) + more};
 }
 Legend legendEntry(int row) {
   return row < static_cast<int>(std::size(kLegendEntries)) ? kLegendEntries[row]
@@ -279,18 +280,28 @@ void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
   cairo_restore(cr);
 }
 
-// The caption rows that change every frame: time, coverage, utilization, and a weighted
-// scene's weighted coverage.
-enum MovingRow { kTimeRow = 2, kCoverageRow = 3, kUtilizationRow = 4, kWeightedRow = 5 };
-constexpr MovingRow kMovingRows[] = {kTimeRow, kCoverageRow, kUtilizationRow, kWeightedRow};
-// Those the layout has (FrameLayout::rows).
-bool hasRow(const FrameLayout& layout, MovingRow row) {
-  return row < layout.rows.caption;
+// The caption rows that change every frame, under the title and subtitle: time, coverage, a
+// weighted scene's weighted coverage (when the layout has a row for it: panelRows()), and
+// utilization.
+enum class MovingRow { Time, Coverage, Weighted, Utilization };
+struct PlacedRow {
+  MovingRow what;
+  int row;  // caption row
+};
+std::vector<PlacedRow> movingRows(const FrameLayout& layout) {
+  const bool weighted = layout.rows.caption > kPlainCaptionRows;
+  std::vector<PlacedRow> rows;
+  for (const MovingRow what :
+       {MovingRow::Time, MovingRow::Coverage, MovingRow::Weighted, MovingRow::Utilization}) {
+    if (what == MovingRow::Weighted && !weighted) continue;
+    rows.push_back({what, 2 + static_cast<int>(rows.size())});
+  }
+  return rows;
 }
 
 // A moving row's whole pixels (half an em to the left of its text, for overhanging glyphs),
 // inside the panel.
-PixelRect movingRowArea(const FrameLayout& layout, MovingRow row) {
+PixelRect movingRowArea(const FrameLayout& layout, int row) {
   const Vec2 topLeft = layout.captionRow(row) - Vec2{0.5 * layout.em, 0.0};
   const PixelRect& panel = layout.panel;
   const double left = std::max(std::floor(topLeft.x), panel.x);
@@ -303,23 +314,21 @@ PixelRect movingRowArea(const FrameLayout& layout, MovingRow row) {
 // Each moving row clipped to its area, so that nothing of it lands outside movingAreas().
 void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
-  for (const MovingRow row : kMovingRows) {
-    if (!hasRow(layout, row)) continue;
-    clippedTo(cr, movingRowArea(layout, row), [&] {
-      const Vec2 baseline = rowBaseline(layout.captionRow(row), em);
-      switch (row) {
-        case kTimeRow:
+  for (const PlacedRow& placed : movingRows(layout)) {
+    clippedTo(cr, movingRowArea(layout, placed.row), [&] {
+      const Vec2 baseline = rowBaseline(layout.captionRow(placed.row), em);
+      switch (placed.what) {
+        case MovingRow::Time:
           text(cr, baseline, fmt::format("t = {:.1f} s", caption.time), 0.95 * em, kText);
           break;
-        case kCoverageRow:
+        case MovingRow::Coverage:
           drawMeter(cr, baseline, "coverage", caption.coverage, kSeen, em);
           break;
-        case kUtilizationRow:
-          drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
+        case MovingRow::Weighted:
+          drawMeter(cr, baseline, "weighted", caption.weightedCoverage.value_or(0.0), kSeen, em);
           break;
-        case kWeightedRow:
-          drawMeter(cr, baseline, "weighted cov.", caption.weightedCoverage.value_or(0.0), kSeen,
-                    em);
+        case MovingRow::Utilization:
+          drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
           break;
       }
     });
@@ -331,9 +340,8 @@ void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& capt
 // Everything drawMoving() may touch: outside these a frame is its still part.
 std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
   std::vector<PixelRect> areas{layout.worldArea};
-  for (const MovingRow row : kMovingRows) {
-    if (hasRow(layout, row)) areas.push_back(movingRowArea(layout, row));
-  }
+  for (const PlacedRow& placed : movingRows(layout))
+    areas.push_back(movingRowArea(layout, placed.row));
   return areas;
 }
 

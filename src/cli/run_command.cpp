@@ -47,9 +47,9 @@ int run(const RunOptions& o) {
       record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization, s.duration,
       s.minObjectDistance, s.avoidableContactTime, s.unavoidableContactTime, file.string());
   if (s.averageWeightedCoverage) {
-    std::cout << fmt::format("  average weighted coverage {:.4f} (the reward's{})\n",
-                             *s.averageWeightedCoverage,
-                             job.parameters.reward.weighted ? "" : " is plain: reward.weighted=false");
+    std::cout << fmt::format(
+        "  average weighted coverage {:.4f} (the reward's{})\n", *s.averageWeightedCoverage,
+        job.parameters.reward.weighted ? "" : " is plain: reward.weighted=false");
   }
   if (!o.video.empty()) {
     viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,

@@ -146,8 +146,9 @@ void bindEnvironment(py::module_& m) {
       .def_property_readonly(
           "terms",
           [](const PythonEpisode& e) { return termsToDict(e.episode.observation().terms); },
-          "The team's reward terms now: coverage (eq. 3), utilization (5), repulsion (6), "
-          "reward (8).")
+          "The team's reward terms now: coverage (eq. 3), weightedCoverage (eq. 3 with the "
+          "scene's importance weights; coverage where it has none), utilization (5), "
+          "repulsion (6), reward (8).")
       .def(
           "own_terms",
           [](const PythonEpisode& e, std::size_t camera) {
@@ -306,7 +307,7 @@ void bindEnvironment(py::module_& m) {
             Array termArray({static_cast<py::ssize_t>(n), py::ssize_t{4}});
             auto t = termArray.mutable_unchecked<2>();
             for (std::size_t i = 0; i < n; ++i) {
-              t(i, 0) = terms[i].coverage;
+              t(i, 0) = reward::coverageTerm(stepped[i]->params().reward, terms[i]);
               t(i, 1) = terms[i].utilization;
               t(i, 2) = terms[i].repulsion;
               t(i, 3) = terms[i].reward;
@@ -315,7 +316,8 @@ void bindEnvironment(py::module_& m) {
           },
           py::arg("episodes"), py::arg("actions"), py::arg("sizes"),
           "Steps every episode with its row of actions (N, K, 3); returns their new "
-          "observations (N, size) float32 (team view) and terms (N, 4): coverage, "
+          "observations (N, size) float32 (team view) and terms (N, 4): coverage (as the "
+          "reward takes it: weighted where the scene has importance weights), "
           "utilization, repulsion, reward.");
 
   m.def(

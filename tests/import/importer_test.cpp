@@ -113,8 +113,8 @@ TEST(ImportLastRow, PlayersHaveAFrontTheBallDoesNot) {
   EXPECT_EQ(chosen["targets"][0]["frontAngle"], 30.0);
   const nlohmann::json none = importScene("lastrow " + csv + " --front-weight 1", dir / "h.json");
   EXPECT_FALSE(none["targets"][0].contains("frontWeight")) << "1: no front";
-  const auto bad = runCamcov("import lastrow " + csv + " --front-angle 0 -o " +
-                             (dir / "i.json").string());
+  const auto bad =
+      runCamcov("import lastrow " + csv + " --front-angle 0 -o " + (dir / "i.json").string());
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_FALSE(fs::exists(dir / "i.json"));
 }

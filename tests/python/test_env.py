@@ -312,3 +312,25 @@ def test_a_scenes_own_duration_is_the_episodes_unless_the_parameters_say(tiny):
             _, _, _, truncated, _ = env.step(np.zeros(env.action_space.shape))
             taken += 1
         assert taken == steps
+
+
+@pytest.mark.parametrize("weighted", [True, False])
+def test_the_coverage_reward_is_the_one_the_reward_takes_on_a_weighted_scene(weighted):
+    """On a scene with importance weights, reward="coverage" is the weighted coverage, or the
+    plain one with reward.weighted off, in the single and the vector form alike."""
+    scene = str(REPO / "scenes" / "weighted_stage_and_walkers.json")
+    params = {"sim.duration": 2.0, "reward.weighted": weighted}
+    single = E.CoverageEnv(scene, params=params, reward="coverage")
+    vector = E.VectorCoverageEnv(scene, 1, params=params, reward="coverage")
+    single.reset(seed=3)
+    vector.reset(seed=3)
+    rng = np.random.default_rng(1)
+    differ = False
+    for _ in range(10):
+        actions = rng.uniform(-1, 1, vector.action_space.shape)
+        _, reward, _, _, info = single.step(actions[0])
+        _, rewards, _, _, _ = vector.step(actions)
+        key = "weightedCoverage" if weighted else "coverage"
+        assert reward == info[key] and rewards[0] == reward
+        differ |= info["weightedCoverage"] != info["coverage"]
+    assert differ, "the scene's weights changed nothing"

@@ -52,7 +52,15 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SCOPED_TRACE(seed);
     testing::SplitMix64 random{seed};
-    const kinematics::World w = testing::randomWorld(random);
+    kinematics::World w = testing::randomWorld(random);
+    // Every other world with importance weights: the bound is of the reward as weighted.
+    if (seed % 2 == 0) {
+      for (const geometry::Ring& ring : w.targets) {
+        w.targetEdgeWeights.emplace_back();
+        for (std::size_t e = 0; e < ring.size(); ++e)
+          w.targetEdgeWeights.back().push_back(random.uniform(0.0, 1.0));
+      }
+    }
     const double theta = halfFovs[seed % halfFovs.size()];
     RewardModel model(params::RewardParams{}, {theta, 0.4, theta, 1.2, theta});
     model.setWorld(w);

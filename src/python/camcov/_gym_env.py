@@ -32,7 +32,8 @@ class CoverageEnv(gymnasium.Env):
     - params: parameter overrides as camcov.parameters takes them ({"sim.duration": 10}); the
       episode lasts sim.duration (truncation), in steps of sim.dt; the safety layer stays on.
     - reward: "reward" (eq. 8, λ1·coverage + λ2·utilization − λ3·repulsion) or "coverage"
-      (eq. 3), of the team at the instant the step reaches.
+      (eq. 3, as the reward takes it: weighted where the scene has importance weights), of the
+      team at the instant the step reaches.
     - observation: "vector" (float32, the fixed layout of docs/python.md, padded to the
       largest scene) or "image" (the frame camcov render draws, image_size, uint8 RGB).
     - action: (cameras, 3) float64: vx, vy (m/s), yaw rate (rad/s) per camera slot; rows of

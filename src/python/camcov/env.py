@@ -88,7 +88,11 @@ class Episodes:
             raise ValueError(f"reward: expected one of {self.REWARDS}, got {reward!r}")
         self.reward_term = reward
         self.params = dict(params or {})
-        camcov.parameters(self.params)  # bad keys or values raise here, not at the first reset
+        # Bad keys or values raise here, not at the first reset.
+        resolved = camcov.parameters(self.params)
+        # The coverage the reward takes: weighted by the scene's importance weights, if any,
+        # unless reward.weighted is off (where a scene has none, the two are equal).
+        self.coverage_key = "weightedCoverage" if resolved["reward"]["weighted"] else "coverage"
         sizes = np.zeros(4, dtype=np.int64)
         for s in self.scenes:
             sizes = np.maximum(sizes, camcov.encoding_sizes(s))
@@ -133,7 +137,8 @@ class Episodes:
 
     def reward(self, terms):
         """The step's reward from a dict of terms: the one chosen (eq. 8 or eq. 3)."""
-        return float(terms[self.reward_term])
+        key = self.coverage_key if self.reward_term == "coverage" else self.reward_term
+        return float(terms[key])
 
     def info(self, terms=None):
         """The step's info dict: time, scene, run seed, the terms; at the end the summary (the
@@ -141,7 +146,8 @@ class Episodes:
         episode = self.episode
         terms = episode.terms if terms is None else terms
         info = {"time": episode.time, "scene": episode.scene.name, "seed": self.seed,
-                "coverage": terms["coverage"], "utilization": terms["utilization"],
+                "coverage": terms["coverage"], "weightedCoverage": terms["weightedCoverage"],
+                "utilization": terms["utilization"],
                 "repulsion": terms["repulsion"], "reward": terms["reward"]}
         if episode.finished:
             episode.close()
