@@ -53,6 +53,9 @@ Registration addStateCommand(CLI::App& app) {
               const auto id = kinematics::targetId(world, i);
               out["targets"].push_back(object(kin.targetPose(id, *time), world.targets[i]));
               if (ids) out["targets"].back()["id"] = id;
+              // A weighted scene's: each edge's importance now (in [0, 1], the front included).
+              if (!world.targetEdgeWeights.empty())
+                out["targets"].back()["edgeWeights"] = world.targetEdgeWeights[i];
             }
             out["obstacles"] = nlohmann::json::array();
             for (std::size_t i = 0; i < world.obstacles.size(); ++i) {

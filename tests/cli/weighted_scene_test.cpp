@@ -85,5 +85,15 @@ TEST(WeightedScene, InspectsWeightedCoverageIsItsSegmentsWeightedSum) {
   EXPECT_NE(j["weightedCoverage"], j["coverage"]);
 }
 
+TEST(WeightedScene, StateGivesEachTargetsWeightsNowFrontIncluded) {
+  // At t = 3 s the first walker goes +x along y = −4: its two edges facing +x lead.
+  const auto r = runCamcov("state " + kScene.string() + " --time 3");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["targets"][0]["edgeWeights"], (nlohmann::json{1.0, 0.25, 0.25, 0.25}));
+  EXPECT_EQ(j["targets"][1]["edgeWeights"],
+            (nlohmann::json{0.75, 0.25, 0.25, 0.25, 0.25, 0.25, 0.25, 0.75}));
+}
+
 }  // namespace
 }  // namespace camcov::testing
