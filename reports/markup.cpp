@@ -63,4 +63,10 @@ std::string relativeUrl(const std::filesystem::path& file, const std::filesystem
   return url;
 }
 
+std::string scriptSafe(std::string text) {
+  for (auto at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
+    text.replace(at, 2, "<\\/");
+  return text;
+}
+
 }  // namespace camcov::reports

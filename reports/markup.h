@@ -27,6 +27,10 @@ double textWidth(std::string_view text, double fontSize);
 // An id attribute value from a prefix and a name: "ts-dynamic9"; other bytes become '_'.
 std::string anchorId(std::string_view prefix, std::string_view name);
 
+// Text for inside a <script> element (JSON or JavaScript): "</" becomes "<\/", which means the
+// same in a string, a regular expression or JSON and cannot end the element early.
+std::string scriptSafe(std::string text);
+
 // `file` relative to `fromDir`, with '/' separators and every byte outside the URL-safe set
 // percent-encoded: a relative URL for src and href attributes.
 std::string relativeUrl(const std::filesystem::path& file, const std::filesystem::path& fromDir);

@@ -141,16 +141,10 @@
       : code % 2 === 1 ? `target ${(code - 1) / 2}` : `obstacle ${(code - 2) / 2}`;
   const blockerName = (kind, index) =>
       kind === 1 ? "the boundary" : kind === 2 ? `target ${index}` : `obstacle ${index}`;
+  // The words of visibility::unseenPhrase, by UnseenKind, from the palette.
   function reasonText(code) {
     const kind = code % 8, rest = Math.floor(code / 8), blocker = rest % 4, index = Math.floor(rest / 4);
-    switch (kind) {
-      case 1: return "the camera is outside the boundary";
-      case 2: return `the camera is inside ${blockerName(blocker, index)}`;
-      case 3: return "behind its own target (the edge faces away or is seen edge-on)";
-      case 4: return "outside the field of view";
-      case 5: return `blocked by ${blockerName(blocker, index)}`;
-      default: return "in sight, but at the sweep's tolerance (a grazing case)";
-    }
+    return P.unseen[kind].replace("{blocker}", blockerName(blocker, index));
   }
 
   // ---- layout -------------------------------------------------------------------------------

@@ -218,33 +218,6 @@ nlohmann::json marksJson() {
   return marks;
 }
 
-nlohmann::json paletteJson() {
-  nlohmann::json legend = nlohmann::json::array();
-  for (const viz::Legend entry : viz::kLegendEntries)
-    legend.push_back(viz::legendText(entry));
-  return {{"page", viz::cssColour(viz::kPage)},
-          {"floor", viz::cssColour(viz::kFloor)},
-          {"wall", viz::cssColour(viz::kWall)},
-          {"obstacle", viz::cssColour(viz::kObstacle)},
-          {"target", viz::cssColour(viz::kTarget)},
-          {"seenBy",
-           {viz::cssColour(viz::seenByColour(0)), viz::cssColour(viz::seenByColour(1)),
-            viz::cssColour(viz::seenByColour(2)), viz::cssColour(viz::seenByColour(3))}},
-          {"view", viz::cssColour(viz::kView)},
-          {"viewAlpha", viz::kViewAlpha},
-          // importanceWidthFactor(w) = widthAtZero + widthPerWeight · w
-          {"widthAtZero", viz::importanceWidthFactor(0.0)},
-          {"widthPerWeight", viz::importanceWidthFactor(1.0) - viz::importanceWidthFactor(0.0)},
-          {"importance", viz::legendText(viz::Legend::Importance)},
-          {"camera", viz::cssColour(viz::kCamera)},
-          {"plan", viz::cssColour(viz::kPlan)},
-          {"objectPath", viz::cssColour(viz::kObjectPath)},
-          {"pitchLine", viz::cssColour(viz::kPitchLine)},
-          {"text", viz::cssColour(viz::kText)},
-          {"mutedText", viz::cssColour(viz::kMutedText)},
-          {"legend", legend}};
-}
-
 nlohmann::json ringJson(std::span<const Vec2> ring) {
   nlohmann::json out = nlohmann::json::array();
   for (const Vec2 p : ring)
@@ -263,6 +236,7 @@ nlohmann::json markingsJson(const scene::Scene& scene) {
 }
 
 // Each object's own colour (a team's), "" for the palette's.
+
 nlohmann::json colours(const std::vector<scene::MovingObject>& objects) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& o : objects)
@@ -338,7 +312,49 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
           {"steps", packed.base64()}};
 }
 
+// visibility::unseenPhrase of every UnseenKind, by its number (the packed reason's low bits).
+nlohmann::json unseenPhrases() {
+  using visibility::UnseenKind;
+  nlohmann::json out = nlohmann::json::array();
+  for (const UnseenKind kind :
+       {UnseenKind::InSight, UnseenKind::OutsideBoundary, UnseenKind::InsideObject,
+        UnseenKind::BehindItsTarget, UnseenKind::OutsideFieldOfView, UnseenKind::Blocked}) {
+    if (out.size() != static_cast<std::size_t>(kind))
+      throw std::logic_error("unseenPhrases: UnseenKind is not numbered in order");
+    out.push_back(visibility::unseenPhrase(kind));
+  }
+  return out;
+}
+
 }  // namespace
+
+nlohmann::json paletteJson() {
+  nlohmann::json legend = nlohmann::json::array();
+  for (const viz::Legend entry : viz::kLegendEntries)
+    legend.push_back(viz::legendText(entry));
+  return {{"page", viz::cssColour(viz::kPage)},
+          {"floor", viz::cssColour(viz::kFloor)},
+          {"wall", viz::cssColour(viz::kWall)},
+          {"obstacle", viz::cssColour(viz::kObstacle)},
+          {"target", viz::cssColour(viz::kTarget)},
+          {"seenBy",
+           {viz::cssColour(viz::seenByColour(0)), viz::cssColour(viz::seenByColour(1)),
+            viz::cssColour(viz::seenByColour(2)), viz::cssColour(viz::seenByColour(3))}},
+          {"view", viz::cssColour(viz::kView)},
+          {"viewAlpha", viz::kViewAlpha},
+          // importanceWidthFactor(w) = widthAtZero + widthPerWeight · w
+          {"widthAtZero", viz::importanceWidthFactor(0.0)},
+          {"widthPerWeight", viz::importanceWidthFactor(1.0) - viz::importanceWidthFactor(0.0)},
+          {"importance", viz::legendText(viz::Legend::Importance)},
+          {"unseen", unseenPhrases()},
+          {"camera", viz::cssColour(viz::kCamera)},
+          {"plan", viz::cssColour(viz::kPlan)},
+          {"objectPath", viz::cssColour(viz::kObjectPath)},
+          {"pitchLine", viz::cssColour(viz::kPitchLine)},
+          {"text", viz::cssColour(viz::kText)},
+          {"mutedText", viz::cssColour(viz::kMutedText)},
+          {"legend", legend}};
+}
 
 nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene) {
   nlohmann::json out = {

@@ -48,4 +48,9 @@ inline constexpr double kWeightUnits = 1e3;     // per unit of an edge's importa
 // fit the scene (viz::RunReplay's checks).
 nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene);
 
+// The frames' palette and wordings for a page's script (viz/palette.h): colours, the width of
+// weighted edges, the legend, and why an edge is unseen (visibility::unseenPhrase by
+// UnseenKind). The explorer's and the playground's.
+nlohmann::json paletteJson();
+
 }  // namespace camcov::reports::explorer

@@ -19,13 +19,6 @@ namespace {
 constexpr std::string_view kExplorerPolicy =
     "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'";
 
-// JSON inside <script>: "</" would end the element early.
-std::string scriptSafe(std::string json) {
-  for (auto at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3))
-    json.replace(at, 2, "<\\/");
-  return json;
-}
-
 }  // namespace
 
 std::string buildExplorerHtml(std::span<const records::RunRecord> runs, const scene::Scene& scene) {

@@ -21,11 +21,11 @@ std::vector<Registration> addCommands(CLI::App& app) {
   app.set_version_flag("--version", std::string("camcov ") + kVersion);
   app.require_subcommand(1);
   std::vector<Registration> commands{
-      addValidateCommand(app), addStateCommand(app),   addParamsCommand(app),
-      addInspectCommand(app),  addRunCommand(app),     addRenderCommand(app),
-      addVideoCommand(app),    addBenchCommand(app),   addMergeCommand(app),
-      addReportCommand(app),   addExploreCommand(app), addImportCommand(app),
-      addGenerateCommand(app), addOptimumCommand(app),
+      addValidateCommand(app), addStateCommand(app),    addParamsCommand(app),
+      addInspectCommand(app),  addRunCommand(app),      addRenderCommand(app),
+      addVideoCommand(app),    addBenchCommand(app),    addMergeCommand(app),
+      addReportCommand(app),   addExploreCommand(app),  addPlaygroundCommand(app),
+      addImportCommand(app),   addGenerateCommand(app), addOptimumCommand(app),
   };
   guardNumericOptions(app);
   return commands;

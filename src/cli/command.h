@@ -34,6 +34,7 @@ Registration addBenchCommand(CLI::App& app);
 Registration addMergeCommand(CLI::App& app);
 Registration addReportCommand(CLI::App& app);
 Registration addExploreCommand(CLI::App& app);
+Registration addPlaygroundCommand(CLI::App& app);
 Registration addImportCommand(CLI::App& app);
 Registration addGenerateCommand(CLI::App& app);
 Registration addOptimumCommand(CLI::App& app);

@@ -95,4 +95,42 @@ UnseenReason whyUnseen(const kinematics::World& world, const geometry::Pose& cam
   return reason;
 }
 
+const char* unseenPhrase(UnseenKind kind) {
+  switch (kind) {
+    case UnseenKind::OutsideBoundary:
+      return "the camera is outside the boundary";
+    case UnseenKind::InsideObject:
+      return "the camera is inside {blocker}";
+    case UnseenKind::BehindItsTarget:
+      return "behind its own target (the edge faces away or is seen edge-on)";
+    case UnseenKind::OutsideFieldOfView:
+      return "outside the field of view";
+    case UnseenKind::Blocked:
+      return "blocked by {blocker}";
+    case UnseenKind::InSight:
+      break;
+  }
+  return "in sight, but at the sweep's tolerance (a grazing case)";
+}
+
+std::string describeUnseen(const kinematics::World& world, const UnseenReason& reason) {
+  std::string blocker = "nothing";
+  switch (reason.blocker.kind) {
+    case ObjectRef::Kind::Boundary:
+      blocker = "the boundary";
+      break;
+    case ObjectRef::Kind::Target:
+      blocker = "target " + std::to_string(kinematics::targetId(world, reason.blocker.index));
+      break;
+    case ObjectRef::Kind::Obstacle:
+      blocker = "obstacle " + std::to_string(kinematics::obstacleId(world, reason.blocker.index));
+      break;
+    case ObjectRef::Kind::None:
+      break;
+  }
+  std::string text = unseenPhrase(reason.kind);
+  if (const auto at = text.find("{blocker}"); at != std::string::npos) text.replace(at, 9, blocker);
+  return text;
+}
+
 }  // namespace camcov::visibility

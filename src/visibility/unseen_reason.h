@@ -8,6 +8,7 @@
 // camera j wholly or not at all. O(n) in the scene's vertices: for clicks and per-step
 // explanations, not the sweep.
 #include <cstdint>
+#include <string>
 
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
@@ -40,6 +41,12 @@ struct UnseenReason {
   UnseenKind kind = UnseenKind::InSight;
   ObjectRef blocker;  // for InsideObject and Blocked
 };
+
+// The words for a reason, "{blocker}" standing for the blocker's name ("target 2"): one wording
+// for the explorer (which fills the blocker in its page) and the playground.
+const char* unseenPhrase(UnseenKind kind);
+// The phrase with the blocker named as the scene numbers it (World ids, not ring indices).
+std::string describeUnseen(const kinematics::World& world, const UnseenReason& reason);
 
 // Why the camera at `camera` with `lens` does not see segment `s` of S(world): s.target and
 // s.edge name the edge it lies on.

@@ -15,6 +15,9 @@
 #include "reward/reward_model.h"
 #include "scene/camera_poses_file.h"
 #include "scene/scene_loader.h"
+#include "visibility/sweep.h"
+#include "visibility/sweep_trace.h"
+#include "visibility/unseen_reason.h"
 
 namespace {
 
@@ -70,7 +73,167 @@ std::string inspect(const std::string& sceneText, const std::string& name, doubl
       }
       out["segments"].push_back({{"target", camcov::kinematics::targetId(model.world(), s.target)},
                                  {"edge", s.edge},
+                                 {"a", {s.a.x, s.a.y}},
+                                 {"b", {s.b.x, s.b.y}},
                                  {"visibleBy", seenBy}});
+    }
+    return out.dump();
+  } catch (const std::exception& error) {
+    return failure(error).dump();
+  }
+}
+
+nlohmann::json points(std::span<const camcov::geometry::Vec2> ring) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& v : ring)
+    out.push_back({v.x, v.y});
+  return out;
+}
+
+nlohmann::json tracedEdge(const camcov::kinematics::World& world,
+                          const camcov::visibility::TracedEdge& e) {
+  using Kind = camcov::visibility::TracedEdge::Kind;
+  if (e.kind == Kind::None) return nullptr;
+  if (e.kind == Kind::Wedge) return {{"wedge", true}};
+  using camcov::visibility::RingKind;
+  const std::string ring = e.ring == RingKind::Boundary ? "boundary"
+                           : e.ring == RingKind::Target ? "target"
+                                                        : "obstacle";
+  const std::uint32_t owner =
+      e.ring == RingKind::Target     ? camcov::kinematics::targetId(world, e.owner)
+      : e.ring == RingKind::Obstacle ? camcov::kinematics::obstacleId(world, e.owner)
+                                     : 0;
+  return {{"ring", ring},
+          {"owner", owner},
+          {"edge", e.edge},
+          {"a", {e.a.x, e.a.y}},
+          {"b", {e.b.x, e.b.y}}};
+}
+
+// Everything the visibility playground draws at one instant: the world, each camera's field
+// of view, S with who sees each segment and why each other camera does not, the terms of the
+// team and of each camera alone, and (traceCamera ≥ 0) that camera's sweep event by event.
+// {"error": the validator's words} for a scene or poses camcov would refuse.
+std::string explain(const std::string& sceneText, const std::string& name, double time,
+                    const std::string& posesText, int traceCamera) {
+  try {
+    namespace cc = camcov;
+    const cc::scene::Scene scene = cc::scene::parseScene(sceneText, name);
+    std::vector<Pose> cameras;
+    if (posesText.empty()) {
+      for (const auto& c : scene.cameras)
+        cameras.push_back(c.initial);
+    } else {
+      cameras = cc::scene::parseCameraPoses(posesText, "poses");
+    }
+    if (cameras.size() != scene.cameras.size())
+      throw std::invalid_argument("poses: one pose per camera of the scene");
+    const std::vector<cc::scene::Lens> lenses = cc::scene::lenses(scene);
+    const cc::params::Parameters p;
+    cc::reward::RewardModel model(p.reward, lenses);
+    const cc::kinematics::Kinematics kinematics(scene);
+    model.setWorld(kinematics.worldAt(time));
+    const cc::kinematics::World& world = model.world();
+    const cc::reward::RewardTerms terms = model.evaluate(cameras);
+    const std::vector<cc::visibility::Segment> segments(model.segments().begin(),
+                                                        model.segments().end());
+    const auto termsJson = [&](const cc::reward::RewardTerms& t) {
+      nlohmann::json j{{"coverage", t.coverage},
+                       {"utilization", t.utilization},
+                       {"repulsion", t.repulsion},
+                       {"reward", t.reward}};
+      if (scene.isWeighted()) j["weightedCoverage"] = t.weightedCoverage;
+      return j;
+    };
+    nlohmann::json out{{"time", time}, {"terms", termsJson(terms)}};
+    out["boundary"] = points(world.boundary);
+    out["targets"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < world.targets.size(); ++i) {
+      const std::uint32_t id = cc::kinematics::targetId(world, i);
+      const cc::kinematics::ObjectPose pose = kinematics.targetPose(id, time);
+      // Where its shape's frame is now: a page that moves a vertex edits the shape through it.
+      out["targets"].push_back({{"id", id},
+                                {"ring", points(world.targets[i])},
+                                {"reference", {pose.reference.x, pose.reference.y}},
+                                {"angle", pose.angle}});
+      if (!world.targetEdgeWeights.empty())
+        out["targets"].back()["weights"] = world.targetEdgeWeights[i];
+    }
+    out["obstacles"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+      const std::uint32_t id = cc::kinematics::obstacleId(world, i);
+      const cc::kinematics::ObjectPose pose = kinematics.obstaclePose(id, time);
+      out["obstacles"].push_back({{"id", id},
+                                  {"ring", points(world.obstacles[i])},
+                                  {"reference", {pose.reference.x, pose.reference.y}},
+                                  {"angle", pose.angle}});
+    }
+    // Each camera: its field of view, and its terms alone (the team's terms of a team of one
+    // that sees what it sees, with the others' repulsion).
+    cc::visibility::Sweep sweep;
+    cc::geometry::Ring view;
+    out["cameras"] = nlohmann::json::array();
+    for (std::size_t j = 0; j < cameras.size(); ++j) {
+      sweep.fieldOfViewPolygon(model.occluders(), cameras[j], lenses[j], view);
+      std::vector<cc::visibility::Segment> own;
+      for (cc::visibility::Segment s : segments) {
+        if ((s.visibleBy >> j & 1u) == 0) continue;
+        s.visibleBy = 1;
+        own.push_back(s);
+      }
+      cc::reward::RewardTerms t;
+      t.coverage = cc::reward::coverage(own, model.perimeter());
+      t.weightedCoverage =
+          cc::reward::coverageOf(cc::reward::weightedVisibleLength(own, world.targetEdgeWeights),
+                                 cc::reward::weightedPerimeter(world));
+      t.utilization =
+          cc::reward::utilization(own, std::span(&cameras[j], 1), std::span(&lenses[j], 1));
+      t.repulsion = cc::reward::repulsion(world, std::span(&cameras[j], 1), p.reward.d2);
+      t.reward = cc::reward::combine(p.reward, cc::reward::coverageTerm(p.reward, t), t.utilization,
+                                     t.repulsion);
+      out["cameras"].push_back({{"pose", {cameras[j].x, cameras[j].y, cameras[j].yaw}},
+                                {"halfFov", lenses[j].halfFov},
+                                {"view", points(view)},
+                                {"visibleLength", cc::reward::visibleLengthOf(segments, j)},
+                                {"terms", termsJson(t)}});
+    }
+    out["segments"] = nlohmann::json::array();
+    for (const auto& s : segments) {
+      nlohmann::json seenBy = nlohmann::json::array(), reasons = nlohmann::json::array();
+      for (unsigned j = 0; j < cameras.size(); ++j) {
+        if ((s.visibleBy >> j & 1u) != 0) {
+          seenBy.push_back(j);
+          reasons.push_back(nullptr);
+        } else {
+          reasons.push_back(cc::visibility::describeUnseen(
+              world, cc::visibility::whyUnseen(world, cameras[j], lenses[j], s)));
+        }
+      }
+      out["segments"].push_back({{"target", cc::kinematics::targetId(world, s.target)},
+                                 {"edge", s.edge},
+                                 {"a", {s.a.x, s.a.y}},
+                                 {"b", {s.b.x, s.b.y}},
+                                 {"visibleBy", seenBy},
+                                 {"reasons", reasons}});
+    }
+    if (traceCamera >= 0 && static_cast<std::size_t>(traceCamera) < cameras.size()) {
+      cc::visibility::SweepTrace trace;
+      sweep.trace(model.occluders(), cameras[traceCamera], lenses[traceCamera], trace);
+      nlohmann::json events = nlohmann::json::array();
+      for (const auto& e : trace.events) {
+        events.push_back({{"ray", e.ray},
+                          {"point", {e.point.x, e.point.y}},
+                          {"angle", e.angle},
+                          {"inserted", e.inserted},
+                          {"removed", e.removed},
+                          {"front", tracedEdge(world, e.frontAfter)},
+                          {"inFov", e.inFovAfter},
+                          {"hit", {e.hitAfter.x, e.hitAfter.y}}});
+      }
+      out["trace"] = {{"camera", traceCamera},
+                      {"blind", trace.blind},
+                      {"front", tracedEdge(world, trace.frontBefore)},
+                      {"events", events}};
     }
     return out.dump();
   } catch (const std::exception& error) {
@@ -83,4 +246,5 @@ std::string inspect(const std::string& sceneText, const std::string& name, doubl
 EMSCRIPTEN_BINDINGS(camcov_engine) {
   emscripten::function("validate", &validate);
   emscripten::function("inspect", &inspect);
+  emscripten::function("explain", &explain);
 }
