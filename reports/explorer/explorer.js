@@ -190,11 +190,15 @@
     const utilization = html("b", {class: "utilization"}, "", numbers);
     html("span", {}, " · reward ", numbers);
     const reward = html("b", {class: "reward"}, "", numbers);
+    // This step in the visibility playground (camcov explore --playground), if there is one.
+    const playground = data.playground
+        ? html("a", {class: "playground"}, "open this step in the playground", numbers) : null;
     const world = el("svg", {class: "world", viewBox, role: "img",
                              "aria-label": `${data.scene.name}, ${run.label}`}, section);
     const info = html("div", {class: "info", "aria-live": "polite"}, null, section);
     html("p", {class: "hint"}, "Click an edge or a camera for its details.", info);
-    return {run, section, coverage, weighted, utilization, reward, world, info, selection: null};
+    return {run, section, coverage, weighted, utilization, reward, playground, world, info,
+            selection: null};
   });
 
   // The legend, from the palette the frames use (viz/palette.h).
@@ -452,6 +456,12 @@
       const series = panel.run.series, at = Math.min(k, series.time.length - 1);
       panel.coverage.textContent = series.coverage[at].toFixed(4);
       if (panel.weighted) panel.weighted.textContent = series.weightedCoverage[at].toFixed(4);
+      if (panel.playground) {
+        const step = panel.run.decoded[Math.min(k, panel.run.decoded.length - 1)];
+        const poses = step.cameras.map((c) => ({x: c.x, y: c.y, yaw_deg: c.yaw * 180 / Math.PI}));
+        panel.playground.href = `${data.playground}#t=${series.time[at]}` +
+                                `&poses=${encodeURIComponent(JSON.stringify(poses))}`;
+      }
       panel.utilization.textContent = series.utilization[at].toFixed(4);
       panel.reward.textContent = series.reward[at].toFixed(4);
       drawWorld(panel, k);

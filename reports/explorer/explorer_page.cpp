@@ -21,8 +21,11 @@ constexpr std::string_view kExplorerPolicy =
 
 }  // namespace
 
-std::string buildExplorerHtml(std::span<const records::RunRecord> runs, const scene::Scene& scene) {
+std::string buildExplorerHtml(std::span<const records::RunRecord> runs, const scene::Scene& scene,
+                              const std::string& playgroundUrl) {
   if (runs.empty()) throw InputError("no run to explore");
+  nlohmann::json data = explorerData(runs, scene);
+  if (!playgroundUrl.empty()) data["playground"] = playgroundUrl;
   std::vector<std::string> labels;
   for (const auto& run : runs)
     labels.push_back(fmt::format("{} seed {}", run.metadata.method, run.metadata.seed));
@@ -51,17 +54,23 @@ std::string buildExplorerHtml(std::span<const records::RunRecord> runs, const sc
              "<script type=\"application/json\" id=\"camcov-data\">{}</script>\n"
              "<script>{}</script>\n</body>\n</html>\n",
              escapeXml(scene.name), escapeXml(join(labels, ", ")), runs.front().steps.back().time,
-             escapeXml(kVersion), scriptSafe(explorerData(runs, scene).dump()), explorerScript());
+             escapeXml(kVersion), scriptSafe(data.dump()), explorerScript());
 }
 
 void writeExplorer(const std::vector<std::filesystem::path>& runFiles,
-                   const std::filesystem::path& out, const std::filesystem::path& sceneFile) {
+                   const std::filesystem::path& out, const std::filesystem::path& sceneFile,
+                   const std::filesystem::path& playgroundPage) {
   std::vector<records::RunRecord> runs;
   for (const auto& file : runFiles)
     runs.push_back(records::loadRunFile(file));
   if (runs.empty()) throw InputError("no run to explore");
   const viz::RunScene scene = viz::loadRunScene(runs.front().metadata, sceneFile);
-  records::writeFileAtomically(out, buildExplorerHtml(runs, scene.scene));
+  const std::string playgroundUrl =
+      playgroundPage.empty()
+          ? std::string()
+          : relativeUrl(std::filesystem::absolute(playgroundPage),
+                        std::filesystem::absolute(out).parent_path());
+  records::writeFileAtomically(out, buildExplorerHtml(runs, scene.scene, playgroundUrl));
 }
 
 }  // namespace camcov::reports::explorer

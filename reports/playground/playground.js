@@ -3,7 +3,7 @@
 // and SVG drawn from its answer. Nothing is computed here but where things go on screen.
 // DOM contract for tests: body[data-ready|data-busy], #message, #terms [data-term], #cameras
 // tr[data-camera] [data-term], svg#world (g.camera[data-camera], .handle[data-ring|data-vertex],
-// .segment[data-segment]), #edge, #sweep (#sweep-back, #sweep-forward, #sweep-step), #time,
+// .segment.selected[data-segment]: a click on an edge selects its segment), #edge, #sweep (#sweep-back, #sweep-forward, #sweep-step), #time,
 // #fov, #export, #export-scene, #export-poses, #export-command.
 "use strict";
 (async () => {
@@ -16,7 +16,20 @@
   const scene = data.scene;  // edited in place: what export writes
   let poses = data.poses.map((p) => ({...p}));  // {x, y, yaw_deg}, one per camera
   let time = data.time;
+  // A link may say the instant and the poses (the explorer's "open this step"):
+  // #t=SECONDS&poses=[{"x":..,"y":..,"yaw_deg":..}, ...], one per camera.
+  const asked = new URLSearchParams(location.hash.slice(1));
+  if (asked.has("t") && Number.isFinite(Number(asked.get("t")))) time = Number(asked.get("t"));
+  if (asked.has("poses")) {
+    try {
+      const given = JSON.parse(asked.get("poses"));
+      if (Array.isArray(given) && given.length === poses.length) poses = given;
+    } catch (error) {
+      // A link that is not ours: the page's own poses.
+    }
+  }
   let result = null;         // the engine's last answer for a valid state
+  // The camera whose sweep is shown, the edge explained, the vertex and the object chosen.
   let selected = {camera: 0, edge: null, handle: null, object: null};
   let sweepStep = -1;        // the event shown of the selected camera's sweep; -1: none
   const stats = {explains: 0, lastMs: 0, totalMs: 0};
@@ -63,7 +76,8 @@
     const t0 = performance.now();
     const text = JSON.stringify(scene);
     const answer = JSON.parse(engine.explain(text, data.file, time, JSON.stringify(poses),
-                                             selected.camera === null ? -1 : selected.camera));
+                                             selected.camera === null ? -1 : selected.camera,
+                                             selected.edge === null ? -1 : selected.edge));
     const ms = performance.now() - t0;
     stats.explains += 1;
     stats.lastMs = ms;
@@ -80,6 +94,12 @@
     message.hidden = true;
     message.textContent = "";
     document.body.dataset.valid = "1";
+    // S arrives by columns; the page keeps it as one object a segment.
+    const c = answer.segments;
+    answer.segments = c.target.map((target, i) => ({
+      target, edge: c.edge[i], visibleBy: c.visibleBy[i],
+      a: [c.ends[4 * i], c.ends[4 * i + 1]], b: [c.ends[4 * i + 2], c.ends[4 * i + 3]],
+      reasons: answer.reasons && answer.reasons.segment === i ? answer.reasons.why : null}));
     result = answer;
     if (result.trace && sweepStep >= result.trace.events.length) sweepStep = -1;
     draw();
@@ -144,33 +164,42 @@
                        class: "view", "data-camera": String(j)}, world);
       }
     });
-    for (const o of result.obstacles) {
-      el("polygon", {points: pts(o.ring), fill: P.obstacle, class: "object",
-                     "data-kind": "obstacle", "data-id": String(o.id)}, world);
-    }
-    for (const t of result.targets) {
-      el("polygon", {points: pts(t.ring), fill: (data.colors[t.id] || P.target), class: "object",
-                     "data-kind": "target", "data-id": String(t.id)}, world);
-    }
+    const object = (kind, o, fill) => {
+      const shape = el("polygon", {points: pts(o.ring), fill, class: "object", "data-kind": kind,
+                                   "data-id": String(o.id)}, world);
+      shape.addEventListener("click", () => {
+        selected.object = {kind, id: o.id};
+        draw();
+      });
+    };
+    for (const o of result.obstacles) object("obstacle", o, P.obstacle);
+    for (const t of result.targets) object("target", t, data.colors[t.id] || P.target);
     // Every edge coloured by how many cameras see it; a weighted one as wide as important.
     const weightOf = (s) => {
       const t = result.targets.find((o) => o.id === s.target);
       return t && t.weights ? t.weights[s.edge] : null;
     };
-    result.segments.forEach((s, i) => {
+    // One path per colour and width (a large target's thousands of segments as elements cost a
+    // drag most of its time); a click finds its segment by position (pick()).
+    const groups = new Map();
+    for (const s of result.segments) {
       const w = weightOf(s);
-      const line = el("line", {x1: s.a[0], y1: -s.a[1], x2: s.b[0], y2: -s.b[1],
-                               stroke: P.seenBy[Math.min(s.visibleBy.length, 3)],
-                               "stroke-width": w === null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * w),
-                               "stroke-linecap": "round", "vector-effect": "non-scaling-stroke",
-                               class: "segment", "data-segment": String(i)}, world);
-      if (selected.edge === i) line.classList.add("selected");
-      line.addEventListener("click", (e) => {
-        e.stopPropagation();
-        selected.edge = i;
-        draw();
-      });
-    });
+      const key = `${P.seenBy[Math.min(s.visibleBy.length, 3)]} ${
+          w === null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * w)}`;
+      groups.set(key, (groups.get(key) || "") + `M${s.a[0]},${-s.a[1]}L${s.b[0]},${-s.b[1]}`);
+    }
+    for (const [key, d] of groups) {
+      const [stroke, width] = key.split(" ");
+      el("path", {d, stroke, "stroke-width": width, fill: "none", "stroke-linecap": "round",
+                  "vector-effect": "non-scaling-stroke", class: "segments"}, world);
+    }
+    const chosen = selected.edge === null ? null : result.segments[selected.edge];
+    if (chosen) {
+      el("line", {x1: chosen.a[0], y1: -chosen.a[1], x2: chosen.b[0], y2: -chosen.b[1],
+                  stroke: P.seenBy[Math.min(chosen.visibleBy.length, 3)], "stroke-width": 10,
+                  "stroke-linecap": "round", "vector-effect": "non-scaling-stroke",
+                  class: "segment selected", "data-segment": String(selected.edge)}, world);
+    }
     drawSweep();
     result.cameras.forEach((c, j) => drawCamera(c, j));
     drawHandles();
@@ -198,23 +227,31 @@
                               "text-anchor": "middle", class: "label"}, g);
     label.textContent = String(j);
     g.addEventListener("pointerdown", (e) => startDrag(e, {camera: j}));
+    g.addEventListener("click", (e) => e.stopPropagation());
     g.addEventListener("wheel", (e) => {
       e.preventDefault();
       turn(j, (e.deltaY < 0 ? 1 : -1) * (e.shiftKey ? 0.1 : 2));
     }, {passive: false});
   }
 
+  const kHandlesShown = 200;
   function drawHandles() {
     const rings = [{kind: "boundary", id: 0, ring: result.boundary}]
         .concat(result.targets.map((t) => ({kind: "target", id: t.id, ring: t.ring})))
         .concat(result.obstacles.map((o) => ({kind: "obstacle", id: o.id, ring: o.ring})));
-    for (const r of rings) {
+    // A ring of hundreds of vertices gets its handles when one of its vertices or its fill is
+    // selected: thousands of handles would hide it and slow every redraw.
+    const chosen = selected.handle || selected.object;
+    const shown = (r) => r.ring.length <= kHandlesShown ||
+                         (chosen && chosen.kind === r.kind && chosen.id === r.id);
+    for (const r of rings.filter(shown)) {
       r.ring.forEach((p, k) => {
         const h = el("circle", {cx: p[0], cy: -p[1], r: 0.3 * em, class: "handle",
                                 "data-ring": `${r.kind} ${r.id}`, "data-vertex": String(k)}, world);
         const s = selected.handle;
         if (s && s.kind === r.kind && s.id === r.id && s.vertex === k) h.classList.add("selected");
         h.addEventListener("pointerdown", (e) => startDrag(e, {kind: r.kind, id: r.id, vertex: k}));
+        h.addEventListener("click", (e) => e.stopPropagation());
       });
     }
   }
@@ -291,7 +328,7 @@
     seen.dataset.field = "visibleBy";
     seen.textContent = s.visibleBy.length ? `seen by camera ${s.visibleBy.join(", ")}` : "seen by none";
     const list = box.appendChild(document.createElement("ul"));
-    s.reasons.forEach((reason, j) => {
+    (s.reasons || []).forEach((reason, j) => {
       if (reason === null) return;
       const li = list.appendChild(document.createElement("li"));
       li.dataset.camera = String(j);
@@ -324,17 +361,19 @@
     const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(m);
     return [p.x, -p.y];
   }
-  let drag = null;
+  let drag = null, dragged = false;
   function startDrag(event, what) {
     event.preventDefault();
     event.stopPropagation();
     drag = what;
+    dragged = false;
     if ("camera" in what) selectCamera(what.camera, false);
     else selected.handle = what;
     world.setPointerCapture(event.pointerId);
   }
   world.addEventListener("pointermove", (event) => {
     if (!drag) return;
+    dragged = true;
     const p = worldPoint(event);
     if ("camera" in drag) {
       poses[drag.camera].x = round(p[0]);
@@ -354,6 +393,30 @@
     const local = toLocal(placed, point);
     ring.points[writtenIndex(ring, handle.vertex)] = [round(local[0]), round(local[1])];
     ring.set(ring.points);
+  }
+  // A click on a target's edge explains the segment there: who sees it, why the others do not.
+  world.addEventListener("click", (event) => {
+    if (!result || dragged) {  // the end of a drag is not a click
+      dragged = false;
+      return;
+    }
+    const i = pick(worldPoint(event));
+    if (i === null) return;
+    selected.edge = i;
+    explain();
+  });
+  function pick(p) {
+    let best = null, bestDistance = 0.5 * em;
+    result.segments.forEach((s, i) => {
+      const d = distanceToSegment(p, s.a, s.b);
+      if (d <= bestDistance) [best, bestDistance] = [i, d];
+    });
+    return best;
+  }
+  function distanceToSegment(p, a, b) {
+    const dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+    const u = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
+    return Math.hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy);
   }
   // Double-click an edge of any ring: a vertex there. Edge weights and keyframes follow.
   world.addEventListener("dblclick", (event) => {
@@ -383,10 +446,7 @@
   function nearestEdge(p) {
     let best = null;
     const consider = (kind, id, ring) => ring.forEach((a, k) => {
-      const b = ring[(k + 1) % ring.length];
-      const dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
-      const u = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
-      const d = Math.hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy);
+      const d = distanceToSegment(p, a, ring[(k + 1) % ring.length]);
       if (d < em && (!best || d < best.d)) best = {kind, id, edge: k, d};
     });
     consider("boundary", 0, result.boundary);
@@ -434,10 +494,10 @@
     explain();
   }
   function removeSelectedObject() {
-    const h = selected.handle;
+    const h = selected.handle || selected.object;
     if (!h || h.kind === "boundary") return;
     scene[h.kind === "target" ? "targets" : "obstacles"].splice(h.id, 1);
-    selected.handle = null;
+    selected.handle = selected.object = null;
     explain();
   }
   function addCamera() {
@@ -468,6 +528,7 @@
   const timeInput = document.getElementById("time");
   timeInput.max = String(data.duration);
   timeInput.value = String(time);
+  document.getElementById("time-value").textContent = `t = ${time.toFixed(2)} s`;
   timeInput.addEventListener("input", () => {
     time = Number(timeInput.value);
     document.getElementById("time-value").textContent = `t = ${time.toFixed(2)} s`;

@@ -17,7 +17,8 @@ namespace {
 struct ExploreOptions {
   std::vector<std::string> runs;
   std::string out;
-  std::string scene;  // if the runs' scene file has moved
+  std::string scene;       // if the runs' scene file has moved
+  std::string playground;  // a playground page of the scene, to link each step to
 };
 
 int explore(const ExploreOptions& o) {
@@ -26,7 +27,7 @@ int explore(const ExploreOptions& o) {
   }
   for (const std::string& run : o.runs)
     ProtectedFiles::protect(run);  // the page never replaces a run it shows
-  reports::explorer::writeExplorer({o.runs.begin(), o.runs.end()}, o.out, o.scene);
+  reports::explorer::writeExplorer({o.runs.begin(), o.runs.end()}, o.out, o.scene, o.playground);
   std::cout << fmt::format("wrote {}\n", o.out);
   return 0;
 }
@@ -47,6 +48,10 @@ Registration addExploreCommand(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "the page (.html)")->required();
   cmd->add_option("--scene", o->scene,
                   "scene file, if it is no longer where the runs' metadata says");
+  cmd->add_option("--playground", o->playground,
+                  "a page of `camcov playground` for the scene: each step links to it, at the "
+                  "step's time and camera poses")
+      ->check(CLI::ExistingFile);
   return {cmd, [o] { return explore(*o); }};
 }
 

@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -110,15 +111,48 @@ nlohmann::json tracedEdge(const camcov::kinematics::World& world,
           {"b", {e.b.x, e.b.y}}};
 }
 
+// The scene and instant the playground asked for last: a drag moves a camera and asks again,
+// and must not pay for reading, checking and placing a large scene every time.
+struct Instant {
+  std::string sceneText, name;
+  double time = -1.0;
+  std::optional<camcov::scene::Scene> scene;
+  std::optional<camcov::kinematics::Kinematics> kinematics;
+  std::optional<camcov::reward::RewardModel> model;
+
+  void take(const std::string& text, const std::string& fileName, double t) {
+    namespace cc = camcov;
+    if (!scene || text != sceneText || fileName != name) {
+      sceneText.clear();  // until the new scene is read whole
+      scene.reset();
+      scene = cc::scene::parseScene(text, fileName);
+      kinematics.emplace(*scene);
+      model.emplace(cc::params::Parameters{}.reward, cc::scene::lenses(*scene));
+      sceneText = text;
+      name = fileName;
+      time = -1.0;
+    }
+    if (t != time) {
+      model->setWorld(kinematics->worldAt(t));
+      time = t;
+    }
+  }
+};
+Instant last;
+
 // Everything the visibility playground draws at one instant: the world, each camera's field
-// of view, S with who sees each segment and why each other camera does not, the terms of the
-// team and of each camera alone, and (traceCamera ≥ 0) that camera's sweep event by event.
-// {"error": the validator's words} for a scene or poses camcov would refuse.
+// of view, S with who sees each segment, the terms of the team and of each camera alone; for
+// segment `reasonsFor` of S (≥ 0), why each camera that does not see it does not; and
+// (traceCamera ≥ 0) that camera's sweep event by event. {"error": the validator's words} for a
+// scene or poses camcov would refuse.
 std::string explain(const std::string& sceneText, const std::string& name, double time,
-                    const std::string& posesText, int traceCamera) {
+                    const std::string& posesText, int traceCamera, int reasonsFor) {
   try {
     namespace cc = camcov;
-    const cc::scene::Scene scene = cc::scene::parseScene(sceneText, name);
+    last.take(sceneText, name, time);
+    const cc::scene::Scene& scene = *last.scene;
+    const cc::kinematics::Kinematics& kinematics = *last.kinematics;
+    cc::reward::RewardModel& model = *last.model;
     std::vector<Pose> cameras;
     if (posesText.empty()) {
       for (const auto& c : scene.cameras)
@@ -130,9 +164,6 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
       throw std::invalid_argument("poses: one pose per camera of the scene");
     const std::vector<cc::scene::Lens> lenses = cc::scene::lenses(scene);
     const cc::params::Parameters p;
-    cc::reward::RewardModel model(p.reward, lenses);
-    const cc::kinematics::Kinematics kinematics(scene);
-    model.setWorld(kinematics.worldAt(time));
     const cc::kinematics::World& world = model.world();
     const cc::reward::RewardTerms terms = model.evaluate(cameras);
     const std::vector<cc::visibility::Segment> segments(model.segments().begin(),
@@ -197,24 +228,39 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
                                 {"visibleLength", cc::reward::visibleLengthOf(segments, j)},
                                 {"terms", termsJson(t)}});
     }
-    out["segments"] = nlohmann::json::array();
-    for (const auto& s : segments) {
-      nlohmann::json seenBy = nlohmann::json::array(), reasons = nlohmann::json::array();
+    // S by columns (a large target's thousands of segments as objects cost a drag most of
+    // its time): target and edge, the ends ax, ay, bx, by in a row, and who sees each.
+    nlohmann::json target = nlohmann::json::array(), edge = nlohmann::json::array(),
+                   ends = nlohmann::json::array(), visibleBy = nlohmann::json::array();
+    for (const cc::visibility::Segment& s : segments) {
+      target.push_back(cc::kinematics::targetId(world, s.target));
+      edge.push_back(s.edge);
+      for (const double v : {s.a.x, s.a.y, s.b.x, s.b.y})
+        ends.push_back(v);
+      nlohmann::json seenBy = nlohmann::json::array();
+      for (unsigned j = 0; j < cameras.size(); ++j) {
+        if ((s.visibleBy >> j & 1u) != 0) seenBy.push_back(j);
+      }
+      visibleBy.push_back(std::move(seenBy));
+    }
+    out["segments"] = {{"target", std::move(target)},
+                       {"edge", std::move(edge)},
+                       {"ends", std::move(ends)},
+                       {"visibleBy", std::move(visibleBy)}};
+    // Why each camera that does not see segment `reasonsFor` does not: O(n) a camera
+    // (unseen_reason.h), so for the segment asked about only.
+    if (reasonsFor >= 0 && static_cast<std::size_t>(reasonsFor) < segments.size()) {
+      const cc::visibility::Segment& s = segments[reasonsFor];
+      nlohmann::json why = nlohmann::json::array();
       for (unsigned j = 0; j < cameras.size(); ++j) {
         if ((s.visibleBy >> j & 1u) != 0) {
-          seenBy.push_back(j);
-          reasons.push_back(nullptr);
+          why.push_back(nullptr);
         } else {
-          reasons.push_back(cc::visibility::describeUnseen(
+          why.push_back(cc::visibility::describeUnseen(
               world, cc::visibility::whyUnseen(world, cameras[j], lenses[j], s)));
         }
       }
-      out["segments"].push_back({{"target", cc::kinematics::targetId(world, s.target)},
-                                 {"edge", s.edge},
-                                 {"a", {s.a.x, s.a.y}},
-                                 {"b", {s.b.x, s.b.y}},
-                                 {"visibleBy", seenBy},
-                                 {"reasons", reasons}});
+      out["reasons"] = {{"segment", reasonsFor}, {"why", std::move(why)}};
     }
     if (traceCamera >= 0 && static_cast<std::size_t>(traceCamera) < cameras.size()) {
       cc::visibility::SweepTrace trace;

@@ -48,7 +48,8 @@ class Page:
         self.console = []
 
     def open(self, page):
-        self.driver.get(pathlib.Path(page).as_uri())
+        """A page file, or a file:// URL (with a fragment)."""
+        self.driver.get(page if str(page).startswith("file:") else pathlib.Path(page).as_uri())
         self.wait(lambda d: d.execute_script("return document.body.dataset.ready") == "1",
                   "the page never became ready")
 
@@ -82,6 +83,15 @@ class Page:
             chain.move_by_offset(dx * (k + 1) // moves - dx * k // moves,
                                  dy * (k + 1) // moves - dy * k // moves)
         chain.release().perform()
+        self.settled()
+
+    def click_at(self, point):
+        """A click on the world at a point in metres, as the mouse would give it."""
+        self.driver.execute_script(
+            "const svg = document.getElementById('world');"
+            "const p = new DOMPoint(arguments[0], -arguments[1]).matrixTransform(svg.getScreenCTM());"
+            "svg.dispatchEvent(new MouseEvent('click', {clientX: p.x, clientY: p.y, bubbles: true}));",
+            *point)
         self.settled()
 
     def exported(self, folder):
@@ -208,10 +218,11 @@ def test_a_sweep_steps_forward_and_back_and_an_edge_says_who_sees_it(page, tmp_p
     # An edge: who sees it and why the others do not, as camcov inspect says.
     scene, poses = page.exported(tmp_path)
     reference = inspect(scene, poses, 0)
-    seen = next(i for i, s in enumerate(reference["segments"]) if s["visibleBy"])
-    page.driver.execute_script(
-        "arguments[0].dispatchEvent(new MouseEvent('click', {bubbles: true}));",
-        page.find(f'.segment[data-segment="{seen}"]'))
+    seen = max((i for i, s in enumerate(reference["segments"]) if s["visibleBy"]),
+               key=lambda i: reference["segments"][i]["length"])
+    a, b = reference["segments"][seen]["a"], reference["segments"][seen]["b"]
+    page.click_at(((a[0] + b[0]) / 2, (a[1] + b[1]) / 2))
+    assert page.find(".segment.selected").get_attribute("data-segment") == str(seen)
     expected = ", ".join(map(str, reference["segments"][seen]["visibleBy"]))
     page.wait(lambda d: d.find_element(By.CSS_SELECTOR, '#edge [data-field="visibleBy"]').text
               == f"seen by camera {expected}", "the edge's visibleBy")
@@ -235,4 +246,38 @@ def test_time_and_the_field_of_view_change_the_picture_as_camcov_computes_it(pag
     resources = page.driver.execute_script(
         "return performance.getEntriesByType('resource').map((e) => e.name);")
     assert not [r for r in resources if not r.startswith(("file:", "data:", "blob:"))]
+    assert not page.severe(), page.severe()
+
+
+def test_the_explorer_opens_a_step_in_the_playground_at_its_time_and_poses(page, tmp_path):
+    result = camcov("run", TINY, "--method", "paper", "--seed", 1, "--set", "sim.duration=3",
+                    "--out", tmp_path)
+    assert result.returncode == 0, result.stderr
+    run_file = tmp_path / "tiny_dynamic-paper-seed1.json"
+    run = json.loads(run_file.read_text())
+    playground = write_page(tmp_path, TINY)
+    explorer = tmp_path / "explore.html"
+    result = camcov("explore", run_file, "--playground", playground, "-o", explorer)
+    assert result.returncode == 0, result.stdout + result.stderr
+    page.driver.get(explorer.as_uri())
+    page.wait(lambda d: d.execute_script("return document.body.dataset.ready") == "1",
+              "the explorer never became ready")
+    k = 17
+    page.driver.execute_script(
+        "const s = document.getElementById('slider'); s.value = arguments[0];"
+        " s.dispatchEvent(new Event('input'));", str(k))
+    page.wait(lambda d: d.execute_script("return document.body.dataset.step") == str(k),
+              "the explorer did not seek")
+    link = page.find("a.playground").get_attribute("href")
+    assert link.startswith(playground.as_uri() + "#t="), link
+    page.open(link)
+    time = run["series"]["time"][k]
+    assert page.text("#time-value") == f"t = {time:.2f} s"
+    # The poses of the step (to the millimetre the explorer keeps) and the run's coverage there.
+    scene, poses = page.exported(tmp_path)
+    shown = json.loads(poses.read_text())
+    for pose, recorded in zip(shown, run["series"]["cameras"]):
+        assert abs(pose["x"] - recorded[k][0]) <= 1e-3 and abs(pose["y"] - recorded[k][1]) <= 1e-3
+    assert abs(page.term("coverage") - inspect(scene, poses, time)["coverage"]) <= 1e-9
+    assert abs(page.term("coverage") - run["series"]["coverage"][k]) <= 1e-2
     assert not page.severe(), page.severe()
