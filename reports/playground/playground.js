@@ -565,6 +565,8 @@
     };
     link("export-scene", sceneText, `${stem}-edited.json`);
     link("export-poses", posesText, `${stem}-poses.json`);
+    // All three in one file: tests/data/visibility_cases/ takes it as a regression test.
+    link("export-case", JSON.stringify({scene, time, poses}, null, 2) + "\n", `${stem}-case.json`);
     document.getElementById("export-command").textContent =
         `camcov inspect ${stem}-edited.json --time ${time} --cameras ${stem}-poses.json --json`;
     document.getElementById("exported").hidden = false;

@@ -144,6 +144,10 @@ def test_a_dragged_camera_gives_the_coverage_camcov_inspect_computes(page, tmp_p
         assert abs(page.term(term) - reference[term]) <= 1e-9, term
     assert page.text("#export-command") == \
         f"camcov inspect {scene.name} --time 0 --cameras {poses.name} --json"
+    # The one-file case for tests/data/visibility_cases/ holds the same.
+    case = json.loads(page.find("#export-case").get_attribute("data-content"))
+    assert case == {"scene": json.loads(scene.read_text()), "time": 0,
+                    "poses": json.loads(poses.read_text())}
     # The wheel turns the camera 2° a notch.
     yaw = float(page.text('#cameras tr[data-camera="0"] td:nth-child(3)').rstrip("°"))
     page.driver.execute_script(
