@@ -71,6 +71,15 @@
   const placedOf = (kind, id) => kind === "boundary" ? null
       : result[kind === "target" ? "targets" : "obstacles"].find((o) => o.id === id);
 
+  // A camera's pose is also its entry in the scene: the validator then judges where it stands
+  // (inside an object, outside the boundary) in its own words, and the exported scene starts
+  // the cameras where the page shows them.
+  function placeCamera(j) {
+    scene.cameras[j].pos = `POINT(${poses[j].x} ${poses[j].y})`;
+    scene.cameras[j].angle = poses[j].yaw_deg;
+  }
+  poses.forEach((_, j) => placeCamera(j));
+
   // ---- asking the engine -------------------------------------------------------------------
   function explain() {
     const t0 = performance.now();
@@ -378,6 +387,7 @@
     if ("camera" in drag) {
       poses[drag.camera].x = round(p[0]);
       poses[drag.camera].y = round(p[1]);
+      placeCamera(drag.camera);
     } else {
       moveVertex(drag, p);
     }
@@ -475,6 +485,7 @@
   }
   function turn(j, degrees) {
     poses[j].yaw_deg = round(poses[j].yaw_deg + degrees);
+    placeCamera(j);
     explainSoon();
   }
   function selectCamera(j, redraw = true) {

@@ -187,6 +187,24 @@ def test_a_vertex_dragged_into_a_bow_tie_shows_the_validators_words(page, tmp_pa
     assert not page.severe(), page.severe()
 
 
+def test_a_camera_dragged_into_an_obstacle_shows_the_validators_words(page, tmp_path):
+    page.open(write_page(tmp_path))
+    camera = page.find('g.camera[data-camera="0"] .body')
+    obstacle = page.find('polygon[data-kind="obstacle"]')
+    start, goal = camera.rect, obstacle.rect
+    dx = goal["x"] + goal["width"] / 2 - (start["x"] + start["width"] / 2)
+    dy = goal["y"] + goal["height"] / 2 - (start["y"] + start["height"] / 2)
+    page.drag(camera, int(dx), int(dy), moves=1)
+    page.wait(lambda d: d.find_element(By.ID, "message").is_displayed(), "no message shown")
+    message = page.text("#message")
+    assert "cameras[0].pos" in message and "inside obstacles[0]" in message, message
+    scene, _ = page.exported(tmp_path)
+    validated = camcov("validate", scene)
+    assert validated.returncode == 2
+    assert message.split(": ", 1)[1] in validated.stdout + validated.stderr
+    assert not page.severe(), page.severe()
+
+
 def test_vertices_are_added_and_deleted_and_the_numbers_follow(page, tmp_path):
     page.open(write_page(tmp_path))
     count = len(page.all('.handle[data-ring="obstacle 0"]'))
