@@ -178,26 +178,26 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
     };
     nlohmann::json out{{"time", time}, {"terms", termsJson(terms)}};
     out["boundary"] = points(world.boundary);
+    // An object by its scene index, its ring now and where its shape's frame is (a page that
+    // moves a vertex edits the shape through it).
+    const auto placed = [&](std::uint32_t id, const cc::geometry::Ring& ring,
+                            const cc::kinematics::ObjectPose& pose) {
+      return nlohmann::json{{"id", id},
+                            {"ring", points(ring)},
+                            {"reference", {pose.reference.x, pose.reference.y}},
+                            {"angle", pose.angle}};
+    };
     out["targets"] = nlohmann::json::array();
     for (std::size_t i = 0; i < world.targets.size(); ++i) {
       const std::uint32_t id = cc::kinematics::targetId(world, i);
-      const cc::kinematics::ObjectPose pose = kinematics.targetPose(id, time);
-      // Where its shape's frame is now: a page that moves a vertex edits the shape through it.
-      out["targets"].push_back({{"id", id},
-                                {"ring", points(world.targets[i])},
-                                {"reference", {pose.reference.x, pose.reference.y}},
-                                {"angle", pose.angle}});
+      out["targets"].push_back(placed(id, world.targets[i], kinematics.targetPose(id, time)));
       if (!world.targetEdgeWeights.empty())
         out["targets"].back()["weights"] = world.targetEdgeWeights[i];
     }
     out["obstacles"] = nlohmann::json::array();
     for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
       const std::uint32_t id = cc::kinematics::obstacleId(world, i);
-      const cc::kinematics::ObjectPose pose = kinematics.obstaclePose(id, time);
-      out["obstacles"].push_back({{"id", id},
-                                  {"ring", points(world.obstacles[i])},
-                                  {"reference", {pose.reference.x, pose.reference.y}},
-                                  {"angle", pose.angle}});
+      out["obstacles"].push_back(placed(id, world.obstacles[i], kinematics.obstaclePose(id, time)));
     }
     // Each camera: its field of view, and its terms alone (the team's terms of a team of one
     // that sees what it sees, with the others' repulsion).
