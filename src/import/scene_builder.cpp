@@ -307,8 +307,17 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
                            {box.min.x, box.max.y}});
   if (recording.onPitch) scene.pitch = scene::Pitch{recording.pitch.length, recording.pitch.width};
   // The window is how long a run of the scene lasts; to the recording's end, its last sample.
-  scene.duration = std::min(scene::kMaxDuration,
-                            scene::roundTo(std::isinf(o.to) ? built.duration : o.to - o.from, 1e3));
+  // A window of one instant (every track a single sample at its start) has no length: the
+  // scene then says nothing, and runs last what the command asks.
+  const double window = std::min(
+      scene::kMaxDuration, scene::roundTo(std::isinf(o.to) ? built.duration : o.to - o.from, 1e3));
+  if (window > 0.0) {
+    scene.duration = window;
+  } else {
+    built.notes.push_back(
+        "the window holds a single instant: the scene has no duration of its own (runs last "
+        "sim.duration)");
+  }
   const auto still = [](geometry::Ring shape, Vec2 at) {
     scene::MovingObject object;
     object.shape = std::move(shape);

@@ -14,27 +14,27 @@ bool inFront(const geometry::Ring& placed, std::size_t i, geometry::Vec2 motion,
 }
 
 void edgeWeightsAt(const scene::MovingObject& object, const geometry::Ring& placed,
-                   const std::optional<geometry::Vec2>& motion, double scale,
-                   std::vector<double>& out) {
+                   const std::optional<geometry::Vec2>& motion, std::vector<double>& out) {
   out.resize(placed.size());
   for (std::size_t i = 0; i < placed.size(); ++i) {
     double w = object.edgeWeights.empty() ? 1.0 : object.edgeWeights[i];
     if (object.front && motion && inFront(placed, i, *motion, object.front->halfAngle))
       w *= object.front->weight;
-    out[i] = w / scale;
+    out[i] = w;
   }
 }
 
-double importanceScale(const scene::Scene& scene) {
-  double scale = 1.0;
-  for (const scene::MovingObject& target : scene.targets) {
-    double largest = 1.0;
-    if (!target.edgeWeights.empty())
-      largest = *std::max_element(target.edgeWeights.begin(), target.edgeWeights.end());
-    if (target.front) largest *= std::max(target.front->weight, 1.0);
-    scale = std::max(scale, largest);
+void normalizeWeights(std::vector<std::vector<double>>& weights) {
+  double largest = 0.0;
+  for (const std::vector<double>& target : weights) {
+    for (const double w : target)
+      largest = std::max(largest, w);
   }
-  return scale;
+  if (!(largest > 0.0)) return;
+  for (std::vector<double>& target : weights) {
+    for (double& w : target)
+      w /= largest;
+  }
 }
 
 }  // namespace camcov::kinematics

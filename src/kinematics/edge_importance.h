@@ -38,15 +38,16 @@ std::optional<geometry::Vec2> recentMotion(ReferenceAt referenceAt, double t, do
 // normal lies within halfAngle of `motion`. A zero-length edge has no normal: never.
 bool inFront(const geometry::Ring& placed, std::size_t i, geometry::Vec2 motion, double halfAngle);
 
-// The weights of the edges of `placed` (target `object` at t, moving along `motion` if known),
-// divided by `scale` (importanceScale()), into `out`.
+// The weights of the edges of `placed` (target `object` at t, moving along `motion` if known)
+// into `out`, as the scene gives them.
 void edgeWeightsAt(const scene::MovingObject& object, const geometry::Ring& placed,
-                   const std::optional<geometry::Vec2>& motion, double scale,
-                   std::vector<double>& out);
+                   const std::optional<geometry::Vec2>& motion, std::vector<double>& out);
 
-// The largest weight any edge of the scene's targets can take (at least 1): weights are divided
-// by it, so each is at most 1 and a weighted length at most the length — coverage, a ratio of
-// weighted lengths, is the same, and the sums stay in the range of plain ones.
-double importanceScale(const scene::Scene& scene);
+// Divides every weight by the largest (if any is above 0): each is then at most 1, the largest
+// exactly 1, so a weighted length is at most the length and the weighted perimeter at least
+// the heaviest edge's — coverage, a ratio of weighted lengths, is the same, its sums stay in
+// the range of plain ones, and their rounding (reward/fixed_point_sum.h) stays far below
+// anything coverage can tell apart, however small the weights.
+void normalizeWeights(std::vector<std::vector<double>>& weights);
 
 }  // namespace camcov::kinematics

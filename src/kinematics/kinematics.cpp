@@ -20,7 +20,6 @@ Kinematics::Kinematics(const scene::Scene& scene) : scene_(scene) {
   for (const auto& object : scene.obstacles)
     obstacleMotion_.push_back(motionOf(object));
   weighted_ = scene.isWeighted();
-  importanceScale_ = importanceScale(scene);
 }
 
 ObjectPose Kinematics::pose(const scene::MovingObject& object, const Motion& motion, double t) {
@@ -114,9 +113,9 @@ void Kinematics::worldAt(double t, World& out) const {
   out.targetEdgeWeights.resize(weighted_ ? out.targets.size() : 0);
   for (std::size_t k = 0; k < out.targetEdgeWeights.size(); ++k) {
     const std::size_t i = out.targetIds[k];
-    edgeWeightsAt(scene_.targets[i], out.targets[k], targetMotion(i, t), importanceScale_,
-                  out.targetEdgeWeights[k]);
+    edgeWeightsAt(scene_.targets[i], out.targets[k], targetMotion(i, t), out.targetEdgeWeights[k]);
   }
+  normalizeWeights(out.targetEdgeWeights);
 }
 
 std::optional<geometry::Vec2> Kinematics::targetMotion(std::size_t i, double t) const {

@@ -63,7 +63,6 @@ class Kinematics {
   std::vector<Motion> targetMotion_;
   std::vector<Motion> obstacleMotion_;
   bool weighted_ = false;  // scene_.isWeighted()
-  double importanceScale_ = 1.0;
 };
 
 }  // namespace camcov::kinematics

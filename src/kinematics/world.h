@@ -18,7 +18,8 @@ struct World {
   std::vector<std::uint32_t> targetIds;
   std::vector<std::uint32_t> obstacleIds;
   // Importance weights (kinematics/edge_importance.h): targetEdgeWeights[i][e] of edge e of
-  // targets[i], each in [0, 1]. Empty in a scene without weights: every edge weighs 1.
+  // targets[i], each in [0, 1], divided by the largest at t. Empty in a scene without weights:
+  // every edge weighs 1.
   std::vector<std::vector<double>> targetEdgeWeights;
 };
 

@@ -79,7 +79,8 @@ TEST(WeightedScene, InspectsWeightedCoverageIsItsSegmentsWeightedSum) {
     if (!s["visibleBy"].empty()) seen += w * length;
     if (s["target"] == 1) walkerWeights.insert(w);
   }
-  // Divided by the scene's largest weight, 4: the walker's front 3/4, the rest of it 1/4.
+  // Divided by the largest weight at the instant, the stage's 4: the walker's front 3/4, the rest
+  // of it 1/4.
   EXPECT_EQ(walkerWeights, (std::set<double>{0.25, 0.75}));
   EXPECT_NEAR(j["weightedCoverage"].get<double>(), seen / total, 1e-12);
   EXPECT_NE(j["weightedCoverage"], j["coverage"]);

@@ -4,7 +4,8 @@
 // JSON and loaded, so the loader's checks come first. An accepted scene must give, at every
 // instant tried: importance weights in [0, 1], weighted coverage finite and in [0, 1], the
 // probes' incremental terms equal to evaluate()'s to the bit, and with every weight scaled by
-// the same factor, the same weighted coverage (it is a ratio).
+// the same factor, the same weighted coverage (it is a ratio) up to the sums' rounding.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -111,11 +112,15 @@ void exercise(const scene::Scene& s) {
   reward::RewardModel probing(params::RewardParams{}, scene::lenses(s));
   for (const double t : {0.0, 0.3, 2.0, 7.3, 40.0}) {
     kinematics::World world = kinematics.worldAt(t);
+    double largest = 0.0;
     for (const auto& weights : world.targetEdgeWeights) {
       for (const double w : weights) {
         if (!(w >= 0.0 && w <= 1.0)) fail(fmt::format("weight {} outside [0, 1] at t = {}", w, t));
+        largest = std::max(largest, w);
       }
     }
+    if (!world.targetEdgeWeights.empty() && largest != 1.0 && largest != 0.0)
+      fail(fmt::format("the largest weight at t = {} is {}, not 1", t, largest));
     afresh.setWorld(world);
     probing.setWorld(world);
     const reward::RewardTerms a = afresh.evaluate(cameras), b = probing.terms(cameras);
@@ -131,7 +136,7 @@ void exercise(const scene::Scene& s) {
     }
     afresh.setWorld(world);
     const double halved = afresh.evaluate(cameras).weightedCoverage;
-    if (std::abs(halved - a.weightedCoverage) > 1e-9)
+    if (std::abs(halved - a.weightedCoverage) > 1e-12)
       fail(fmt::format("halving every weight moved weighted coverage {} to {}", a.weightedCoverage,
                        halved));
   }

@@ -95,6 +95,25 @@ TEST(ImportLastRow, PlayersAreTeamColouredDiscsAtTheScaledRecordedPositions) {
   EXPECT_EQ(ball["obstacles"][0]["track"]["samples"].size(), 6u);
 }
 
+// Found by the importer fuzzer: every track one sample long made a window of no length, and the
+// scene's "duration": 0 then failed its own loader.
+TEST(ImportLastRow, ARecordingOfOneInstantImportsWithoutADurationOfItsOwn) {
+  const ScratchDir dir;
+  std::ifstream extract(kTracks / "lastrow_extract.csv");
+  std::string header, row;
+  std::getline(extract, header);
+  while (std::getline(extract, row) && row.rfind("0,", 0) == 0) {
+  }  // past the ball's rows: a player's first
+  const fs::path csv = dir / "one_instant.csv";
+  std::ofstream(csv) << header << "\n" << row << "\n";
+  const auto r = runCamcov("import lastrow " + csv.string() + " -o " + (dir / "one.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("a single instant"), std::string::npos) << r.err;
+  const nlohmann::json scene = nlohmann::json::parse(readFile(dir / "one.json"));
+  EXPECT_FALSE(scene.contains("duration"));
+  EXPECT_EQ(runCamcov("validate " + (dir / "one.json").string()).exitCode, 0);
+}
+
 TEST(ImportLastRow, PlayersHaveAFrontTheBallDoesNot) {
   const ScratchDir dir;
   const std::string csv = (kTracks / "lastrow_extract.csv").string();

@@ -156,10 +156,10 @@ TEST(FrontWeight, TheEdgeFacingTheMotionWeighsFrontWeightTheOthersOne) {
                      "maxAngularVelocity": 1}]})j",
       "shuttle.json");
   const kinematics::Kinematics k(s);
-  // Edge 1 (x = 0.5) faces +x. Weights are divided by the largest, 4.
+  // Edge 1 (x = 0.5) faces +x. Weights are divided by the largest at the instant, 4.
   EXPECT_EQ(k.worldAt(2.0).targetEdgeWeights[0], (std::vector<double>{0.25, 1.0, 0.25, 0.25}));
-  // At t = 0 nothing has moved yet: no front.
-  EXPECT_EQ(k.worldAt(0.0).targetEdgeWeights[0], (std::vector<double>{0.25, 0.25, 0.25, 0.25}));
+  // At t = 0 nothing has moved yet: no front, every edge the same.
+  EXPECT_EQ(k.worldAt(0.0).targetEdgeWeights[0], (std::vector<double>{1.0, 1.0, 1.0, 1.0}));
   // Just after the turn at x = 10 (t = 10): the past says it went right; the future, left.
   EXPECT_EQ(k.worldAt(10.1).targetEdgeWeights[0], (std::vector<double>{0.25, 1.0, 0.25, 0.25}));
   // Well after: it goes left, and edge 3 (x = −0.5) leads.
@@ -169,7 +169,7 @@ TEST(FrontWeight, TheEdgeFacingTheMotionWeighsFrontWeightTheOthersOne) {
 TEST(FrontWeight, AStandingTargetHasNoFront) {
   const scene::Scene s = squareScene(R"(, "frontWeight": 3, "frontAngle": 90)");
   EXPECT_EQ(kinematics::Kinematics(s).worldAt(5.0).targetEdgeWeights[0],
-            std::vector<double>(4, 1.0 / 3.0));
+            std::vector<double>(4, 1.0));
 }
 
 TEST(FrontWeight, TheFrontAngleDecidesWhichEdgesLead) {
