@@ -67,9 +67,7 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
   out.caption.weightedCoverage.reset();
   if (weighted_) {
-    out.caption.weightedCoverage =
-        reward::coverageOf(reward::weightedVisibleLength(out.segments, out.world.targetEdgeWeights),
-                           reward::weightedPerimeter(out.world));
+    out.caption.weightedCoverage = reward::weightedCoverage(out.segments, out.world);
   }
   out.caption.utilization = reward::utilization(out.segments, cameras, lenses_);
 }

@@ -153,18 +153,13 @@ class StepPacker {
                                : static_cast<std::uint64_t>(quantize(nearestCamera, kMillimetres)));
 
     // Its own terms of eq. (3) and (5): what the reward would count for it alone.
-    own_.clear();
-    for (visibility::Segment s : frame.segments) {
-      if ((s.visibleBy >> j & 1u) == 0) continue;
-      s.visibleBy = 1;  // it is camera 0 of a team of one
-      own_.push_back(s);
-    }
-    const scene::Lens lens[] = {lenses_[j]};
-    const geometry::Pose alone[] = {c.pose};
-    out.putUnsigned(static_cast<std::uint64_t>(
-        std::llround(reward::coverage(own_, reward::targetPerimeter(frame.world)) * kTermUnits)));
-    out.putUnsigned(static_cast<std::uint64_t>(
-        std::llround(reward::utilization(own_, alone, lens) * kTermUnits)));
+    team_.clear();
+    for (const viz::CameraView& view : frame.cameras)
+      team_.push_back(view.pose);
+    const reward::RewardTerms own =
+        reward::termsAlone(frame.world, frame.segments, team_, lenses_, j, params::RewardParams{});
+    out.putUnsigned(static_cast<std::uint64_t>(std::llround(own.coverage * kTermUnits)));
+    out.putUnsigned(static_cast<std::uint64_t>(std::llround(own.utilization * kTermUnits)));
   }
 
   void putSegments(const viz::Frame& frame, PackedStream& out) {
@@ -203,7 +198,7 @@ class StepPacker {
   }
 
   std::vector<scene::Lens> lenses_;
-  std::vector<visibility::Segment> own_;  // one camera's segments, reused
+  std::vector<geometry::Pose> team_;  // the step's camera poses, reused
   std::size_t targetCount_ = 0;
   std::vector<std::vector<std::int64_t>> objects_;  // by scene index: vertices the last time
   std::vector<std::array<std::int64_t, 3>> poses_;

@@ -163,32 +163,8 @@ reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera) {
   const scene::Scene& scene = episode.scene();
   if (camera >= scene.cameras.size())
     throw std::invalid_argument("ownTerms: no camera " + std::to_string(camera));
-  const auto j = static_cast<unsigned>(camera);
-  std::vector<visibility::Segment> own;
-  for (const visibility::Segment& s : o.seen) {
-    if ((s.visibleBy >> j & 1u) == 0) continue;
-    own.push_back(s);
-    own.back().visibleBy = 1;  // camera 0 of a team of one
-  }
-  const params::RewardParams& lambdas = episode.params().reward;
-  const geometry::Pose& pose = o.cameras[camera];
-  reward::RewardTerms terms;
-  terms.coverage = reward::coverage(own, reward::targetPerimeter(o.world));
-  terms.weightedCoverage =
-      o.world.targetEdgeWeights.empty()
-          ? terms.coverage
-          : reward::coverageOf(reward::weightedVisibleLength(own, o.world.targetEdgeWeights),
-                               reward::weightedPerimeter(o.world));
-  terms.utilization =
-      reward::utilization(own, std::span(&pose, 1), std::span(&scene.cameras[camera].lens, 1));
-  terms.repulsion = reward::repulsion(o.world, std::span(&pose, 1), lambdas.d2);
-  for (std::size_t i = 0; i < o.cameras.size(); ++i) {
-    if (i != camera)
-      terms.repulsion += reward::pairTerm(pose.position(), o.cameras[i].position(), lambdas.d2);
-  }
-  terms.reward = reward::combine(lambdas, reward::coverageTerm(lambdas, terms), terms.utilization,
-                                 terms.repulsion);
-  return terms;
+  return reward::termsAlone(o.world, o.seen, o.cameras, scene::lenses(scene), camera,
+                            episode.params().reward);
 }
 
 }  // namespace camcov::environment

@@ -77,6 +77,35 @@ double weightedPerimeter(const kinematics::World& world) {
   return total;
 }
 
+double weightedCoverage(std::span<const visibility::Segment> segments,
+                        const kinematics::World& world) {
+  return coverageOf(weightedVisibleLength(segments, world.targetEdgeWeights),
+                    weightedPerimeter(world));
+}
+
+RewardTerms termsAlone(const kinematics::World& world,
+                       std::span<const visibility::Segment> segments,
+                       std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses,
+                       std::size_t j, const params::RewardParams& params) {
+  std::vector<visibility::Segment> own;
+  for (visibility::Segment s : segments) {
+    if ((s.visibleBy >> j & 1u) == 0) continue;
+    s.visibleBy = 1;  // camera 0 of a team of one
+    own.push_back(s);
+  }
+  const geometry::Pose& pose = cameras[j];
+  RewardTerms t;
+  t.coverage = coverage(own, targetPerimeter(world));
+  t.weightedCoverage = weightedCoverage(own, world);
+  t.utilization = utilization(own, std::span(&pose, 1), lenses.subspan(j, 1));
+  t.repulsion = repulsion(world, std::span(&pose, 1), params.d2);
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    if (i != j) t.repulsion += pairTerm(pose.position(), cameras[i].position(), params.d2);
+  }
+  t.reward = combine(params, coverageTerm(params, t), t.utilization, t.repulsion);
+  return t;
+}
+
 double coverage(std::span<const visibility::Segment> segments, double perimeter) {
   return coverageOf(visibleLength(segments), perimeter);
 }

@@ -50,6 +50,10 @@ double targetPerimeter(const kinematics::World& world);
 double weightedVisibleLength(std::span<const visibility::Segment> segments,
                              const std::vector<std::vector<double>>& weights);
 double weightedPerimeter(const kinematics::World& world);
+// Coverage eq. (3) weighted by world.targetEdgeWeights (RewardTerms::weightedCoverage); the
+// plain coverage in a world without weights.
+double weightedCoverage(std::span<const visibility::Segment> segments,
+                        const kinematics::World& world);
 // Coverage, eq. (3). 0 when the targets have no boundary length.
 double coverage(std::span<const visibility::Segment> segments, double perimeter);
 // The same from vis(S).
@@ -87,6 +91,14 @@ double pairTerm(geometry::Vec2 a, geometry::Vec2 b, double d2);
 std::vector<double>& objectTerms(const kinematics::World& world,
                                  std::span<const geometry::Box> boxes, geometry::Vec2 p, double d2,
                                  std::vector<double>& out);
+// Camera j's own terms, as if it were alone: eq. (3) over what it sees of S (`segments`, made
+// for `cameras`), eq. (5) with M = 1, eq. (6) against the objects and the other cameras, and
+// eq. (8) of those. What the explorer, the playground and the learning environments show a
+// camera's share as.
+RewardTerms termsAlone(const kinematics::World& world,
+                       std::span<const visibility::Segment> segments,
+                       std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses,
+                       std::size_t j, const params::RewardParams& params);
 // Reward, eq. (8).
 double combine(const params::RewardParams& p, double coverage, double utilization,
                double repulsion);
