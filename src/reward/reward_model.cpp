@@ -63,7 +63,7 @@ RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
 }
 
 double RewardModel::rewardPerimeter() const {
-  return params_.weighted && !weights_.empty() ? weightedPerimeter_ : perimeter_;
+  return rewardWeighted() ? weightedPerimeter_ : perimeter_;
 }
 
 void RewardModel::visibilityPolygon(geometry::Vec2 point, geometry::Ring& out) {

@@ -43,7 +43,7 @@ class RewardModel {
   // unweighted.
   double rewardPerimeter() const;
   double rewardWeight(std::uint32_t globalEdge) const {
-    return params_.weighted && !weights_.empty() ? weights_[globalEdge] : 1.0;
+    return rewardWeighted() ? weights_[globalEdge] : 1.0;
   }
   std::span<const geometry::Box> objectBoxes() const { return objectBoxes_; }
   const params::RewardParams& params() const { return params_; }
@@ -62,6 +62,9 @@ class RewardModel {
   void visibilityPolygon(geometry::Vec2 point, geometry::Ring& out);
 
  private:
+  // The reward weighs the edges: RewardParams::weighted, in a world with weights.
+  bool rewardWeighted() const { return params_.weighted && !weights_.empty(); }
+
   params::RewardParams params_;
   std::vector<scene::Lens> lenses_;
   kinematics::World world_;

@@ -109,11 +109,18 @@ class Node {
   const std::string& file_;
 };
 
+// A shape as written, open: what edgeWeights and deformation keyframes correspond to, edge by
+// edge and vertex by vertex.
+geometry::Ring writtenRing(const Node& shapeNode) {
+  geometry::Ring written = shapeNode.wktRing();
+  if (written.size() > 1 && written.front() == written.back()) written.pop_back();
+  return written;
+}
+
 // Shapes and the boundary: at least 3 distinct vertices, no zero-length edge, non-zero area,
 // no self-intersection. Returns the ring normalised to open + counter-clockwise.
 geometry::Ring simpleRing(const Node& node) {
-  geometry::Ring ring = node.wktRing();
-  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  geometry::Ring ring = writtenRing(node);
   std::set<std::pair<double, double>> distinct;
   for (const auto& v : ring)
     distinct.insert({v.x, v.y});
@@ -269,8 +276,7 @@ double weight(const Node& node, const char* what) {
 // "edgeWeights": one weight per edge of the shape as written (edge i from vertex i to i + 1),
 // returned in the order of the normalised ring's edges.
 std::vector<double> edgeWeights(const Node& node, const Node& shapeNode) {
-  geometry::Ring written = shapeNode.wktRing();
-  if (written.size() > 1 && written.front() == written.back()) written.pop_back();
+  const geometry::Ring written = writtenRing(shapeNode);
   const std::size_t n = written.size(), count = node.arraySize();
   if (count != n)
     node.fail(fmt::format("needs one weight per edge of the shape: {}, has {}", n, count));
@@ -334,8 +340,7 @@ MovingObject movingObject(const Node& node, bool isTarget) {
     object.angularVelocity = speed(node.child("angularVelocity"), "angularVelocity", "rad/s");
   if (node.has("deformation")) {
     // Keyframes correspond vertex by vertex to the shape as written; normalise them together.
-    geometry::Ring written = shapeNode.wktRing();
-    if (written.size() > 1 && written.front() == written.back()) written.pop_back();
+    const geometry::Ring written = writtenRing(shapeNode);
     Deformation d = deformation(node.child("deformation"), written);
     if (geometry::signedArea(written) < 0) {
       for (auto& frame : d.keyframes)
