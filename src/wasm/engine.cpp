@@ -149,6 +149,9 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
                     const std::string& posesText, int traceCamera, int reasonsFor) {
   try {
     namespace cc = camcov;
+    // A page's link may say any time (the playground's #t=): camcov inspect's range.
+    if (!(time >= 0.0 && time <= 1e9))
+      throw std::invalid_argument("time must lie in [0, 1e9] s, is " + std::to_string(time));
     last.take(sceneText, name, time);
     const cc::scene::Scene& scene = *last.scene;
     const cc::kinematics::Kinematics& kinematics = *last.kinematics;
@@ -199,29 +202,14 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
       const std::uint32_t id = cc::kinematics::obstacleId(world, i);
       out["obstacles"].push_back(placed(id, world.obstacles[i], kinematics.obstaclePose(id, time)));
     }
-    // Each camera: its field of view, and its terms alone (the team's terms of a team of one
-    // that sees what it sees, with the others' repulsion).
+    // Each camera: its field of view, and its terms alone (reward::termsAlone).
     cc::visibility::Sweep sweep;
     cc::geometry::Ring view;
     out["cameras"] = nlohmann::json::array();
     for (std::size_t j = 0; j < cameras.size(); ++j) {
       sweep.fieldOfViewPolygon(model.occluders(), cameras[j], lenses[j], view);
-      std::vector<cc::visibility::Segment> own;
-      for (cc::visibility::Segment s : segments) {
-        if ((s.visibleBy >> j & 1u) == 0) continue;
-        s.visibleBy = 1;
-        own.push_back(s);
-      }
-      cc::reward::RewardTerms t;
-      t.coverage = cc::reward::coverage(own, model.perimeter());
-      t.weightedCoverage =
-          cc::reward::coverageOf(cc::reward::weightedVisibleLength(own, world.targetEdgeWeights),
-                                 cc::reward::weightedPerimeter(world));
-      t.utilization =
-          cc::reward::utilization(own, std::span(&cameras[j], 1), std::span(&lenses[j], 1));
-      t.repulsion = cc::reward::repulsion(world, std::span(&cameras[j], 1), p.reward.d2);
-      t.reward = cc::reward::combine(p.reward, cc::reward::coverageTerm(p.reward, t), t.utilization,
-                                     t.repulsion);
+      const cc::reward::RewardTerms t =
+          cc::reward::termsAlone(world, segments, cameras, lenses, j, p.reward);
       out["cameras"].push_back({{"pose", {cameras[j].x, cameras[j].y, cameras[j].yaw}},
                                 {"halfFov", lenses[j].halfFov},
                                 {"view", points(view)},
