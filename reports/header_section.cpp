@@ -90,9 +90,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
     for (const records::Tally& t : *tallies) {
       out += fmt::format(
           "<p class=\"verdict\">On average coverage over {} scenes, {} against {}: <b>wins "
-          "{}</b>, ties {}, <b>loses {}</b>{} (the rule of docs/statistics.md: two-sided "
-          "Mann-Whitney U test over seeds, α&nbsp;=&nbsp;{}, and a difference of at least "
-          "{}).</p>\n",
+          "{}</b>, ties {}, <b>loses {}</b>{} (the rule of docs/statistics.md: {}).</p>\n",
           t.wins + t.ties + t.losses + t.undecided, escapeXml(methodStyle(t.method).label),
           escapeXml(methodStyle(t.against.empty() ? s.reference : t.against).label), t.wins, t.ties,
           t.losses,
@@ -100,7 +98,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
                                         "method at least)",
                                         t.undecided, records::seedsToReachSignificance())
                           : std::string(),
-          records::kSignificance, records::kPracticalDifference);
+          escapeXml(records::verdictRuleText()));
     }
   }
   if (!s.tallies.empty()) {

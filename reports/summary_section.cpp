@@ -187,10 +187,10 @@ std::string summarySection(const ReportData& data) {
       "verdict when the contact began (unavoidable: no admissible velocity kept δ), the runs "
       "with an avoidable contact, and the smallest distances in any run. Every method is "
       "compared with the reference, {}: Δ is its mean coverage minus the reference's; p is the "
-      "two-sided Mann-Whitney U test of the two samples; the winner is the better mean when "
-      "p &lt; {}, else a tie. Click a column title to sort (by the first method compared).</p>\n",
+      "two-sided Mann-Whitney U test of the two samples (the rule of docs/statistics.md: {}). "
+      "Click a column title to sort (by the first method compared).</p>\n",
       data.manifest.seeds, data.manifest.parameters.sim.delta, escapeXml(data.summary.reference),
-      records::kSignificance);
+      escapeXml(records::verdictRuleText()));
   for (const SceneGroup group : kSceneGroups) {
     out += groupTable(group, data);
   }

@@ -313,6 +313,14 @@ int seedsToReachSignificance() {
   return n;
 }
 
+std::string verdictRuleText() {
+  return fmt::format(
+      "two-sided Mann-Whitney U test over seeds; a method wins when p < {}, the means differ by "
+      "at least {} and its runs are the larger by the test (A12 > 0.5), else a tie; undecided "
+      "where the seeds are too few for any p to reach {}",
+      kSignificance, kPracticalDifference, kSignificance);
+}
+
 RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference) {
   const MannWhitney test = mannWhitneyU(runs, reference);
   RunsComparison c;
@@ -325,7 +333,8 @@ RunsComparison compareRuns(std::span<const double> runs, std::span<const double>
   if (smallestPValue(n1, n2) >= kSignificance) {
     c.verdict = Verdict::Undecided;
     c.seedsNeeded = seedsToReachSignificance();
-  } else if (c.pValue < kSignificance && std::abs(c.meanDifference) >= kPracticalDifference) {
+  } else if (c.pValue < kSignificance && std::abs(c.meanDifference) >= kPracticalDifference &&
+             (c.meanDifference > 0.0) == (c.a12 > 0.5)) {
     c.verdict = c.meanDifference > 0.0 ? Verdict::Better : Verdict::Worse;
   }
   return c;

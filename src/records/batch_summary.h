@@ -62,7 +62,9 @@ struct MethodSummary {
 //   undecided  the seed counts cannot reach α: even runs all above all others would give
 //              p ≥ α (3 seeds against 3: p ≥ 0.1); the verdict says how many seeds would do
 //   better / worse  the two-sided Mann-Whitney U test gives p < α AND the means differ by at
-//              least kPracticalDifference
+//              least kPracticalDifference AND in the direction the test found (A12 on the
+//              same side of 1/2): a method whose runs mostly beat the other's but whose mean
+//              is lower (a few runs far below) has neither won nor lost
 //   tie        otherwise: no evidence, or a difference too small to matter
 inline constexpr double kSignificance = 0.05;  // α
 // Average coverage is a fraction of the targets' boundary: a difference below 0.2 % of it is
@@ -80,6 +82,8 @@ struct RunsComparison {
   Interval meanDifferenceCI;    // 95 %, Welch; NaN with fewer than 2 runs on a side
   int seedsNeeded = 0;          // undecided only: seeds per method that could reach α
 };
+// The rule in one sentence, for the reports' and tables' captions (plain text).
+std::string verdictRuleText();
 // The fewest seeds per method with which the rule can decide anything (4 at α = 0.05).
 int seedsToReachSignificance();
 // Both samples must be non-empty.

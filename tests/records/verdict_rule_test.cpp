@@ -64,6 +64,23 @@ TEST(VerdictRule, ADifferenceBelowThePracticalMinimumIsATieWhateverP) {
   EXPECT_EQ(compareRuns(a, b).verdict, Verdict::Worse);
 }
 
+TEST(VerdictRule, RunsThatMostlyBeatTheOthersWithALowerMeanNeitherWinNorLose) {
+  // 18 of 20 runs above every run of the other, two far below it: the test is sure the runs
+  // differ (A12 = 0.9) and the means differ the other way by more than the minimum. Neither
+  // method is the better one; before the direction had to agree this read as a loss.
+  std::vector<double> mostlyAbove = constant(18, 0.523), steady = constant(20, 0.519);
+  mostlyAbove.push_back(0.256);
+  mostlyAbove.push_back(0.256);
+  const RunsComparison c = compareRuns(mostlyAbove, steady);
+  EXPECT_LT(c.pValue, kSignificance);
+  EXPECT_LT(c.meanDifference, -kPracticalDifference);
+  EXPECT_NEAR(c.a12, 0.9, 1e-12);
+  EXPECT_EQ(c.verdict, Verdict::Tie);
+  EXPECT_EQ(compareRuns(steady, mostlyAbove).verdict, Verdict::Tie) << "either way round";
+  // The same runs without the two far below win.
+  EXPECT_EQ(compareRuns(constant(18, 0.523), steady).verdict, Verdict::Better);
+}
+
 TEST(VerdictRule, EffectSizeIsTheShareOfPairsAboveWithTiesCountingHalf) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> value(0, 6);  // small range: many ties
