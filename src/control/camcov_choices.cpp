@@ -34,6 +34,15 @@ geometry::Pose along(std::span<const geometry::Pose> path, double u) {
   return {last.x, last.y, yaw};
 }
 
+// Each camera of `move` t seconds into it (staying at its goal once there).
+void teamAt(const TeamMove& move, double t, std::vector<geometry::Pose>& team) {
+  team.resize(move.paths.size());
+  for (std::size_t j = 0; j < team.size(); ++j) {
+    const double u = move.travel[j] > 0.0 ? std::min(1.0, t / move.travel[j]) : 1.0;
+    team[j] = along(move.paths[j], u);
+  }
+}
+
 }  // namespace
 
 double pathTravelTime(std::span<const geometry::Pose> path, const scene::CameraSpec& camera) {
@@ -56,10 +65,7 @@ double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, do
   if (!(transit > 0.0)) return arrived;
   const double end = std::min(transit, horizon);
   const auto coverageAt = [&](double t) {
-    for (std::size_t j = 0; j < team.size(); ++j) {
-      const double u = move.travel[j] > 0.0 ? std::min(1.0, t / move.travel[j]) : 1.0;
-      team[j] = along(move.paths[j], u);
-    }
+    teamAt(move, t, team);
     return coverageOf(team);
   };
   // The trapezoid rule over the transit's first `end` seconds.
@@ -75,15 +81,19 @@ double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, do
   return integral / horizon;
 }
 
-std::optional<bool> MotionWatch::see(const kinematics::World& world) {
-  std::optional<bool> moved;
-  if (seen_) {
-    moved = !(world.targets == last_.targets && world.obstacles == last_.obstacles &&
-              world.targetIds == last_.targetIds && world.obstacleIds == last_.obstacleIds);
+double forecastCoverageAhead(reward::RewardModel& model, const Forecast& forecast,
+                             const TeamMove& move, double horizon) {
+  std::vector<geometry::Pose> team;
+  double integral = 0.0, before = 0.0;
+  for (int k = 0; k <= kForecastIntervals; ++k) {
+    const double t = horizon * k / kForecastIntervals;
+    model.setWorld(forecast.at(t));
+    teamAt(move, t, team);
+    const double c = reward::coverageTerm(model.params(), model.terms(team));
+    if (k > 0) integral += 0.5 * (before + c) / kForecastIntervals;
+    before = c;
   }
-  last_ = world;
-  seen_ = true;
-  return moved;
+  return integral;
 }
 
 double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "control/motion_watch.h"
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
 #include "reward/reward_model.h"
@@ -34,16 +35,12 @@ double pathTravelTime(std::span<const geometry::Pose> path, const scene::CameraS
 double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, double horizon,
                             int samples);
 
-// Whether a target or obstacle moved (or came or went) between the last two instants seen.
-class MotionWatch {
- public:
-  // The world at the next instant; nullopt until two instants have been seen.
-  std::optional<bool> see(const kinematics::World& world);
-
- private:
-  bool seen_ = false;
-  kinematics::World last_;
-};
+// averageCoverageAhead in the worlds `forecast` foresees instead of the present one: the team
+// along `move` against Forecast::at(t) at kForecastIntervals + 1 instants evenly over the
+// horizon (trapezoid rule). Sets `model`'s world.
+inline constexpr int kForecastIntervals = 8;  // 16 changed no decision on the tune scenes
+double forecastCoverageAhead(reward::RewardModel& model, const Forecast& forecast,
+                             const TeamMove& move, double horizon);
 
 // Where camera j, following a plan, should look: of `directions` yaws evenly round and the
 // executor's `plannedYaw`, the one from which the team (camera j turned so) has the highest

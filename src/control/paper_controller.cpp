@@ -19,6 +19,8 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       variant_(variant),
       limits_(stepLimits(scene, params.sim.dt)),
       model_(params.reward, scene::lenses(scene)),
+      forecastModel_(params.reward, scene::lenses(scene)),
+      room_(geometry::boundingBox(scene.boundary)),
       validity_(params.planner.d1),
       local_(params.local, variant == Variant::Camcov && params.camcov.compass
                                ? planners::LocalOptimizer::Search::Compass
@@ -129,14 +131,26 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   // distance alone (a cliff at H left teams that start far from everything standing still).
   const double horizon =
       std::max(moving_.value_or(true) ? ours.horizon : ours.staticHorizon, longest);
-  const double go = averageCoverageAhead(model_, {goPaths, goTravel}, horizon, ours.transitSamples);
-  const double stay =
-      averageCoverageAhead(model_, {keepPaths, keepTravel}, horizon, ours.transitSamples);
+  const TeamMove goMove{goPaths, goTravel}, keepMove{keepPaths, keepTravel};
+  const double go = averageCoverageAhead(model_, goMove, horizon, ours.transitSamples);
+  double stay = averageCoverageAhead(model_, keepMove, horizon, ours.transitSamples);
+  // The candidate was sampled to fit the world as it stands, so judged there it shows its best;
+  // the committed team was not, and judged there alone it misses what is on its way into view
+  // (dynamic1: a target about to drive across a camera's field of view). So staying is also
+  // judged as things go on moving, and credited with the better of the two.
+  std::string forecastNote;
+  if (ours.forecastStay) {
+    if (const Forecast forecast = motion_.forecast(room_); forecast.moves()) {
+      const double moving = forecastCoverageAhead(forecastModel_, forecast, keepMove, horizon);
+      forecastNote = fmt::format(" ({:.4f} as things stand, {:.4f} as they move)", stay, moving);
+      stay = std::max(stay, moving);
+    }
+  }
   const bool better = go > stay + ours.margin * std::abs(stay);
   raise(observation.time, EventKind::Global, -1,
         fmt::format("global reward {:.4f} ({:.4f} sampled, travel {:.1f} s); coverage over the "
-                    "next {:g} s: {:.4f} vs {:.4f} kept: {}",
-                    reward, sampled, longest, horizon, go, stay,
+                    "next {:g} s: {:.4f} vs {:.4f} kept{}: {}",
+                    reward, sampled, longest, horizon, go, stay, forecastNote,
                     better ? kDecisionReplan : kDecisionKeep),
         {}, std::string(better ? kDecisionReplan : kDecisionKeep));
   if (better) startPlans(observation, goals, std::move(routes));

@@ -149,6 +149,12 @@ constexpr std::array kTable{
         "our method: local optimization by compass search (the best of moves by the step's "
         "limit and a quarter of it along ±x, ±y, ±γ) instead of gradient ascent",
         0, 1),
+    row<&P::camcov, &CamcovParams::forecastStay>(
+        "camcov.forecastStay", "", "",
+        "our method: judge the committed team also in the worlds forecast from the motion seen "
+        "(everything going on at its last velocity) and credit it with the better of that and "
+        "the present world; a candidate is sampled to fit the present, so it is judged there",
+        0, 1),
 };
 
 void checkValue(const ParamField& f, double v, const std::string& where) {

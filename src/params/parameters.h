@@ -93,6 +93,9 @@ struct CamcovParams {
   // Local optimization by compass search (the best of moves by the step's limit and a quarter
   // of it along ±x, ±y, ±γ) instead of the paper's gradient ascent.
   bool compass = true;
+  // Credit the committed team also with what it would see if the targets and obstacles went on
+  // as they last moved (control/motion_watch.h), taking the better of that and the present.
+  bool forecastStay = true;
 };
 
 struct Parameters {

@@ -60,16 +60,38 @@ TEST(AverageCoverageAhead, CountsTheTransitByTheTrapezoidRuleThenTheGoalToTheHor
   EXPECT_NEAR(averageCoverageAhead(model, {paths, travel}, 2.0, 1), 0.0, 1e-12);
 }
 
-TEST(MotionWatch, SaysNothingAtFirstThenWhetherAnythingMovedCameOrWent) {
+// The forecast after seeing the unit square target, then the same moved by (dx, dy) 0.1 s on.
+Forecast squareMovedBy(double dx, double dy) {
   MotionWatch watch;
   kinematics::World w = squareWorld();
-  EXPECT_FALSE(watch.see(w).has_value());
-  EXPECT_EQ(watch.see(w), std::optional<bool>(false));
-  w.targets[0][0].x += 1e-9;
-  EXPECT_EQ(watch.see(w), std::optional<bool>(true));
-  EXPECT_EQ(watch.see(w), std::optional<bool>(false));
-  w.obstacles.push_back(testing::box(5, 5, 6, 6));
-  EXPECT_EQ(watch.see(w), std::optional<bool>(true));
+  watch.see(w);
+  w.time = 0.1;
+  for (auto& p : w.targets[0])
+    p = p + geometry::Vec2{dx, dy};
+  watch.see(w);
+  return watch.forecast({{-20, -20}, {20, 20}});
+}
+
+// A camera that stays where it is, facing north.
+double stayingFacingNorth(const Forecast& forecast, double x, double horizon) {
+  reward::RewardModel model(params::RewardParams{}, kTheta);
+  const std::vector<std::vector<Pose>> paths{{{x, -5, std::numbers::pi / 2}}};
+  const std::vector<double> travel{0.0};
+  return forecastCoverageAhead(model, forecast, {paths, travel}, horizon);
+}
+
+TEST(ForecastCoverageAhead, IsThePresentCoverageWhileThingsMoveAlongTheLineOfSight) {
+  // A target going straight away (1 m/s north) from a camera that faces it keeps showing the
+  // same side: a quarter of its perimeter.
+  EXPECT_NEAR(stayingFacingNorth(squareMovedBy(0.0, 0.1), 0.5, 8.0), 0.25, 1e-12);
+}
+
+TEST(ForecastCoverageAhead, CountsOnlyTheInstantsAtWhichTheForecastTargetIsInView) {
+  // The target leaves the field of view sideways at 10 m/s (gone within 0.3 s, stopped at the
+  // room's edge x = 20, far outside the 30° half-angle): of the nine instants 0, 1, …, 8 s only
+  // the first sees it, so the trapezoid rule gives 0.5 · 0.25 / 8.
+  ASSERT_EQ(kForecastIntervals, 8);
+  EXPECT_NEAR(stayingFacingNorth(squareMovedBy(1.0, 0.0), 1.5, 8.0), 0.5 * 0.25 / 8.0, 1e-12);
 }
 
 TEST(LookoutYaw, LooksAtTheTargetWhenThereIsTimeAndKeepsThePlanWhenThereIsNot) {

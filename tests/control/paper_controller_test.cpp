@@ -161,5 +161,36 @@ TEST(CamcovMethod, TakesAFarBetterGoalThoughTheTripOutlastsTheHorizon) {
   EXPECT_NEAR(window, travel, 0.05 + 1e-3 * travel) << global.detail;
 }
 
+TEST(CamcovMethod, StaysWhereATargetIsAboutToDriveIntoView) {
+  // The published dynamic1: a slow camera that sees nothing yet, a target driving east at
+  // 1 m/s towards its field of view. Judged in the world as it stands, staying sees nothing and
+  // a far trip wins; as the target goes on moving, staying sees it come.
+  const scene::Scene s = testing::sceneFromJson(R"js({
+    "boundary": "POLYGON((-15 -15,15 -15,15 15,-15 15))",
+    "targets": [{"shape": "POLYGON((-2 -1,2 1,2 -1))", "path": "POLYGON((0 0,10 0,10 5))",
+                 "velocity": 1.0}],
+    "cameraFoV": 30,
+    "cameras": [{"pos": "POINT(14 -5)", "angle": 120, "maxVelocity": 0.5,
+                 "maxAngularVelocity": 0.1}]})js");
+  const auto firstGlobal = [&s](bool forecastStay) {
+    params::Parameters p;
+    p.sim.duration = 0.2;
+    p.camcov.forecastStay = forecastStay;
+    PaperController controller(s, p, 1, PaperController::Variant::Camcov);
+    EventLog log;
+    sim::simulate(s, p, controller, log);
+    for (const auto& e : log.events) {
+      if (e.kind == "global") return e;
+    }
+    return ControlEvent{};
+  };
+  const ControlEvent standing = firstGlobal(false);
+  EXPECT_EQ(standing.reason, "replan") << standing.detail;
+  EXPECT_NE(standing.detail.find("vs 0.0000 kept"), std::string::npos) << standing.detail;
+  const ControlEvent moving = firstGlobal(true);
+  EXPECT_EQ(moving.reason, "keep") << moving.detail;
+  EXPECT_NE(moving.detail.find("(0.0000 as things stand"), std::string::npos) << moving.detail;
+}
+
 }  // namespace
 }  // namespace camcov::control
