@@ -1,8 +1,8 @@
 #pragma once
 // The pieces our method (`--method camcov`; docs/method.md, "Our method") adds to
 // the paper's loop in PaperController: how a global candidate is judged against what the team
-// is committed to, whether anything in the scene moves, and where a camera following a plan
-// looks on the way.
+// is committed to (in the present world, and for staying also in the worlds the motion seen
+// forecasts: motion_watch.h), and where a camera following a plan looks on the way.
 #include <cstdint>
 #include <optional>
 #include <span>
