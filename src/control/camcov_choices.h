@@ -38,7 +38,7 @@ double averageCoverageAhead(reward::RewardModel& model, const TeamMove& move, do
 // averageCoverageAhead in the worlds `forecast` foresees instead of the present one: the team
 // along `move` against Forecast::at(t) at kForecastIntervals + 1 instants evenly over the
 // horizon (trapezoid rule). Sets `model`'s world.
-inline constexpr int kForecastIntervals = 8;  // 16 changed no decision on the tune scenes
+inline constexpr int kForecastIntervals = 8;  // 16: the same means to 1e-4 (docs/method.md)
 double forecastCoverageAhead(reward::RewardModel& model, const Forecast& forecast,
                              const TeamMove& move, double horizon);
 

@@ -12,24 +12,26 @@ geometry::Vec2 centre(const geometry::Ring& ring) {
   return (b.min + b.max) * 0.5;
 }
 
-// Per ring of `now`, the velocity of its centre since `before`, matched by scene id (both id
-// lists ascend: the scene's order with the absent left out); 0 for a ring that has just come.
-std::vector<geometry::Vec2> velocities(const std::vector<geometry::Ring>& now,
-                                       const std::vector<std::uint32_t>& nowIds,
-                                       const std::vector<geometry::Ring>& before,
-                                       const std::vector<std::uint32_t>& beforeIds, double dt) {
-  std::vector<geometry::Vec2> v(now.size(), geometry::Vec2{0.0, 0.0});
+// Per target (`rings` = &World::targets, `idOf` = kinematics::targetId) or obstacle of `now`,
+// the velocity of its centre since `before`, matched by scene id (ids ascend: the scene's order
+// with the absent left out); 0 for one that has just come.
+std::vector<geometry::Vec2> velocities(const kinematics::World& now,
+                                       const kinematics::World& before,
+                                       std::vector<geometry::Ring> kinematics::World::*rings,
+                                       std::uint32_t (*idOf)(const kinematics::World&,
+                                                             std::size_t)) {
+  const auto& nowRings = now.*rings;
+  const auto& beforeRings = before.*rings;
+  std::vector<geometry::Vec2> v(nowRings.size());
+  const double dt = now.time - before.time;
   if (!(dt > 0.0)) return v;
-  const auto idOf = [](const std::vector<std::uint32_t>& ids, std::size_t i) {
-    return ids.empty() ? static_cast<std::uint32_t>(i) : ids[i];
-  };
   std::size_t k = 0;
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    while (k < before.size() && idOf(beforeIds, k) < idOf(nowIds, i))
+  for (std::size_t i = 0; i < nowRings.size(); ++i) {
+    const std::uint32_t id = idOf(now, i);
+    while (k < beforeRings.size() && idOf(before, k) < id)
       ++k;
-    if (k < before.size() && idOf(beforeIds, k) == idOf(nowIds, i)) {
-      v[i] = (centre(now[i]) - centre(before[k])) * (1.0 / dt);
-    }
+    if (k < beforeRings.size() && idOf(before, k) == id)
+      v[i] = (centre(nowRings[i]) - centre(beforeRings[k])) * (1.0 / dt);
   }
   return v;
 }
@@ -82,11 +84,13 @@ std::optional<bool> MotionWatch::see(const kinematics::World& world) {
 }
 
 Forecast MotionWatch::forecast(const geometry::Box& room) const {
-  const double dt = seen_ < 2 ? 0.0 : last_.time - before_.time;
+  if (seen_ < 2) {  // no motion seen yet: everything stands
+    return Forecast(last_, std::vector<geometry::Vec2>(last_.targets.size()),
+                    std::vector<geometry::Vec2>(last_.obstacles.size()), room);
+  }
   return Forecast(
-      last_, velocities(last_.targets, last_.targetIds, before_.targets, before_.targetIds, dt),
-      velocities(last_.obstacles, last_.obstacleIds, before_.obstacles, before_.obstacleIds, dt),
-      room);
+      last_, velocities(last_, before_, &kinematics::World::targets, kinematics::targetId),
+      velocities(last_, before_, &kinematics::World::obstacles, kinematics::obstacleId), room);
 }
 
 }  // namespace camcov::control

@@ -20,7 +20,6 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       limits_(stepLimits(scene, params.sim.dt)),
       model_(params.reward, scene::lenses(scene)),
       forecastModel_(params.reward, scene::lenses(scene)),
-      room_(geometry::boundingBox(scene.boundary)),
       validity_(params.planner.d1),
       local_(params.local, variant == Variant::Camcov && params.camcov.compass
                                ? planners::LocalOptimizer::Search::Compass
@@ -140,7 +139,8 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   // judged as things go on moving, and credited with the better of the two.
   std::string forecastNote;
   if (ours.forecastStay) {
-    if (const Forecast forecast = motion_.forecast(room_); forecast.moves()) {
+    if (const Forecast forecast = motion_.forecast(geometry::boundingBox(scene_.boundary));
+        forecast.moves()) {
       const double moving = forecastCoverageAhead(forecastModel_, forecast, keepMove, horizon);
       forecastNote = fmt::format(" ({:.4f} as things stand, {:.4f} as they move)", stay, moving);
       stay = std::max(stay, moving);

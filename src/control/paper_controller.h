@@ -95,7 +95,6 @@ class PaperController final : public Controller {
   std::vector<scene::StepLimits> limits_;
   reward::RewardModel model_;
   reward::RewardModel forecastModel_;  // ours: the worlds the motion seen forecasts
-  geometry::Box room_;                 // the boundary's box, where forecast motion stops
   // One more model per thread the run may use (util/run_threads.h), for Algorithm 2's scores.
   std::vector<reward::RewardModel> helpers_;
   planners::StateValidity validity_;
