@@ -31,14 +31,22 @@ std::string meanSd(const records::Description& d, bool best) {
   return best ? "<b>" + text + "</b>" : text;
 }
 
-// A weighted scene's runs (their importance-weighted coverage beside the plain one, which the
-// verdicts compare): under the plain mean.
-std::string weightedLine(const records::MethodSummary& m) {
-  if (m.weightedCoverage.count == 0) return "";
-  return fmt::format(
-      "<br><span class=\"muted\" title=\"average importance-weighted coverage (edgeWeights, "
-      "frontWeight)\">weighted {}</span>",
-      meanSd(m.weightedCoverage, false));
+// The coverages some scenes record beside the plain one, which the verdicts compare: a weighted
+// scene's importance-weighted coverage, a scene with a resolution's resolution coverage; each a
+// line under the plain mean.
+std::string extraCoverageLines(const records::MethodSummary& m) {
+  std::string lines;
+  const auto line = [&](const records::Description& d, const char* title, const char* label) {
+    if (d.count == 0) return;
+    lines += fmt::format("<br><span class=\"muted\" title=\"{}\">{} {}</span>", title, label,
+                         meanSd(d, false));
+  };
+  line(m.weightedCoverage, "average importance-weighted coverage (edgeWeights, frontWeight)",
+       "weighted");
+  line(m.resolutionCoverage,
+       "average resolution coverage: boundary seen with the pixel density the scene asks for",
+       "resolved");
+  return lines;
 }
 
 std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool bestUtilization) {
@@ -56,7 +64,7 @@ std::string methodRow(const records::MethodSummary& m, bool bestCoverage, bool b
       "<td class=\"num\">{} / {}</td>",
       methodMark(style.color, escapeXml(m.method)),
       m.failed == 0 ? std::to_string(m.runs) : fmt::format("{} ({} failed)", m.runs, m.failed),
-      meanSd(m.coverage, bestCoverage), weightedLine(m), number(m.coverage.median, 3),
+      meanSd(m.coverage, bestCoverage), extraCoverageLines(m), number(m.coverage.median, 3),
       meanSd(m.utilization, bestUtilization), number(m.utilization.median, 3),
       number(m.meanObjectCollisionTime, 2), number(m.meanCameraCollisionTime, 2),
       number(m.meanAvoidableContactTime, 2), number(m.meanUnavoidableContactTime, 2),

@@ -106,6 +106,20 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
   cmd.add_option("--fov", o.scene.cameraHalfFovDeg, "half-angle field of view θ, degrees")
       ->check(within(0.1, 179.9))
       ->capture_default_str();
+  cmd.add_option("--image-width", o.scene.imageWidth,
+                 "pixels across every camera's field of view (Full HD by default); 0: no image "
+                 "model, so no resolution coverage")
+      ->check(within(0, static_cast<int>(scene::kMaxImageWidth)))
+      ->capture_default_str();
+  cmd.add_option("--min-density", o.scene.minDensity,
+                 "pixels per metre of boundary a covered edge needs (EN 62676-4's observation "
+                 "density by default)")
+      ->check(within(0.0, scene::kMaxMinDensity, false))
+      ->capture_default_str();
+  cmd.add_option("--sensing-range", o.scene.sensingRange,
+                 "every camera's sensing range, m; default: the farthest a face-on edge is "
+                 "resolved (image width / field of view / min density); 0: unlimited")
+      ->check(within(0.0, scene::kMaxCoordinate));
   cmd.add_option("--front-weight", o.scene.frontWeight,
                  "how many times a person's front counts in weighted coverage (1: no front)")
       ->check(within(0.0, scene::kMaxWeight))

@@ -51,6 +51,12 @@ int run(const RunOptions& o) {
         "  average weighted coverage {:.4f} (the reward's{})\n", *s.averageWeightedCoverage,
         job.parameters.reward.weighted ? "" : " is plain: reward.weighted=false");
   }
+  if (s.averageResolutionCoverage) {
+    std::cout << fmt::format(
+        "  average resolution coverage {:.4f} (boundary seen with enough "
+        "pixels: the scene's resolution)\n",
+        *s.averageResolutionCoverage);
+  }
   if (!o.video.empty()) {
     viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,
                        viz::runVideoSettings(record));

@@ -43,6 +43,26 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   return norm2(p - closestPointOnSegment(p, a, b));
 }
 
+bool discOnSegment(Vec2 centre, double radius, Vec2 a, Vec2 b, double& t0, double& t1) {
+  t0 = 0.0;
+  t1 = 1.0;
+  if (radius == std::numeric_limits<double>::infinity()) return true;
+  // |f + t·d|² = r² with f = a − centre, d = b − a: t²·d·d + 2t·f·d + f·f − r² = 0.
+  const Vec2 d = b - a, f = a - centre;
+  const double dd = dot(d, d), fd = dot(f, d);
+  const double c = dot(f, f) - radius * radius;
+  if (dd == 0.0) return c <= 0.0;
+  const double discriminant = fd * fd - dd * c;
+  if (discriminant < 0.0) return false;
+  // The root of larger magnitude first, then the other from their product: no cancellation.
+  const double q = -(fd + std::copysign(std::sqrt(discriminant), fd));
+  double lo = q / dd, hi = q != 0.0 ? c / q : lo;
+  if (lo > hi) std::swap(lo, hi);
+  t0 = std::max(lo, 0.0);
+  t1 = std::min(hi, 1.0);
+  return t0 < t1;
+}
+
 double distanceBetweenSegments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segmentsIntersect(a, b, c, d)) return 0.0;
   // Disjoint segments are closest at an endpoint of one of them.

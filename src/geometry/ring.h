@@ -30,6 +30,10 @@ Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p);
 double distanceToBoundary(std::span<const Vec2> ring, Vec2 p);
 // Shortest distance between closed segments [a, b] and [c, d] (0 if they touch).
 double distanceBetweenSegments(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+// The parameters [t0, t1] ⊆ [0, 1] of the points a + t (b − a) within `radius` of `centre` (a
+// disc meets a segment in one piece); false if none, or only a single point. An infinite radius
+// gives [0, 1].
+bool discOnSegment(Vec2 centre, double radius, Vec2 a, Vec2 b, double& t0, double& t1);
 // Shortest distance from segment [a, b] to the ring's boundary (0 if it touches or crosses).
 double distanceSegmentToBoundary(std::span<const Vec2> ring, Vec2 a, Vec2 b);
 // Distance from p to the closed polygon: 0 inside, else the distance to the boundary.

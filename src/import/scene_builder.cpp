@@ -350,11 +350,26 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
   for (const auto& t : kept.movingObstacles)
     scene.obstacles.push_back(tracked(t, o.ballRadius));
   scene.halfFovDegrees = o.cameraHalfFovDeg;
+  const bool imaged = o.imageWidth > 0;
+  if (imaged) scene.resolution = scene::ResolutionRequirement{o.minDensity, false};
+  const double reach =
+      imaged ? mm(o.imageWidth / (2.0 * geometry::degToRad(o.cameraHalfFovDeg)) / o.minDensity)
+             : 0.0;
+  const double range = o.sensingRange.value_or(reach);
   for (const auto& p : cameraTeam(o, box, solid)) {
     scene.cameras.push_back({{mm(p.x), mm(p.y)},
                              std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0,
                              o.cameraSpeed,
-                             o.cameraTurnRate});
+                             o.cameraTurnRate,
+                             range > 0.0 ? std::optional(range) : std::nullopt,
+                             imaged ? std::optional<double>(o.imageWidth) : std::nullopt});
+  }
+  if (imaged) {
+    built.notes.push_back(fmt::format(
+        "cameras: {} pixels across {:g}°, resolving {:g} pixels per metre up to {:g} m face-on; "
+        "sensing range {} (--image-width, --min-density, --sensing-range)",
+        o.imageWidth, 2.0 * o.cameraHalfFovDeg, o.minDensity, reach,
+        range > 0.0 ? fmt::format("{:g} m", range) : std::string("unlimited")));
   }
   built.scene = scene::sceneJson(scene);
   return built;

@@ -44,6 +44,14 @@ struct SceneOptions {
   double cameraSpeed = 2.0;                                // m/s, v_max
   double cameraTurnRate = 1.0;                             // rad/s, γ̇_max
   double cameraHalfFovDeg = 30.0;                          // θ, degrees
+  // The cameras as a real rig has them (docs/scene-format.md, "Resolution", gives the sources):
+  // a Full HD image, W = 1920 pixels across the field of view (0: no image model), and the
+  // density EN 62676-4 asks to observe what a person does, 62.5 pixels per metre.
+  int imageWidth = 1920;
+  double minDensity = 62.5;
+  // r_j, m; none: the farthest a face-on edge is still resolved, W / 2θ / ρ_min (unlimited
+  // without an image model); 0: unlimited.
+  std::optional<double> sensingRange;
   // A person's front (their face and chest: who they are and what they do) counts this many
   // times the rest of them, within this half-angle of where they are going
   // (scene::FrontWeighting); 1: no front. Not the ball's.

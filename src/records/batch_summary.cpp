@@ -166,7 +166,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
   m.scene = scene;
   m.method = method;
   m.minObjectDistance = m.minCameraDistance = std::numeric_limits<double>::infinity();
-  std::vector<double> utilization, finalCoverage, weightedCoverage;
+  std::vector<double> utilization, finalCoverage, weightedCoverage, resolutionCoverage;
   std::vector<std::pair<double, std::uint64_t>> bySeed;
   for (const JobOutcome* job : jobs) {
     if (job->failed) {
@@ -179,6 +179,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
     utilization.push_back(s.averageUtilization);
     if (!std::isnan(s.finalCoverage)) finalCoverage.push_back(s.finalCoverage);
     if (s.averageWeightedCoverage) weightedCoverage.push_back(*s.averageWeightedCoverage);
+    if (s.averageResolutionCoverage) resolutionCoverage.push_back(*s.averageResolutionCoverage);
     bySeed.push_back({s.averageCoverage, job->seed});
     m.meanObjectCollisionTime += s.objectCollisionTime;
     m.meanCameraCollisionTime += s.cameraCollisionTime;
@@ -205,6 +206,7 @@ MethodSummary summarizeMethod(const std::string& scene, const std::string& metho
   m.utilization = describe(utilization);
   m.finalCoverage = describe(finalCoverage);
   m.weightedCoverage = describe(weightedCoverage);
+  m.resolutionCoverage = describe(resolutionCoverage);
   return m;
 }
 
@@ -387,6 +389,8 @@ nlohmann::json summaryToJson(const BatchSummary& summary) {
                             {"bestSeed", m.bestSeed}});
     if (m.weightedCoverage.count > 0)
       j["methods"].back()["averageWeightedCoverage"] = describeJson(m.weightedCoverage);
+    if (m.resolutionCoverage.count > 0)
+      j["methods"].back()["averageResolutionCoverage"] = describeJson(m.resolutionCoverage);
   }
   j["scenes"] = summary.scenes;
   j["reference"] = summary.reference;
@@ -475,6 +479,8 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       if (m.contains("finalCoverage")) ms.finalCoverage = describedFrom(m.at("finalCoverage"));
       if (m.contains("averageWeightedCoverage"))
         ms.weightedCoverage = describedFrom(m.at("averageWeightedCoverage"));
+      if (m.contains("averageResolutionCoverage"))
+        ms.resolutionCoverage = describedFrom(m.at("averageResolutionCoverage"));
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
       ms.runsWithCollision = m.at("runsWithCollision").get<int>();

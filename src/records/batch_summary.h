@@ -40,6 +40,8 @@ struct MethodSummary {
   // Of the runs' average weighted coverage (sim::RunSummary): a weighted scene's; count 0
   // elsewhere.
   Description weightedCoverage;
+  // Of the runs' average resolution coverage: a scene's with a resolution; count 0 elsewhere.
+  Description resolutionCoverage;
   double meanObjectCollisionTime = 0.0;  // s below δ, mean over runs
   double meanCameraCollisionTime = 0.0;
   int runsWithCollision = 0;  // runs with any time below δ

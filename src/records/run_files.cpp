@@ -48,6 +48,10 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
     s.averageWeightedCoverage = j.at("averageWeightedCoverage").get<double>();
   if (j.contains("finalWeightedCoverage"))
     s.finalWeightedCoverage = j.at("finalWeightedCoverage").get<double>();
+  if (j.contains("averageResolutionCoverage"))
+    s.averageResolutionCoverage = j.at("averageResolutionCoverage").get<double>();
+  if (j.contains("finalResolutionCoverage"))
+    s.finalResolutionCoverage = j.at("finalResolutionCoverage").get<double>();
   return s;
 }
 
@@ -74,6 +78,9 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
   // Only weighted scenes have weighted coverage; the same.
   if (s.averageWeightedCoverage) j["averageWeightedCoverage"] = *s.averageWeightedCoverage;
   if (s.finalWeightedCoverage) j["finalWeightedCoverage"] = *s.finalWeightedCoverage;
+  // Only scenes with a resolution have resolution coverage; the same.
+  if (s.averageResolutionCoverage) j["averageResolutionCoverage"] = *s.averageResolutionCoverage;
+  if (s.finalResolutionCoverage) j["finalResolutionCoverage"] = *s.finalResolutionCoverage;
   return j;
 }
 
@@ -134,6 +141,12 @@ nlohmann::json runToJson(const RunRecord& run) {
     for (const StepRow& row : run.steps)
       series["weightedCoverage"].push_back(row.terms.weightedCoverage);
   }
+  // Runs of scenes with a resolution (RunSummary::averageResolutionCoverage) record it too.
+  if (run.summary.averageResolutionCoverage) {
+    series["resolutionCoverage"] = nlohmann::json::array();
+    for (const StepRow& row : run.steps)
+      series["resolutionCoverage"].push_back(row.resolutionCoverage);
+  }
   // Scenes whose targets come and go (recorded tracks) say how many are present at each step.
   if (!run.steps.empty() && run.steps.front().targetsPresent >= 0) {
     series["targetsPresent"] = nlohmann::json::array();
@@ -187,6 +200,8 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       row.terms.weightedCoverage = series.contains("weightedCoverage")
                                        ? series.at("weightedCoverage").at(k).get<double>()
                                        : row.terms.coverage;
+      if (series.contains("resolutionCoverage"))
+        row.resolutionCoverage = series.at("resolutionCoverage").at(k).get<double>();
       row.terms.utilization = series.at("utilization").at(k).get<double>();
       row.terms.repulsion = series.at("repulsion").at(k).get<double>();
       row.terms.reward = series.at("reward").at(k).get<double>();
@@ -244,6 +259,8 @@ std::string runToCsv(const RunRecord& run) {
       "unavoidable_contact_time";
   const bool weighted = run.summary.averageWeightedCoverage.has_value();
   if (weighted) csv += ",weighted_coverage";
+  const bool resolution = run.summary.averageResolutionCoverage.has_value();
+  if (resolution) csv += ",resolution_coverage";
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
   for (std::size_t c = 0; c < cameras; ++c)
     csv += fmt::format(",cam{0}_x,cam{0}_y,cam{0}_yaw", c);
@@ -255,6 +272,7 @@ std::string runToCsv(const RunRecord& run) {
                        row.minCameraDistanceInStep, row.avoidableContactTime,
                        row.unavoidableContactTime);
     if (weighted) csv += fmt::format(",{}", row.terms.weightedCoverage);
+    if (resolution) csv += fmt::format(",{}", row.resolutionCoverage);
     for (const auto& p : row.cameras)
       csv += fmt::format(",{},{},{}", p.x, p.y, p.yaw);
     csv += '\n';

@@ -8,6 +8,7 @@ void RunRecorder::step(const sim::StepRecord& step) {
   StepRow row;
   row.time = step.time;
   row.terms = step.terms;
+  row.resolutionCoverage = step.resolutionCoverage;
   row.minObjectDistance = step.minObjectDistance;
   row.minCameraDistance = step.minCameraDistance;
   row.minObjectDistanceInStep = step.minObjectDistanceInStep;

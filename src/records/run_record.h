@@ -27,7 +27,8 @@ struct RunMetadata {
 struct StepRow {
   double time = 0.0;
   reward::RewardTerms terms;
-  double minObjectDistance = 0.0;  // at the sample
+  double resolutionCoverage = 0.0;  // sim::StepRecord's: a scene with a resolution only
+  double minObjectDistance = 0.0;   // at the sample
   double minCameraDistance = 0.0;
   double minObjectDistanceInStep = 0.0;  // over the step that ended here, continuous time
   double minCameraDistanceInStep = 0.0;

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geometry/ring.h"
 #include "scene/scene_writer.h"
 
 namespace camcov::scene {
@@ -16,23 +17,7 @@ bool Lens::sees(geometry::Vec2 offset, double yaw) const {
 
 bool Lens::rangeOnSegment(geometry::Vec2 camera, geometry::Vec2 a, geometry::Vec2 b, double& t0,
                           double& t1) const {
-  t0 = 0.0;
-  t1 = 1.0;
-  if (!limited()) return true;
-  // |f + t·d|² = r² with f = a − camera, d = b − a: t²·d·d + 2t·f·d + f·f − r² = 0.
-  const geometry::Vec2 d = b - a, f = a - camera;
-  const double dd = geometry::dot(d, d), fd = geometry::dot(f, d);
-  const double c = geometry::dot(f, f) - range * range;
-  if (dd == 0.0) return c <= 0.0;
-  const double discriminant = fd * fd - dd * c;
-  if (discriminant < 0.0) return false;
-  // The root of larger magnitude first, then the other from their product: no cancellation.
-  const double q = -(fd + std::copysign(std::sqrt(discriminant), fd));
-  double lo = q / dd, hi = q != 0.0 ? c / q : lo;
-  if (lo > hi) std::swap(lo, hi);
-  t0 = std::max(lo, 0.0);
-  t1 = std::min(hi, 1.0);
-  return t0 < t1;
+  return geometry::discOnSegment(camera, range, a, b, t0, t1);
 }
 
 bool CameraCommand::isFinite() const {
@@ -70,6 +55,7 @@ nlohmann::json describeCamera(const CameraSpec& camera) {
                    {"maxAngularVelocity", camera.maxAngularVelocity},
                    {"cameraFoV", writtenDegrees(camera.lens.halfFov)}};
   if (camera.lens.limited()) j["sensingRange"] = camera.lens.range;
+  if (camera.lens.hasImage()) j["imageWidth"] = camera.lens.imageWidth;
   return j;
 }
 

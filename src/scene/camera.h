@@ -30,8 +30,15 @@ struct Lens {
 
   double halfFov;                  // θ_j, radians, in (0, π)
   double range = kUnlimitedRange;  // r_j, metres, > 0: nothing farther is seen
+  // W_j, pixels across the field of view 2θ_j (our extension, for resolution-aware coverage);
+  // 0: the camera has no image model. It changes what counts as covered, never what is seen.
+  double imageWidth = 0.0;
 
   bool limited() const { return range < kUnlimitedRange; }
+  bool hasImage() const { return imageWidth > 0.0; }
+  // k_j = W_j / 2θ_j: an equidistant (f-θ) image spreads its pixels evenly over the angles of
+  // the field of view (resolution_coverage.h says why this model and not the pinhole's).
+  double pixelsPerRadian() const { return imageWidth / (2.0 * halfFov); }
   bool withinRange(double distance) const { return distance <= range; }
   // Whether a point at `offset` from a camera facing `yaw` is in view: in the wedge, in range.
   bool sees(geometry::Vec2 offset, double yaw) const;
@@ -45,8 +52,18 @@ struct Lens {
 
 // Bit-for-bit equality, for the caches keyed by a camera's lens (geometry/same_bits.h).
 inline bool sameBits(const Lens& a, const Lens& b) {
-  return geometry::sameBits(a.halfFov, b.halfFov) && geometry::sameBits(a.range, b.range);
+  return geometry::sameBits(a.halfFov, b.halfFov) && geometry::sameBits(a.range, b.range) &&
+         geometry::sameBits(a.imageWidth, b.imageWidth);
 }
+
+// What a scene asks of the images for a piece of target boundary to count as covered (our
+// extension, the paper's future work on resolution): a pixel density ρ_min, pixels per metre of
+// boundary, reached by some camera that sees it. `proportional`: a point seen at density ρ
+// counts min(1, ρ/ρ_min) instead of all or nothing.
+struct ResolutionRequirement {
+  double minDensity = 0.0;  // ρ_min, pixels per metre, > 0
+  bool proportional = false;
+};
 
 // What moves a camera: its velocity u_j = ṗ_j. Controllers produce it, the plan executor
 // computes it, the safety layer and the simulator consume it.
@@ -82,8 +99,8 @@ struct CameraSpec {
 // A camera as every output shows it (`camcov state`, the explorer's camera panel, Python's
 // `Scene.cameras`), in the scene file's keys and units: x and y (m), angle (yaw, degrees),
 // maxVelocity, maxAngularVelocity, cameraFoV (θ, degrees) and, for a limited lens,
-// sensingRange (m). One description, so a property added to the camera is shown everywhere
-// by adding it here.
+// sensingRange (m), for a camera with an image model imageWidth (pixels). One description, so a
+// property added to the camera is shown everywhere by adding it here.
 nlohmann::json describeCamera(const CameraSpec& camera);
 
 // One Euler step of ṗ = u over dt, the yaw wrapped to [-π, π].

@@ -97,6 +97,10 @@ struct Scene {
   // "duration" (our extension), s: how long a run of it lasts unless the caller says (an
   // imported recording's window; sim/run_length.h).
   std::optional<double> duration;
+  // "resolution" (our extension): what the images must resolve for boundary to count as covered
+  // (reward/resolution_coverage.h); then every camera has an image model (Lens::imageWidth), and
+  // its records carry resolution coverage beside the plain one.
+  std::optional<ResolutionRequirement> resolution;
   // What the loader found wrong but allowed ("targets[3]: leaves the boundary: …"), for
   // `camcov validate` to print.
   std::vector<std::string> warnings;

@@ -70,6 +70,10 @@ class Node {
     if (!std::isfinite(v)) fail("number is not finite");
     return v;
   }
+  bool boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false, found " + typeName());
+    return value_.get<bool>();
+  }
   std::string string() const {
     if (!value_.is_string()) fail("expected a string, found " + typeName());
     return value_.get<std::string>();
@@ -419,12 +423,39 @@ double sensingRange(const Node& node) {
   return r;
 }
 
-// `sceneHalfFov` is the scene's "cameraFoV", which a camera's own key overrides.
-CameraSpec camera(const Node& node, double sceneHalfFov) {
-  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV", "sensingRange"});
+// A camera's image width W_j in pixels (our extension, for resolution-aware coverage): a whole
+// number from 1 to kMaxImageWidth.
+double imageWidth(const Node& node) {
+  const double w = positive(node, "imageWidth", "pixels");
+  if (w != std::floor(w) || w > kMaxImageWidth)
+    node.fail(fmt::format("imageWidth must be a whole number of pixels from 1 to {:g}, is {}",
+                          kMaxImageWidth, w));
+  return w;
+}
+
+// What a scene asks of its images: {"minDensity": ρ_min in pixels per metre, "proportional":
+// false}.
+ResolutionRequirement resolutionRequirement(const Node& node) {
+  node.object({"minDensity", "proportional"});
+  ResolutionRequirement requirement;
+  const Node density = node.child("minDensity");
+  requirement.minDensity = positive(density, "minDensity", "pixels per metre");
+  if (requirement.minDensity > kMaxMinDensity)
+    density.fail(fmt::format("minDensity {} pixels per metre lies beyond {:g}",
+                             requirement.minDensity, kMaxMinDensity));
+  if (node.has("proportional")) requirement.proportional = node.child("proportional").boolean();
+  return requirement;
+}
+
+// `sceneLens` is the scene's "cameraFoV" and "imageWidth", which a camera's own keys override.
+CameraSpec camera(const Node& node, const Lens& sceneLens) {
+  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV", "sensingRange",
+               "imageWidth"});
   CameraSpec camera;
-  camera.lens = node.has("cameraFoV") ? halfFov(node.child("cameraFoV")) : sceneHalfFov;
+  camera.lens = sceneLens;
+  if (node.has("cameraFoV")) camera.lens.halfFov = halfFov(node.child("cameraFoV"));
   if (node.has("sensingRange")) camera.lens.range = sensingRange(node.child("sensingRange"));
+  if (node.has("imageWidth")) camera.lens.imageWidth = imageWidth(node.child("imageWidth"));
   const geometry::Vec2 pos = node.child("pos").wktPoint();
   const double yawDegrees = node.child("angle").number();
   camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
@@ -447,7 +478,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   }
   const Node root(document, "", sourceName);
   root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch",
-               "duration"});
+               "duration", "imageWidth", "resolution"});
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -487,10 +518,16 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"), problems, false);
   });
 
-  // A camera without its own field of view takes the scene's; if that is bad, the cameras
-  // are still read (with any valid one) for their own problems.
-  double sceneHalfFov = geometry::degToRad(30.0);
-  problems.attempt([&] { sceneHalfFov = halfFov(root.child("cameraFoV")); });
+  // A camera without its own field of view or image width takes the scene's; if that is bad,
+  // the cameras are still read (with any valid one) for their own problems.
+  Lens sceneLens(geometry::degToRad(30.0));
+  problems.attempt([&] { sceneLens.halfFov = halfFov(root.child("cameraFoV")); });
+  problems.attempt([&] {
+    if (root.has("imageWidth")) sceneLens.imageWidth = imageWidth(root.child("imageWidth"));
+  });
+  problems.attempt([&] {
+    if (root.has("resolution")) scene.resolution = resolutionRequirement(root.child("resolution"));
+  });
 
   problems.attempt([&] {
     const Node cameras = root.child("cameras");
@@ -501,7 +538,19 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
                    std::to_string(cameraCount));
     }
     for (std::size_t i = 0; i < cameraCount; ++i)
-      problems.attempt([&] { scene.cameras.push_back(camera(cameras.element(i), sceneHalfFov)); });
+      problems.attempt([&] { scene.cameras.push_back(camera(cameras.element(i), sceneLens)); });
+  });
+  // An image model and a requirement go together: either alone would say nothing.
+  problems.attempt([&] {
+    const bool required = scene.resolution.has_value();
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+      if (scene.cameras[i].lens.hasImage() == required) continue;
+      root.child("cameras").element(i).fail(
+          required ? "the scene's resolution needs every camera's imageWidth (pixels across "
+                     "its field of view), here or at the top level"
+                   : "imageWidth has no effect without the scene's \"resolution\": "
+                     "{\"minDensity\": …} (pixels per metre a covered edge needs)");
+    }
   });
   // Where the file's structure is wrong, placing its objects would judge a scene that is not
   // the one written.

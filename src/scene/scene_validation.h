@@ -22,6 +22,10 @@ inline constexpr double kMaxSpeed = 1e4;       // m/s and rad/s, every velocity,
 inline constexpr double kMaxYawDegrees = 1e6;
 // Importance weights ("edgeWeights", "frontWeight") are relative: at most 1e6 times each other.
 inline constexpr double kMaxWeight = 1e6;
+// The widest image a camera may have, in pixels, and the finest density a scene may ask for, in
+// pixels per metre: far beyond any sensor, and within them every density stays finite.
+inline constexpr double kMaxImageWidth = 1e6;
+inline constexpr double kMaxMinDensity = 1e9;
 // A target's front without "frontAngle": the edges whose outward normal is within 60° of the
 // direction of motion — the face and chest of a person, not the flanks, which a camera at the
 // side sees only at a grazing angle (docs/scene-format.md, "Importance weights").

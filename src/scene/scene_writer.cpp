@@ -52,10 +52,13 @@ nlohmann::json objectJson(const MovingObject& object) {
 }
 
 nlohmann::json cameraJson(const CameraEntry& camera) {
-  return {{"pos", wktPoint(camera.position)},
-          {"angle", camera.yawDegrees},
-          {"maxVelocity", camera.maxVelocity},
-          {"maxAngularVelocity", camera.maxAngularVelocity}};
+  nlohmann::json j{{"pos", wktPoint(camera.position)},
+                   {"angle", camera.yawDegrees},
+                   {"maxVelocity", camera.maxVelocity},
+                   {"maxAngularVelocity", camera.maxAngularVelocity}};
+  if (camera.sensingRange) j["sensingRange"] = *camera.sensingRange;
+  if (camera.imageWidth) j["imageWidth"] = *camera.imageWidth;
+  return j;
 }
 
 nlohmann::json sceneJson(const WrittenScene& file) {
@@ -65,6 +68,10 @@ nlohmann::json sceneJson(const WrittenScene& file) {
   if (file.pitch) scene["pitch"] = {{"length", file.pitch->length}, {"width", file.pitch->width}};
   if (file.duration) scene["duration"] = *file.duration;
   scene["cameraFoV"] = file.halfFovDegrees;
+  if (file.resolution) {
+    scene["resolution"] = {{"minDensity", file.resolution->minDensity}};
+    if (file.resolution->proportional) scene["resolution"]["proportional"] = true;
+  }
   for (const char* key : {"targets", "obstacles", "cameras"})
     scene[key] = nlohmann::json::array();
   for (const MovingObject& o : file.targets)

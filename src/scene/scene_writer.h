@@ -21,8 +21,10 @@ namespace camcov::scene {
 struct CameraEntry {
   geometry::Vec2 position;
   double yawDegrees = 0.0;
-  double maxVelocity = 0.0;         // m/s
-  double maxAngularVelocity = 0.0;  // rad/s
+  double maxVelocity = 0.0;            // m/s
+  double maxAngularVelocity = 0.0;     // rad/s
+  std::optional<double> sensingRange;  // m; none: sees without limit
+  std::optional<double> imageWidth;    // pixels across the field of view; none: no image model
 };
 
 // What a written scene holds. Objects keep the in-memory form (MovingObject), whose units are
@@ -33,6 +35,7 @@ struct WrittenScene {
   std::optional<Pitch> pitch;
   std::optional<double> duration;  // s: how long a run of it lasts (an imported window)
   double halfFovDegrees = 0.0;     // the scene's cameraFoV: θ, half the field of view
+  std::optional<ResolutionRequirement> resolution;  // with every camera's imageWidth
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;
   std::vector<CameraEntry> cameras;

@@ -10,6 +10,7 @@
 
 #include "control/event_kind.h"
 #include "kinematics/kinematics.h"
+#include "reward/resolution_coverage.h"
 #include "reward/reward_model.h"
 #include "safety/safety_filter.h"
 #include "safety/step_contacts.h"
@@ -99,7 +100,8 @@ struct Simulation::State {
   State(const scene::Scene& scene, const params::Parameters& params)
       : scene(scene),
         kinematics(scene),
-        measure(params.reward, scene::lenses(scene)),
+        lenses(scene::lenses(scene)),
+        measure(params.reward, lenses),
         safety(scene, params),
         accounting(kinematics, params.sim.delta),
         dt(params.sim.dt),
@@ -107,6 +109,7 @@ struct Simulation::State {
 
   const scene::Scene& scene;
   const kinematics::Kinematics kinematics;
+  const std::vector<scene::Lens> lenses;
   reward::RewardModel measure;
   safety::SafetyFilter safety;
   const safety::StepAccounting accounting;
@@ -123,6 +126,7 @@ struct Simulation::State {
   std::vector<std::uint32_t> presentBefore;  // the targets present one step before
   int intervalsWithoutTargets = 0;
   reward::RewardTerms previous;
+  double previousResolution = 0.0;  // StepRecord::resolutionCoverage one step before
   RunSummary summary;
 };
 
@@ -139,6 +143,7 @@ Simulation::Simulation(const scene::Scene& scene, const params::Parameters& para
   s.summary.duration = steps_ * s.dt;
   s.summary.minObjectDistance = s.summary.minCameraDistance = kInf;
   if (scene.isWeighted()) s.summary.averageWeightedCoverage = 0.0;
+  if (scene.resolution) s.summary.averageResolutionCoverage = 0.0;
   measure();
 }
 
@@ -167,6 +172,10 @@ void Simulation::measure() {
   record.index = k;
   record.time = t;
   record.terms = s.measure.evaluate(cameras_);
+  if (s.scene.resolution) {
+    record.resolutionCoverage = reward::resolutionCoverage(
+        s.measure.segments(), cameras_, s.lenses, *s.scene.resolution, s.measure.perimeter());
+  }
   RunSummary& summary = s.summary;
   if (s.comesAndGoes) {
     record.targetsPresent = static_cast<int>(s.world.targets.size());
@@ -191,10 +200,12 @@ void Simulation::measure() {
       // trapezoid rule, eq. (4)
       const double dt = s.dt;
       summary.averageCoverage += 0.5 * (s.previous.coverage + record.terms.coverage) * dt;
-      if (summary.averageWeightedCoverage) {
-        *summary.averageWeightedCoverage +=
-            0.5 * (s.previous.weightedCoverage + record.terms.weightedCoverage) * dt;
-      }
+      const auto integrate = [dt](std::optional<double>& average, double before, double now) {
+        if (average) *average += 0.5 * (before + now) * dt;
+      };
+      integrate(summary.averageWeightedCoverage, s.previous.weightedCoverage,
+                record.terms.weightedCoverage);
+      integrate(summary.averageResolutionCoverage, s.previousResolution, record.resolutionCoverage);
       summary.averageUtilization += 0.5 * (s.previous.utilization + record.terms.utilization) * dt;
       summary.averageReward += 0.5 * (s.previous.reward + record.terms.reward) * dt;
     }
@@ -223,6 +234,7 @@ void Simulation::measure() {
     s.presentBefore = now;
   }
   s.previous = record.terms;
+  s.previousResolution = record.resolutionCoverage;
   s.previousSample = std::move(sample);
 }
 
@@ -287,22 +299,29 @@ RunSummary Simulation::summary() const {
   summary.finalCoverage = s.previous.coverage;
   // Without gaps this is steps · dt exactly, so runs without tracks keep their bytes.
   const double measured = (steps_ - s.intervalsWithoutTargets) * s.dt;
-  auto& weighted = summary.averageWeightedCoverage;
+  // The coverages only some scenes record, each with its value at the last step.
+  const std::pair<std::optional<double>*, double> someScenesOnly[] = {
+      {&summary.averageWeightedCoverage, s.previous.weightedCoverage},
+      {&summary.averageResolutionCoverage, s.previousResolution}};
   if (measured > 0.0) {
     summary.averageCoverage /= measured;
     summary.averageUtilization /= measured;
     summary.averageReward /= measured;
-    if (weighted) *weighted /= measured;
+    for (const auto& [average, last] : someScenesOnly)
+      if (*average) **average /= measured;
   } else if (summary.duration > 0.0) {
     summary.averageCoverage = summary.averageUtilization = summary.averageReward = 0.0;
-    if (weighted) weighted = 0.0;
+    for (const auto& [average, last] : someScenesOnly)
+      if (*average) *average = 0.0;
   } else {
     summary.averageCoverage = s.previous.coverage;
     summary.averageUtilization = s.previous.utilization;
     summary.averageReward = s.previous.reward;
-    if (weighted) weighted = s.previous.weightedCoverage;
+    for (const auto& [average, last] : someScenesOnly)
+      if (*average) *average = last;
   }
-  if (weighted) summary.finalWeightedCoverage = s.previous.weightedCoverage;
+  if (summary.averageWeightedCoverage) summary.finalWeightedCoverage = s.previous.weightedCoverage;
+  if (summary.averageResolutionCoverage) summary.finalResolutionCoverage = s.previousResolution;
   return summary;
 }
 

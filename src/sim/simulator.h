@@ -23,6 +23,9 @@ struct StepRecord {
   int index = 0;
   double time = 0.0;
   reward::RewardTerms terms;
+  // Coverage with resolution (reward/resolution_coverage.h) of a scene that asks for it
+  // (scene::Scene::resolution); 0 elsewhere.
+  double resolutionCoverage = 0.0;
   std::span<const geometry::Pose> cameras;
   std::span<const std::optional<geometry::Pose>> goals;
   double minObjectDistance = 0.0;  // closest camera to any target or obstacle, m, at t
@@ -54,6 +57,10 @@ struct RunSummary {
   // them (scene::Scene::isWeighted); none otherwise, so such runs' records stay as they were.
   std::optional<double> averageWeightedCoverage;
   std::optional<double> finalWeightedCoverage;
+  // The same two with resolution (StepRecord::resolutionCoverage), for a scene that asks for it;
+  // none otherwise.
+  std::optional<double> averageResolutionCoverage;
+  std::optional<double> finalResolutionCoverage;
   // Safety, measured in continuous time (safety/step_contacts.h), whatever the layer did.
   double minObjectDistance = 0.0;  // over the whole run, m
   double minCameraDistance = 0.0;

@@ -138,6 +138,37 @@ TEST(ImportLastRow, PlayersHaveAFrontTheBallDoesNot) {
   EXPECT_FALSE(fs::exists(dir / "i.json"));
 }
 
+TEST(ImportLastRow, CamerasComeAsARealRigHasThemUnlessTold) {
+  const ScratchDir dir;
+  const std::string csv = (kTracks / "lastrow_extract.csv").string();
+  // Full HD over 2θ = 50°, 62.5 pixels per metre: a face-on edge is resolved up to
+  // 1920 / (50° in radians) / 62.5 = 35.203 m, every camera's sensing range.
+  const nlohmann::json scene = importScene("lastrow " + csv + " --fov 25", dir / "a.json");
+  EXPECT_EQ(scene["resolution"], nlohmann::json({{"minDensity", 62.5}}));
+  const double reach = std::round(1920.0 / (50.0 * std::acos(-1.0) / 180.0) / 62.5 * 1e3) / 1e3;
+  for (const auto& camera : scene["cameras"]) {
+    EXPECT_EQ(camera["imageWidth"], 1920.0);
+    EXPECT_EQ(camera["sensingRange"], reach);
+  }
+  const nlohmann::json told = importScene(
+      "lastrow " + csv + " --image-width 4000 --min-density 25 --sensing-range 50", dir / "b.json");
+  EXPECT_EQ(told["resolution"]["minDensity"], 25.0);
+  EXPECT_EQ(told["cameras"][0]["imageWidth"], 4000.0);
+  EXPECT_EQ(told["cameras"][0]["sensingRange"], 50.0);
+  // No image model, no range: the paper's cameras.
+  const nlohmann::json plain =
+      importScene("lastrow " + csv + " --image-width 0 --sensing-range 0", dir / "c.json");
+  EXPECT_FALSE(plain.contains("resolution"));
+  EXPECT_FALSE(plain["cameras"][0].contains("imageWidth"));
+  EXPECT_FALSE(plain["cameras"][0].contains("sensingRange"));
+  for (const char* bad : {"--image-width 19.5", "--min-density 0", "--sensing-range -1"}) {
+    const auto r =
+        runCamcov("import lastrow " + csv + " " + bad + " -o " + (dir / "d.json").string());
+    EXPECT_EQ(r.exitCode, 2) << bad;
+    EXPECT_FALSE(fs::exists(dir / "d.json"));
+  }
+}
+
 TEST(ImportEthUcy, PedestriansEnterAndLeaveWallsBecomeObstaclesAndTheWindowCuts) {
   const ScratchDir dir;
   const fs::path out = dir / "zara.json";

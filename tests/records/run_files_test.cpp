@@ -66,6 +66,25 @@ TEST(RunFiles, CsvHasOneRowPerStepAndAColumnPerPoseComponent) {
       << csv;
 }
 
+TEST(RunFiles, AResolutionRunRecordsItsSeriesSummaryAndCsvColumn) {
+  RunRecord run = sampleRun();
+  run.summary.averageResolutionCoverage = 0.125;
+  run.summary.finalResolutionCoverage = 0.25;
+  run.steps[0].resolutionCoverage = 0.0;
+  run.steps[1].resolutionCoverage = 0.25;
+  const nlohmann::json j = runToJson(run);
+  EXPECT_EQ(j["summary"]["averageResolutionCoverage"], 0.125);
+  EXPECT_EQ(j["series"]["resolutionCoverage"], nlohmann::json::array({0.0, 0.25}));
+  const RunRecord back = runFromJson(j, "memory");
+  EXPECT_EQ(runToJson(back), j);
+  EXPECT_EQ(back.steps[1].resolutionCoverage, 0.25);
+  const std::string csv = runToCsv(run);
+  EXPECT_NE(csv.find("unavoidable_contact_time,resolution_coverage,cam0_x"), std::string::npos);
+  // A run without a resolution has none of it.
+  EXPECT_FALSE(runToJson(sampleRun())["series"].contains("resolutionCoverage"));
+  EXPECT_FALSE(runToJson(sampleRun())["summary"].contains("averageResolutionCoverage"));
+}
+
 TEST(RunFiles, RejectsDocumentsThatAreNotRuns) {
   EXPECT_THROW(runFromJson(nlohmann::json::parse(R"({"format": "other"})"), "x"), InputError);
   EXPECT_THROW(runFromJson(nlohmann::json::parse(R"({"a": 1})"), "x"), InputError);

@@ -103,6 +103,12 @@ const BadCase kBadCases[] = {
     {"front_weight_negative", "targets[0].frontWeight", "must lie in [0, 1000000]"},
     {"front_angle_without_weight", "targets[0].frontAngle", "frontAngle needs frontWeight"},
     {"front_angle_out_of_range", "targets[0].frontAngle", "(0, 180] degrees, is 270°"},
+    // An image model and a resolution go together; each well formed.
+    {"image_width_without_resolution", "cameras[0]", "imageWidth has no effect without"},
+    {"resolution_without_image_width", "cameras[1]", "needs every camera's imageWidth"},
+    {"image_width_fraction", "imageWidth", "a whole number of pixels from 1 to 1e+06, is 1920.5"},
+    {"min_density_zero", "resolution.minDensity", "minDensity must be positive"},
+    {"resolution_proportional_not_boolean", "resolution.proportional", "expected true or false"},
 };
 
 class BadScene : public ::testing::TestWithParam<BadCase> {};

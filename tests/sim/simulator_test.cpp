@@ -1,11 +1,13 @@
 #include "sim/simulator.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -187,6 +189,32 @@ TEST(Simulate, AveragesAreTheTrapezoidRuleOfTheRecordedSeries) {
     integral += 0.5 * (recorder.coverage[k - 1] + recorder.coverage[k]) * p.sim.dt;
   }
   EXPECT_NEAR(s.averageCoverage, integral / 3.0, 1e-12);
+}
+
+TEST(Simulate, RecordsResolutionCoverageForASceneThatAsksForIt) {
+  // A camera 5 m below the 2 m square's bottom edge, facing it: it sees that edge alone (0.25
+  // of the perimeter). k = W / 2θ; at x along the edge ρ = 5k / (25 + x²), and with ρ_min =
+  // 5k / 25.5 the edge is resolved where x² ≤ 0.5: 2√0.5 m of the 8 m perimeter.
+  const double k = 1000.0 / (std::numbers::pi / 3);
+  const scene::Scene scene = testing::sceneFromJson(fmt::format(R"js({{
+    "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+    "targets": [{{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((0 0))"}}],
+    "cameraFoV": 30, "imageWidth": 1000, "resolution": {{"minDensity": {}}},
+    "cameras": [{{"pos": "POINT(0 -6)", "angle": 90, "maxVelocity": 2,
+                  "maxAngularVelocity": 1}}]}})js",
+                                                                5.0 * k / 25.5));
+  params::Parameters p;
+  p.sim.duration = 1.0;
+  ConstantController still({{0, 0}, 0});
+  KeepingRecorder recorder;
+  const RunSummary s = simulate(scene, p, still, recorder);
+  EXPECT_NEAR(s.averageCoverage, 0.25, 1e-12);
+  ASSERT_TRUE(s.averageResolutionCoverage.has_value());
+  EXPECT_NEAR(*s.averageResolutionCoverage, 2.0 * std::sqrt(0.5) / 8.0, 1e-12);
+  EXPECT_NEAR(*s.finalResolutionCoverage, 2.0 * std::sqrt(0.5) / 8.0, 1e-12);
+  // A scene without one records none.
+  const RunSummary plain = simulate(oneTargetScene(), p, still, recorder);
+  EXPECT_FALSE(plain.averageResolutionCoverage.has_value());
 }
 
 TEST(Simulate, MeasuresCollisionTimeBelowDelta) {
