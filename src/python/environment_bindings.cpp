@@ -338,7 +338,8 @@ void bindEnvironment(py::module_& m) {
           },
           py::arg("episodes"), py::arg("actions"), py::arg("sizes"), py::arg("targets") = "index",
           "Steps every episode with its row of actions (N, K, 3); returns their new "
-          "observations (N, size) float32 (team view) and terms (N, 4): coverage (as the "
+          "observations (N, size) float32 (team view; targets as Episode.observation takes "
+          "it) and terms (N, 4): coverage (as the "
           "reward takes it: weighted where the scene has importance weights), "
           "utilization, repulsion, reward.");
 

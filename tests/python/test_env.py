@@ -121,6 +121,9 @@ def test_gymnasium_make_and_make_vec_build_the_registered_environments(scenes):
     for x, y in zip(a[:4], b[:4]):
         assert np.array_equal(x, y)
     assert set(a[4]) == set(b[4])
+    # A config names the module to import: nothing needs importing camcov.env first.
+    prefixed = gymnasium.make("camcov.env:camcov/Coverage-v0", scene=scenes["dynamic9"])
+    assert prefixed.spec.id == "camcov/Coverage-v0"
     parallel = E.make("camcov/CoverageParallel-v0", scene=scenes["dynamic9"], params=SHORT)
     assert isinstance(parallel, E.CoverageParallelEnv)
     with pytest.raises(ValueError, match="id: expected one of camcov/Coverage-v0"):

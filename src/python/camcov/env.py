@@ -174,12 +174,6 @@ class Episodes:
         self.seed = None      # the run seed of the episode now running (policy() uses it)
         self.count = 0        # episodes started: a policy makes its controller anew for each
 
-    @property
-    def observation_size(self):
-        """Floats in an observation: the layout of docs/python.md at these sizes."""
-        cameras, targets, obstacles, vertices = self.sizes
-        return 4 + 10 * cameras + (5 + 2 * vertices) * targets + (2 + 2 * vertices) * obstacles
-
     def observation_bounds(self):
         """(low, high), float32: the bounds of every float of an observation."""
         return camcov.observation_bounds(self.sizes)
