@@ -3,7 +3,8 @@
     python3 examples/env_cross_entropy.py [SCENE] [--iterations N] [--population N] [--seed N]
 
 The policy maps the environment's observation (camcov.env's documented vector) to the team's
-commands: action = tanh(W · observation + b) scaled to each camera's limits. Each iteration
+commands: action = tanh(W · observation + b), normalized (the environment scales 1 to each
+camera's own limit). Each iteration
 draws a population of (W, b) from a Gaussian, runs one episode with each, and refits the
 Gaussian to the best fifth (the elite). Printed per iteration: the elite's mean average
 coverage and that of the Gaussian's mean. On tests/data/scenes/tiny_dynamic.json, whose camera
@@ -25,10 +26,9 @@ def average_coverage(env, theta, seed):
     cameras = env.action_space.shape[0]
     weights = theta[:3 * cameras * size].reshape(3 * cameras, size)
     bias = theta[3 * cameras * size:]
-    limits = env.action_space.high
     observation, _ = env.reset(seed=seed, options={"seed": seed})
     while True:
-        action = np.tanh(weights @ observation + bias).reshape(cameras, 3) * limits
+        action = np.tanh(weights @ observation + bias).reshape(cameras, 3)
         observation, _, terminated, truncated, info = env.step(action)
         if terminated or truncated:
             return info["summary"]["averageCoverage"]

@@ -13,11 +13,20 @@
 //   per obstacle slot   2 + 2·V floats: present, its vertex count / V, V vertices x, y
 //
 // Positions are in the room's frame: (p − c) / L, c the centre of the boundary's bounding
-// box and L half its longer side, so the room spans [−1, 1] along its longer side. Slot i of
-// targets (obstacles) is the scene's target (obstacle) i: a recorded person absent at t
-// leaves the slot's present flag 0 and the rest zero. Slots beyond the scene's counts are
-// zero. A camera's own view (View::own) keeps its own slot first, shows no other camera and
-// no obstacle, and only the targets it sees some of, with the share it sees.
+// box and L half its longer side, so the room spans [−1, 1] along its longer side. With
+// TargetSlots::byIndex, slot i of targets is the scene's target i: a recorded person absent
+// at t leaves the slot's present flag 0 and the rest zero. With TargetSlots::nearest, the
+// slots hold the targets present at t, nearest first (the distance from a target's centroid
+// to the nearest camera of the view), as many as fit: a crowd whose people come and go is
+// observed in a size of the caller's choosing. Obstacle slot i is the scene's obstacle i.
+// Slots beyond what is there are zero. A camera's own view (View::own) keeps its own slot
+// first and its teammates after it in their order, shows no obstacle, and only the targets
+// it sees some of, with the share it sees.
+//
+// Every float lies within observationBounds(): a value past its field's bound (an object
+// more than a half-side outside the room's box, a sensing range longer than the room, a
+// repulsion beyond kRewardBound) is clamped to it, so that learning libraries get the finite
+// box they expect.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -27,12 +36,16 @@
 
 namespace camcov::environment {
 
-// What an encoding pads to: at least the counts of every scene it will encode.
+enum class TargetSlots { byIndex, nearest };
+
+// What an encoding pads to: at least the counts of every scene it will encode (targets: any
+// number with TargetSlots::nearest, which keeps the nearest that fit).
 struct EncodingSizes {
   std::size_t cameras = 0;
   std::size_t targets = 0;
   std::size_t obstacles = 0;
   std::size_t vertices = 0;  // V: of the largest target or obstacle ring
+  TargetSlots targetSlots = TargetSlots::byIndex;
 
   static constexpr std::size_t kGlobal = 4;
   static constexpr std::size_t kPerCamera = 10;
@@ -51,6 +64,17 @@ struct EncodingSizes {
 };
 
 enum class View { team, own };
+
+// The fields' bounds: positions (room frame) within ±kPositionBound, lengths over L (v_max,
+// sensing range) within [0, kLengthBound], yaw rates within [0, kRateBound] rad/s, the reward
+// within ±kRewardBound; shares, flags, cos and sin, t / duration within their natural ranges.
+inline constexpr float kPositionBound = 2.0f;
+inline constexpr float kLengthBound = 4.0f;
+inline constexpr float kRateBound = 10.0f;
+inline constexpr float kRewardBound = 10.0f;
+
+// Writes every float's lowest and highest value into `low` and `high` (each sizes.size()).
+void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high);
 
 // Writes the episode's present instant into `out` (size sizes.size()); `camera` is the
 // camera whose view it is for View::own. std::invalid_argument if the scene does not fit.

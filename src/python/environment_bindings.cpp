@@ -45,10 +45,16 @@ struct PythonEpisode {
   viz::Frame frame;
 };
 
-EncodingSizes sizesFrom(const std::vector<std::size_t>& s) {
+// `targets`: how the target slots are filled, "index" (slot i: the scene's target i) or
+// "nearest" (the targets present, nearest first).
+EncodingSizes sizesFrom(const std::vector<std::size_t>& s, const std::string& targets) {
   if (s.size() != 4)
     throw py::value_error("sizes: expected (cameras, targets, obstacles, vertices)");
-  const EncodingSizes sizes{s[0], s[1], s[2], s[3]};
+  if (targets != "index" && targets != "nearest")
+    throw py::value_error("targets: expected \"index\" or \"nearest\", got \"" + targets + "\"");
+  const EncodingSizes sizes{
+      s[0], s[1], s[2], s[3],
+      targets == "nearest" ? environment::TargetSlots::nearest : environment::TargetSlots::byIndex};
   try {
     sizes.check();
   } catch (const std::invalid_argument& error) {
@@ -176,10 +182,10 @@ void bindEnvironment(py::module_& m) {
       .def(
           "observation",
           [](const PythonEpisode& e, const std::vector<std::size_t>& sizes, const std::string& view,
-             std::size_t camera) {
+             std::size_t camera, const std::string& targets) {
             if (view != "team" && view != "own")
               throw py::value_error("view: expected \"team\" or \"own\", got \"" + view + "\"");
-            const EncodingSizes s = sizesFrom(sizes);
+            const EncodingSizes s = sizesFrom(sizes, targets);
             FloatArray out(static_cast<py::ssize_t>(s.size()));
             try {
               environment::encodeObservation(
@@ -191,8 +197,11 @@ void bindEnvironment(py::module_& m) {
             return out;
           },
           py::arg("sizes"), py::arg("view") = "team", py::arg("camera") = 0,
+          py::arg("targets") = "index",
           "The present instant encoded as float32 (the layout of docs/python.md), padded to "
-          "sizes = (cameras, targets, obstacles, vertices); view \"own\": what `camera` sees.")
+          "sizes = (cameras, targets, obstacles, vertices); view \"own\": what `camera` sees, "
+          "its teammates after it; targets \"nearest\": the target slots hold the targets "
+          "present, nearest first, as many as fit.")
       .def(
           "frame",
           [](PythonEpisode& e, int width, int height, const std::string& subtitle) {
@@ -216,6 +225,19 @@ void bindEnvironment(py::module_& m) {
       py::arg("scene"),
       "The smallest (cameras, targets, obstacles, vertices) an observation of the scene pads "
       "to.");
+  m.def(
+      "observation_bounds",
+      [](const std::vector<std::size_t>& sizes) {
+        const EncodingSizes s = sizesFrom(sizes, "index");
+        FloatArray low(static_cast<py::ssize_t>(s.size())),
+            high(static_cast<py::ssize_t>(s.size()));
+        environment::observationBounds(s, std::span(low.mutable_data(), s.size()),
+                                       std::span(high.mutable_data(), s.size()));
+        return py::make_tuple(low, high);
+      },
+      py::arg("sizes"),
+      "(low, high): the bounds, float32, of every float of an observation padded to sizes = "
+      "(cameras, targets, obstacles, vertices); the encoding clamps to them.");
 
   py::class_<environment::MethodPolicy>(
       m, "MethodPolicy",
@@ -261,8 +283,8 @@ void bindEnvironment(py::module_& m) {
           "step",
           [](environment::EpisodeStepper& stepper,
              const std::vector<std::shared_ptr<PythonEpisode>>& episodes, const py::handle& actions,
-             const std::vector<std::size_t>& sizes) {
-            const EncodingSizes s = sizesFrom(sizes);
+             const std::vector<std::size_t>& sizes, const std::string& targets) {
+            const EncodingSizes s = sizesFrom(sizes, targets);
             const Array a = Array::ensure(actions);
             const std::size_t n = episodes.size();
             if (!a || a.ndim() != 3 || static_cast<std::size_t>(a.shape(0)) != n ||
@@ -314,9 +336,10 @@ void bindEnvironment(py::module_& m) {
             }
             return py::make_tuple(observations, termArray);
           },
-          py::arg("episodes"), py::arg("actions"), py::arg("sizes"),
+          py::arg("episodes"), py::arg("actions"), py::arg("sizes"), py::arg("targets") = "index",
           "Steps every episode with its row of actions (N, K, 3); returns their new "
-          "observations (N, size) float32 (team view) and terms (N, 4): coverage (as the "
+          "observations (N, size) float32 (team view; targets as Episode.observation takes "
+          "it) and terms (N, 4): coverage (as the "
           "reward takes it: weighted where the scene has importance weights), "
           "utilization, repulsion, reward.");
 

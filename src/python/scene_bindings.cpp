@@ -83,6 +83,14 @@ void bindScene(py::module_& m) {
 
   py::class_<PythonScene, std::shared_ptr<PythonScene>>(
       m, "Scene", "A validated scene (camcov.load_scene, camcov.parse_scene).")
+      // Nothing changes a scene once loaded: a copy is the scene itself (gymnasium.make
+      // deep-copies its keywords, scenes among them).
+      .def(
+          "__copy__", [](std::shared_ptr<PythonScene> s) { return s; },
+          "The scene itself: scenes do not change.")
+      .def(
+          "__deepcopy__", [](std::shared_ptr<PythonScene> s, const py::object&) { return s; },
+          py::arg("memo"), "The scene itself: scenes do not change.")
       .def_property_readonly(
           "name", [](const PythonScene& s) { return s.scene.name; },
           "The file's stem, e.g. 'dynamic9': how runs and reports name the scene.")

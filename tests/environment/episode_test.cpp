@@ -92,15 +92,77 @@ TEST(Episode, TheObservationIsTheDocumentedLayout) {
   EXPECT_FLOAT_EQ(obstacle[2], 0.45f);  // (5 − 0.5) / 10
   EXPECT_EQ(out.size(), EncodingSizes::kGlobal + 3 * 10 + 2 * 17 + 2 * 14);
 
-  // Camera 1's own view: itself in the first slot, no other camera, no obstacle.
+  // Camera 1's own view: itself in the first slot, its teammate after it, no obstacle.
   encodeObservation(episode, sizes, View::own, 1, out);
   EXPECT_FLOAT_EQ(camera[1], 0.6f);
-  EXPECT_EQ(camera[EncodingSizes::kPerCamera], 0.0f);
+  EXPECT_EQ(camera[EncodingSizes::kPerCamera], 1.0f);
+  EXPECT_FLOAT_EQ(camera[EncodingSizes::kPerCamera + 1], -0.6f);
+  EXPECT_EQ(camera[2 * EncodingSizes::kPerCamera], 0.0f);
   EXPECT_EQ(obstacle[0], 0.0f);
 
   const EncodingSizes small{1, 1, 1, 4};
   std::vector<float> tooSmall(small.size());
   EXPECT_THROW(encodeObservation(episode, small, View::team, 0, tooSmall), std::invalid_argument);
+}
+
+// Two targets: a square about (0, 0), 8.5 m from the nearest camera, and one about (3, 3),
+// 4.2 m from the camera at (6, 6); that camera senses 100 m, five times the room's side.
+constexpr const char* kTwoTargetsScene = R"js({
+  "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((0 0))"},
+              {"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((3 3))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-6 -6)", "angle": 225, "maxVelocity": 2, "maxAngularVelocity": 1},
+              {"pos": "POINT(6 6)", "angle": 0, "maxVelocity": 2, "maxAngularVelocity": 1,
+               "sensingRange": 100}]})js";
+
+TEST(Episode, NearestTargetSlotsHoldThePresentTargetsNearestFirstAsManyAsFit) {
+  const auto scene = std::make_shared<const scene::Scene>(testing::sceneFromJson(kTwoTargetsScene));
+  Episode episode(scene, shortRun(1.0));
+  EncodingSizes sizes{2, 1, 0, 4, TargetSlots::nearest};
+  std::vector<float> out(sizes.size());
+  encodeObservation(episode, sizes, View::team, 0, out);
+  const std::size_t first = EncodingSizes::kGlobal + 2 * EncodingSizes::kPerCamera;
+  const float* target = out.data() + first;
+  EXPECT_EQ(target[0], 1.0f);
+  EXPECT_FLOAT_EQ(target[2], 0.3f);  // the square about (3, 3): (3 − 0) / 10
+  EXPECT_FLOAT_EQ(target[3], 0.3f);
+
+  sizes.targets = 3;  // room for both, and a padded slot
+  out.assign(sizes.size(), -1.0f);
+  encodeObservation(episode, sizes, View::team, 0, out);
+  target = out.data() + first;
+  EXPECT_FLOAT_EQ(target[2], 0.3f);
+  EXPECT_FLOAT_EQ(target[sizes.perTarget() + 2], 0.0f);  // then the one about (0, 0)
+  EXPECT_EQ(target[sizes.perTarget()], 1.0f);
+  EXPECT_EQ(target[2 * sizes.perTarget()], 0.0f);
+
+  // By index, one slot cannot hold the scene's two targets.
+  const EncodingSizes byIndex{2, 1, 0, 4};
+  std::vector<float> small(byIndex.size());
+  EXPECT_THROW(encodeObservation(episode, byIndex, View::team, 0, small), std::invalid_argument);
+}
+
+TEST(Episode, EveryFloatLiesWithinTheDeclaredBoundsClampedWherePast) {
+  const auto scene = std::make_shared<const scene::Scene>(testing::sceneFromJson(kTwoTargetsScene));
+  Episode episode(scene, shortRun(1.0));
+  const EncodingSizes sizes{3, 3, 1, 6};
+  std::vector<float> out(sizes.size()), low(sizes.size()), high(sizes.size());
+  observationBounds(sizes, low, high);
+  for (const View view : {View::team, View::own}) {
+    encodeObservation(episode, sizes, view, 1, out);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      EXPECT_LE(low[k], out[k]) << k;
+      EXPECT_LE(out[k], high[k]) << k;
+    }
+  }
+  encodeObservation(episode, sizes, View::team, 0, out);
+  const float* second = out.data() + EncodingSizes::kGlobal + EncodingSizes::kPerCamera;
+  EXPECT_EQ(second[8], kLengthBound);  // 100 m over L = 10 m: clamped
+  EXPECT_EQ(high[EncodingSizes::kGlobal + EncodingSizes::kPerCamera + 8], kLengthBound);
+  EXPECT_EQ(low[EncodingSizes::kGlobal + 1], -kPositionBound);  // a camera's x
+  EXPECT_EQ(low[0], 0.0f);                                      // t / duration
+  EXPECT_EQ(high[0], 1.0f);
 }
 
 TEST(Episode, OwnTermsAreTheTeamsTermsOfACameraAlone) {

@@ -26,6 +26,7 @@ if not (VENDOR / "gymnasium").is_dir():
 sys.path.insert(0, str(VENDOR))
 
 import camcov.env as E  # noqa: E402
+import gymnasium  # noqa: E402
 from gymnasium.utils.env_checker import check_env  # noqa: E402
 from pettingzoo.test import parallel_api_test, parallel_seed_test  # noqa: E402
 
@@ -39,38 +40,253 @@ def scenes(published):
             "dynamic1": published("dynamic1"), "u_rooms": E.family("u_rooms", "tune", 3)}
 
 
-def quietly(check, *args, **kwargs):
-    """Runs a checker, its warnings about unbounded Boxes aside (positions of objects that may
-    leave the room, and the reward's repulsion, have no honest finite bound)."""
+def strictly(check, *args, **kwargs):
+    """Runs a checker with every warning an error: camcov's environments give it none."""
     with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=".*Box observation space (minimum|maximum)")
-        warnings.filterwarnings("ignore", message=".*not having a spec")
+        warnings.simplefilter("error")
         return check(*args, **kwargs)
 
 
-@pytest.mark.parametrize("name", ["dynamic9", "static14", "dynamic1", "u_rooms"])
-def test_gymnasiums_checker_passes(scenes, name):
-    quietly(check_env, E.CoverageEnv(scenes[name], params=SHORT), skip_render_check=False)
+@pytest.fixture(scope="module")
+def recorded(cli, tmp_path_factory):
+    """A recorded crowd whose people come and go: scenes/real/eth_univ.json if made, else
+    made from ../shared/tracks as scripts/make_real_scenes.sh makes it."""
+    made = REPO / "scenes" / "real" / "eth_univ.json"
+    if made.is_file():
+        return str(made)
+    tracks = REPO.parent / "shared" / "tracks" / "pedestrians" / "eth_univ"
+    if not tracks.is_dir():
+        pytest.skip(f"no recorded tracks at {tracks}")
+    out = tmp_path_factory.mktemp("real") / "eth_univ.json"
+    result = cli("import", "ethucy", tracks, "--fps", 15, "--busiest", 60, "--cameras", 6,
+                 "--camera-speed", 1.5, "--camera-turn", 1, "--fov", 30, "-o", out)
+    assert result.returncode == 0, result.stderr
+    return str(out)
+
+
+COMES_AND_GOES = str(REPO / "tests" / "data" / "scenes_tracks" / "comes_and_goes.json")
+CROWD = str(REPO / "scenes" / "crowd_large_room.json")  # 8 cameras of three speed limits
+
+
+CHECKED = ["dynamic9", "static14", "dynamic1", "u_rooms", "comes_and_goes"]
+
+
+def scene_of(scenes, name):
+    return COMES_AND_GOES if name == "comes_and_goes" else scenes[name]
+
+
+@pytest.mark.parametrize("name", CHECKED)
+@pytest.mark.parametrize("options", [{}, {"action_units": "physical", "targets": 2}])
+def test_gymnasiums_checker_passes_without_a_warning(scenes, name, options):
+    env = gymnasium.make("camcov/Coverage-v0", scene=scene_of(scenes, name), params=SHORT,
+                         **options)
+    strictly(check_env, env.unwrapped, skip_render_check=False)
 
 
 def test_gymnasiums_checker_passes_with_images_and_rendering(scenes):
-    env = E.CoverageEnv(scenes["dynamic9"], params=SHORT, observation="image",
-                        image_size=(64, 48), render_mode="rgb_array", render_size=(160, 120))
-    quietly(check_env, env, skip_render_check=False)
+    env = gymnasium.make("camcov/Coverage-v0", scene=scenes["dynamic9"], params=SHORT,
+                         observation="image", image_size=(64, 48), render_mode="rgb_array",
+                         render_size=(160, 120))
+    strictly(check_env, env.unwrapped, skip_render_check=False)
     observation, _ = env.reset(seed=1)
     assert observation.shape == (48, 64, 3) and observation.dtype == np.uint8
     assert env.render().shape == (120, 160, 3)
 
 
-@pytest.mark.parametrize("name", ["dynamic9", "static14", "dynamic1", "u_rooms"])
+@pytest.mark.parametrize("name", CHECKED)
 @pytest.mark.parametrize("view,agent_reward", [("team", "team"), ("own", "own")])
-def test_pettingzoos_checkers_pass(scenes, name, view, agent_reward):
+def test_pettingzoos_checkers_pass_without_a_warning(scenes, name, view, agent_reward):
     def make():
-        return E.CoverageParallelEnv(scenes[name], params=SHORT, view=view,
-                                     agent_reward=agent_reward)
+        return E.make("camcov/CoverageParallel-v0", scene=scene_of(scenes, name), params=SHORT,
+                      view=view, agent_reward=agent_reward)
 
-    quietly(parallel_api_test, make(), num_cycles=100)
-    quietly(parallel_seed_test, make)
+    strictly(parallel_api_test, make(), num_cycles=100)
+    strictly(parallel_seed_test, make)
+
+
+def test_gymnasium_make_and_make_vec_build_the_registered_environments(scenes):
+    env = gymnasium.make("camcov/Coverage-v0", scene=scenes["dynamic9"], params=SHORT)
+    assert isinstance(env.unwrapped, E.CoverageEnv) and env.spec.id == "camcov/Coverage-v0"
+    threaded = gymnasium.make_vec("camcov/Coverage-v0", num_envs=3, scene=scenes["dynamic9"],
+                                  params=SHORT)
+    assert isinstance(threaded, E.VectorCoverageEnv) and threaded.num_envs == 3
+    sync = gymnasium.make_vec("camcov/Coverage-v0", num_envs=3, vectorization_mode="sync",
+                              scene=scenes["dynamic9"], params=SHORT)
+    # The threaded form steps as Gymnasium's own vectorization of the single environment.
+    first, _ = threaded.reset(seed=4)
+    second, _ = sync.reset(seed=4)
+    assert np.array_equal(first, second)
+    actions = np.random.default_rng(1).uniform(-1, 1, threaded.action_space.shape)
+    a, b = threaded.step(actions), sync.step(actions)
+    for x, y in zip(a[:4], b[:4]):
+        assert np.array_equal(x, y)
+    assert set(a[4]) == set(b[4])
+    # A config names the module to import: nothing needs importing camcov.env first.
+    prefixed = gymnasium.make("camcov.env:camcov/Coverage-v0", scene=scenes["dynamic9"])
+    assert prefixed.spec.id == "camcov/Coverage-v0"
+    parallel = E.make("camcov/CoverageParallel-v0", scene=scenes["dynamic9"], params=SHORT)
+    assert isinstance(parallel, E.CoverageParallelEnv)
+    with pytest.raises(ValueError, match="id: expected one of camcov/Coverage-v0"):
+        E.make("camcov/Cover-v0", scene=scenes["dynamic9"])
+
+
+def test_a_normalized_action_of_one_moves_each_camera_at_its_own_limit():
+    scene = camcov.load_scene(CROWD)
+    dt = camcov.parameters()["sim"]["dt"]
+    env = E.CoverageEnv(scene)
+    assert env.action_space.dtype == np.float32
+    assert np.all(env.action_space.low == -1) and np.all(env.action_space.high == 1)
+    env.reset(seed=0)
+    before = env.episodes.episode.cameras.copy()
+    action = np.tile(np.float32([1, 0, -1]), (len(scene.cameras), 1))  # full speed along x
+    env.step(action)
+    after = env.episodes.episode.cameras
+    for j, camera in enumerate(scene.cameras):
+        assert after[j, 0] - before[j, 0] == pytest.approx(camera["maxVelocity"] * dt, rel=1e-9)
+        assert after[j, 1] == pytest.approx(before[j, 1], abs=1e-12)
+        turned = math.remainder(after[j, 2] - before[j, 2], 2 * math.pi)
+        assert turned == pytest.approx(-camera["maxAngularVelocity"] * dt, rel=1e-9)
+    # In physical units the same motion is the limits themselves, in m/s and rad/s.
+    physical = E.CoverageEnv(scene, action_units="physical")
+    physical.reset(seed=0)
+    physical.step(np.array([[c["maxVelocity"], 0, -c["maxAngularVelocity"]]
+                            for c in scene.cameras]))
+    assert np.array_equal(physical.episodes.episode.cameras, after)
+    assert physical.action_space.dtype == np.float64
+    assert np.all(physical.action_space.high[:, 0] == [c["maxVelocity"] for c in scene.cameras])
+
+
+def observations_of(env, steps, rng):
+    """The observations of an episode of `steps` random steps (a dict per step for a parallel
+    environment)."""
+    if hasattr(env, "possible_agents"):
+        observation, _ = env.reset(seed=1)
+        seen = [observation]
+        for _ in range(steps):
+            if not env.agents:
+                break
+            observation = env.step({a: rng.uniform(-1, 1, 3) for a in env.agents})[0]
+            seen.append(observation)
+        return seen
+    observation, _ = env.reset(seed=1)
+    seen = [observation]
+    for _ in range(steps):
+        observation, _, _, truncated, _ = env.step(rng.uniform(-1, 1, env.action_space.shape))
+        seen.append(observation)
+        if truncated:
+            break
+    return seen
+
+
+def test_observations_stay_within_their_declared_bounds(scenes, recorded):
+    rng = np.random.default_rng(2)
+    cases = [(scenes["dynamic9"], {}), (CROWD, {}), (COMES_AND_GOES, {}),
+             (recorded, {"targets": 8}), (recorded, {})]
+    for scene, options in cases:
+        env = E.CoverageEnv(scene, params={"sim.duration": 20.0}, **options)
+        for observation in observations_of(env, 200, rng):
+            assert env.observation_space.contains(observation), scene
+        for view in ("team", "own"):
+            parallel = E.CoverageParallelEnv(scene, params={"sim.duration": 5.0}, view=view,
+                                             **options)
+            for observations in observations_of(parallel, 50, rng):
+                for agent, observation in observations.items():
+                    assert parallel.observation_space(agent).contains(observation), scene
+
+
+def test_the_nearest_targets_keep_a_crowds_observation_one_size(recorded):
+    env = E.CoverageEnv(recorded, targets=8)
+    cameras, targets, obstacles, vertices = env.episodes.sizes
+    assert targets == 8
+    assert env.observation_space.shape == (4 + 10 * cameras + (5 + 2 * vertices) * 8 +
+                                           (2 + 2 * vertices) * obstacles,)
+    everyone = E.CoverageEnv(recorded).observation_space.shape[0]
+    assert env.observation_space.shape[0] * 5 < everyone  # a slot for each of 70 people
+    scene = camcov.load_scene(recorded)
+    first = 4 + 10 * cameras
+    present, filled = set(), set()
+    observation, _ = env.reset(seed=0)
+    for _ in range(env.episodes.episode.steps):
+        assert observation.shape == env.observation_space.shape
+        world = scene.world_at(env.episodes.episode.time)
+        present.add(len(world.targets))
+        flags = observation[first:first + 8 * (5 + 2 * vertices):5 + 2 * vertices]
+        filled.add(int(flags.sum()))
+        assert flags.sum() == min(8, len(world.targets))  # the slots fill first to last
+        assert np.all(np.diff(flags) <= 0)
+        observation, _, _, truncated, _ = env.step(np.zeros(env.action_space.shape))
+        if truncated:
+            break
+    assert len(present) > 5  # people came and went, the size stayed
+
+
+def test_agent_ids_tell_agents_apart_in_the_team_view(scenes):
+    env = E.CoverageParallelEnv(scenes["dynamic9"], params=SHORT)
+    observations, _ = env.reset(seed=0)
+    team = env.state()
+    for j, agent in enumerate(env.agents):
+        observation = observations[agent]
+        assert np.array_equal(observation[:len(team)], team)
+        assert np.array_equal(observation[len(team):], np.eye(len(env.possible_agents))[j])
+    assert len({observations[a].tobytes() for a in env.agents}) == len(env.agents)
+    own = E.CoverageParallelEnv(scenes["dynamic9"], params=SHORT, view="own")
+    observations, _ = own.reset(seed=0)
+    poses = own.episodes.episode.cameras
+    for j, agent in enumerate(own.agents):  # its own slot first, then every teammate
+        camera = observations[agent][4:4 + 10 * len(poses)].reshape(len(poses), 10)
+        assert camera[:, 0].sum() == len(poses)
+        order = [j] + [k for k in range(len(poses)) if k != j]
+        assert camera[:, 3] == pytest.approx(np.cos(poses[order, 2]), abs=1e-6)
+
+
+def test_every_form_gives_the_same_info_keys(scenes):
+    keys = set(E.Episodes.INFO_KEYS)
+    final = keys | set(E.Episodes.FINAL_INFO_KEYS)
+    single = E.CoverageEnv(scenes["dynamic9"], params=SHORT)
+    _, info = single.reset(seed=0)
+    assert set(info) == keys
+    truncated = False
+    while not truncated:
+        _, _, _, truncated, info = single.step(np.zeros(single.action_space.shape))
+        assert set(info) == (final if truncated else keys)
+    parallel = E.CoverageParallelEnv(scenes["dynamic9"], params=SHORT)
+    _, infos = parallel.reset(seed=0)
+    assert all(set(i) == keys for i in infos.values())
+    while parallel.agents:
+        *_, infos = parallel.step({a: np.zeros(3, np.float32) for a in parallel.agents})
+        assert all(set(i) == (keys if parallel.agents else final) for i in infos.values())
+    vector = E.VectorCoverageEnv(scenes["dynamic9"], 2, params=SHORT)
+    _, infos = vector.reset(seed=0)
+    assert set(infos) == keys | {"_" + k for k in keys}
+    truncated = np.zeros(2, bool)
+    while not truncated.all():
+        *_, truncated, infos = vector.step(np.zeros(vector.action_space.shape))
+    assert set(infos) == final | {"_" + k for k in final}
+    assert infos["average_coverage"][0] == infos["summary"][0]["averageCoverage"]
+
+
+def test_one_policy_runs_on_scenes_of_different_sizes(scenes):
+    """A linear policy, its weights fixed once, drives a five-camera scene without obstacles
+    and an eight-camera one with three: the nearest targets and the padding give both one
+    observation shape, normalized actions one meaning."""
+    options = dict(targets=6, pad_to={"cameras": 8, "obstacles": 4, "vertices": 12},
+                   params={"sim.duration": 3.0})
+    weights = np.random.default_rng(3).normal(size=(3, 4 + 10 * 8 + 29 * 6 + 26 * 4)) * 0.05
+
+    def policy(observation):  # one agent's egocentric view -> its command
+        return np.tanh(weights @ observation).astype(np.float32)
+
+    for scene in (scenes["dynamic9"], CROWD):
+        env = E.CoverageParallelEnv(scene, view="own", **options)
+        observations, _ = env.reset(seed=0)
+        steps = 0
+        while env.agents:
+            observations, *_ = env.step({a: policy(observations[a]) for a in env.agents})
+            steps += 1
+        assert steps == 30
+        team = E.CoverageEnv(scene, **options)  # the team's action: one row per camera slot
+        observation, _ = team.reset(seed=0)
+        team.step(np.stack([policy(observation)] * 8))
 
 
 @pytest.mark.parametrize("scene,method", [("dynamic9", "paper"), ("dynamic1", "camcov"),
@@ -215,6 +431,15 @@ def test_bad_input_raises_naming_the_argument(scenes):
         E.CoverageEnv(scenes["dynamic9"], params={"sim.duration": math.nan})
     with pytest.raises(ValueError, match="the list is empty"):
         E.CoverageEnv([])
+    with pytest.raises(ValueError, match="action_units: expected one of"):
+        E.CoverageEnv(scenes["dynamic9"], action_units="km/h")
+    for targets in (0, 2.5, "all"):
+        with pytest.raises(ValueError, match="targets: expected None or a number"):
+            E.CoverageEnv(scenes["dynamic9"], targets=targets)
+    with pytest.raises(ValueError, match=r"pad_to\['cameras'\]: expected 5 \(what the scenes"):
+        E.CoverageEnv(scenes["dynamic9"], pad_to={"cameras": 4})
+    with pytest.raises(ValueError, match="pad_to: expected keys among"):
+        E.CoverageEnv(scenes["dynamic9"], pad_to={"targets": 9})
     with pytest.raises(ValueError, match="family: no family 'x_rooms'"):
         E.family("x_rooms")
     with pytest.raises(ValueError, match="method: no method 'oracle'"):

@@ -3,14 +3,26 @@ import gymnasium
 import numpy as np
 from gymnasium import spaces
 
-from camcov.env import Episodes
+from camcov.env import Episodes, commands_of
 
 
 def _action_space(episodes):
-    """Each camera slot's vx, vy (m/s) and yaw rate (rad/s) within the largest limits of any
-    scene's camera in that slot; the simulator saturates ‖(vx, vy)‖ to the camera's own
-    v_max and the yaw rate to its own γ̇_max (constraint 3)."""
-    return spaces.Box(low=-episodes.limits, high=episodes.limits, dtype=np.float64)
+    """Each camera slot's vx, vy and yaw rate: normalized, float32 in [-1, 1] (1 is the running
+    scene's camera's own limit), or in m/s and rad/s within the largest limits of any scene's
+    camera in that slot. The simulator saturates ‖(vx, vy)‖ to the camera's v_max and the yaw
+    rate to its γ̇_max (constraint 3)."""
+    low, high = episodes.action_bounds()
+    return spaces.Box(low=low, high=high, dtype=episodes.action_dtype)
+
+
+def _observation_space(episodes, extra=0):
+    """The Box of a vector observation, within the encoding's bounds; `extra` floats in
+    [0, 1] appended (an agent's id)."""
+    low, high = episodes.observation_bounds()
+    if extra:
+        low = np.concatenate([low, np.zeros(extra, np.float32)])
+        high = np.concatenate([high, np.ones(extra, np.float32)])
+    return spaces.Box(low=low, high=high, dtype=np.float32)
 
 
 def _image_size(size, what):
@@ -25,7 +37,8 @@ class CoverageEnv(gymnasium.Env):
     """camcov's simulator as a Gymnasium environment: one action moves the whole team.
 
     CoverageEnv(scene, params=None, reward="reward", observation="vector",
-                image_size=(84, 84), render_mode=None, render_size=(640, 480))
+                image_size=(84, 84), render_mode=None, render_size=(640, 480),
+                action_units="normalized", targets=None, pad_to=None)
 
     - scene: a scene file, a camcov.Scene, or a list of them (camcov.env.family(...)); reset()
       picks one with its seeded generator, or options={"scene": i}.
@@ -35,21 +48,30 @@ class CoverageEnv(gymnasium.Env):
       (eq. 3, as the reward takes it: weighted where the scene has importance weights), of the
       team at the instant the step reaches.
     - observation: "vector" (float32, the fixed layout of docs/python.md, padded to the
-      largest scene) or "image" (the frame camcov render draws, image_size, uint8 RGB).
-    - action: (cameras, 3) float64: vx, vy (m/s), yaw rate (rad/s) per camera slot; rows of
-      slots a scene has no camera for are not read. NaN, infinities or another shape raise.
+      largest scene, within its declared bounds) or "image" (the frame camcov render draws,
+      image_size, uint8 RGB).
+    - action: (cameras, 3): vx, vy, yaw rate per camera slot; action_units "normalized"
+      (float32 in [-1, 1], times the running scene's camera's limits: 1 is its v_max or
+      γ̇_max) or "physical" (float64, m/s and rad/s). Rows of slots a scene has no camera
+      for are not read. NaN, infinities or another shape raise.
+    - targets: None (target slot i is the scene's target i) or k: the k targets present
+      nearest the cameras, nearest first (a fixed size for crowds whose people come and go).
+    - pad_to: {"cameras": c, "obstacles": o, "vertices": v}, any of them: pad to more than
+      the scenes need, so that scenes of different sizes share one observation shape.
     - render_mode "rgb_array": render() returns the frame, (height, width, 3) uint8.
-    info: time, scene, seed (the run seed policy() uses), the team's terms now, and at the
-    end the run's summary (its average coverage, eq. 4).
+    info (the same keys in every environment of camcov.env): time, scene, seed (the run seed
+    policy() uses), the team's terms now, and at the end the run's summary and its
+    average_coverage (eq. 4).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
 
     def __init__(self, scene, params=None, reward="reward", observation="vector",
-                 image_size=(84, 84), render_mode=None, render_size=(640, 480)):
+                 image_size=(84, 84), render_mode=None, render_size=(640, 480),
+                 action_units="normalized", targets=None, pad_to=None):
         """The environment of the scenes, with the options of the class's docstring."""
         super().__init__()
-        self.episodes = Episodes(scene, params, reward)
+        self.episodes = Episodes(scene, params, reward, action_units, targets, pad_to)
         if observation not in ("vector", "image"):
             raise ValueError(f"observation: expected 'vector' or 'image', got {observation!r}")
         if render_mode not in (None, "rgb_array"):
@@ -60,8 +82,7 @@ class CoverageEnv(gymnasium.Env):
         self.render_mode = render_mode
         self.action_space = _action_space(self.episodes)
         if observation == "vector":
-            self.observation_space = spaces.Box(-np.inf, np.inf,
-                                                (self.episodes.observation_size,), np.float32)
+            self.observation_space = _observation_space(self.episodes)
         else:
             width, height = self.image_size
             self.observation_space = spaces.Box(0, 255, (height, width, 3), np.uint8)
@@ -70,7 +91,7 @@ class CoverageEnv(gymnasium.Env):
         episode = self.episodes.episode
         if self.observation_kind == "image":
             return episode.frame(*self.image_size)
-        return episode.observation(self.episodes.sizes)
+        return self.episodes.observation()
 
     def reset(self, *, seed=None, options=None):
         """Starts an episode at t = 0: (observation, info)."""
@@ -87,11 +108,8 @@ class CoverageEnv(gymnasium.Env):
             raise RuntimeError("step: call reset() first")
         if episodes.episode.finished:
             raise RuntimeError("step: the episode is over; call reset()")
-        action = np.asarray(action, dtype=np.float64)
-        if action.shape != self.action_space.shape:
-            raise ValueError(f"action: expected shape {self.action_space.shape} (vx, vy, yaw "
-                             f"rate per camera), got {action.shape}")
-        episodes.episode.step(action)
+        episodes.episode.step(commands_of(action, episodes.action_scale,
+                                          self.action_space.shape, "action"))
         observation = self._observation()
         terms = episodes.episode.terms
         truncated = episodes.episode.finished

@@ -3,54 +3,64 @@ import numpy as np
 from gymnasium import spaces
 from pettingzoo import ParallelEnv
 
-from camcov.env import Episodes
+from camcov.env import Episodes, commands_of
 
 
 class CoverageParallelEnv(ParallelEnv):
     """camcov's simulator as a PettingZoo ParallelEnv: one agent per camera ("camera_0", …).
 
     CoverageParallelEnv(scene, params=None, reward="reward", view="team",
-                        agent_reward="team", render_mode=None, render_size=(640, 480))
+                        agent_reward="team", render_mode=None, render_size=(640, 480),
+                        action_units="normalized", targets=None, pad_to=None)
 
-    - scene, params, reward: as CoverageEnv's.
-    - view: "team" (each agent observes the team's observation, the layout of docs/python.md)
-      or "own" (only what its camera sees: its own slot first, no other camera, no obstacle,
-      the targets it sees some of), for decentralized policies.
+    - scene, params, reward, action_units, targets, pad_to: as CoverageEnv's.
+    - view: "team" (each agent observes the team's observation, the layout of docs/python.md,
+      followed by its id: one float per camera slot, 1 at its own) or "own" (egocentric: its
+      own camera's slot first, its teammates after it, no obstacle, only the targets it sees
+      some of), for decentralized policies.
     - agent_reward: "team" (each agent gets the team's reward) or "own" (its camera's own
       terms, as if it were alone: camcov.Episode.own_terms).
-    - action per agent: (3,) float64, vx, vy (m/s), yaw rate (rad/s), within the largest
+    - action per agent: (3,) vx, vy, yaw rate: normalized float32 in [-1, 1] (1: its camera's
+      limit), or with action_units "physical" float64 in m/s and rad/s within the largest
       limits of that camera slot; the simulator saturates to the camera's own.
-    The agents are the running scene's cameras; all are truncated together at sim.duration.
-    state() is the team's observation (for centralized critics).
+    The agents are the running scene's cameras, truncated together at sim.duration (with a
+    family whose teams differ in size, the slots a scene has no camera for are agents that
+    observe zeros and are terminated at the first step).
+    state() is the team's observation (for centralized critics). Each agent's info has
+    CoverageEnv's keys.
     """
 
     metadata = {"render_modes": ["rgb_array"], "name": "camcov_coverage_v0", "render_fps": 10}
 
     def __init__(self, scene, params=None, reward="reward", view="team", agent_reward="team",
-                 render_mode=None, render_size=(640, 480)):
+                 render_mode=None, render_size=(640, 480), action_units="normalized",
+                 targets=None, pad_to=None):
         """The environment of the scenes, with the options of the class's docstring."""
-        self.episodes = Episodes(scene, params, reward)
+        self.episodes = Episodes(scene, params, reward, action_units, targets, pad_to)
         if view not in ("team", "own"):
             raise ValueError(f"view: expected 'team' or 'own', got {view!r}")
         if agent_reward not in ("team", "own"):
             raise ValueError(f"agent_reward: expected 'team' or 'own', got {agent_reward!r}")
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode: expected None or 'rgb_array', got {render_mode!r}")
-        from camcov._gym_env import _image_size
+        from camcov._gym_env import _image_size, _observation_space
         self.render_size = _image_size(render_size, "render_size")
         self.view = view
         self.agent_reward = agent_reward
         self.render_mode = render_mode
-        self.possible_agents = [f"camera_{j}" for j in range(self.episodes.sizes[0])]
+        slots = self.episodes.sizes[0]
+        self.possible_agents = [f"camera_{j}" for j in range(slots)]
         self.agents = []
-        size = self.episodes.observation_size
+        # The team view ends with the agent's id, one-hot over the camera slots.
+        self._ids = np.eye(slots, dtype=np.float32)
         # One space object per agent, every call (PettingZoo seeds spaces through them).
-        self.observation_spaces = {a: spaces.Box(-np.inf, np.inf, (size,), np.float32)
-                                   for a in self.possible_agents}
-        self.action_spaces = {a: spaces.Box(-self.episodes.limits[j], self.episodes.limits[j],
-                                            dtype=np.float64)
+        self.observation_spaces = {
+            a: _observation_space(self.episodes, slots if view == "team" else 0)
+            for a in self.possible_agents}
+        low, high = self.episodes.action_bounds()
+        self.action_spaces = {a: spaces.Box(low[j], high[j], dtype=self.episodes.action_dtype)
                               for j, a in enumerate(self.possible_agents)}
-        self.state_space = spaces.Box(-np.inf, np.inf, (size,), np.float32)
+        self.state_space = _observation_space(self.episodes)
         self._rng = np.random.default_rng()
 
     def observation_space(self, agent):
@@ -58,30 +68,36 @@ class CoverageParallelEnv(ParallelEnv):
         return self.observation_spaces[agent]
 
     def action_space(self, agent):
-        """The Box of an agent's commands: vx, vy (m/s), yaw rate (rad/s)."""
+        """The Box of an agent's commands: vx, vy, yaw rate (normalized, or m/s and rad/s)."""
         return self.action_spaces[agent]
 
     def _observations(self):
-        episode, sizes = self.episodes.episode, self.episodes.sizes
-        if self.view == "team":
-            team = episode.observation(sizes)
-            return {agent: team.copy() for agent in self.agents}
-        return {agent: episode.observation(sizes, "own", j) for j, agent in enumerate(self.agents)}
+        episodes, cameras = self.episodes, self.episodes.cameras()
+        observations = {}
+        for j, agent in enumerate(self.agents):
+            if j >= cameras:  # a slot this scene has no camera for: nothing to observe
+                observations[agent] = np.zeros(self.observation_spaces[agent].shape, np.float32)
+            elif self.view == "team":
+                observations[agent] = np.concatenate([episodes.observation(), self._ids[j]])
+            else:
+                observations[agent] = episodes.observation("own", j)
+        return observations
 
     def _rewards(self, terms):
-        if self.agent_reward == "team":
-            value = self.episodes.reward(terms)
-            return {agent: value for agent in self.agents}
-        episode = self.episodes.episode
-        return {agent: self.episodes.reward(episode.own_terms(j))
+        episode, cameras = self.episodes.episode, self.episodes.cameras()
+        team = self.episodes.reward(terms)
+        return {agent: (0.0 if j >= cameras else team if self.agent_reward == "team"
+                        else self.episodes.reward(episode.own_terms(j)))
                 for j, agent in enumerate(self.agents)}
 
     def reset(self, seed=None, options=None):
-        """Starts an episode at t = 0: (observations, infos), one entry per agent."""
+        """Starts an episode at t = 0: (observations, infos), one entry per agent. Every
+        possible agent starts; one whose slot the scene has no camera for (a family's smaller
+        team) observes zeros and is terminated at the first step."""
         if seed is not None:
             self._rng = np.random.default_rng(seed)
         self.episodes.start(self._rng, options)
-        self.agents = self.possible_agents[:self.episodes.cameras()]
+        self.agents = list(self.possible_agents)
         info = self.episodes.info()
         return self._observations(), {agent: dict(info) for agent in self.agents}
 
@@ -97,14 +113,12 @@ class CoverageParallelEnv(ParallelEnv):
         unknown = set(actions) - set(self.agents)
         if unknown:
             raise ValueError(f"actions: no agents {sorted(unknown)} in {self.agents}")
-        commands = np.zeros((len(self.agents), 3))
-        for j, agent in enumerate(self.agents):
+        cameras = self.episodes.cameras()
+        commands = np.zeros((cameras, 3))
+        scale = self.episodes.action_scale
+        for j, agent in enumerate(self.agents[:cameras]):
             if agent in actions:
-                command = np.asarray(actions[agent], dtype=np.float64)
-                if command.shape != (3,):
-                    raise ValueError(f"actions[{agent!r}]: expected shape (3,) (vx, vy, yaw "
-                                     f"rate), got {command.shape}")
-                commands[j] = command
+                commands[j] = commands_of(actions[agent], scale[j], (3,), f"actions[{agent!r}]")
         episode.step(commands)
         observations = self._observations()
         terms = episode.terms
@@ -112,14 +126,13 @@ class CoverageParallelEnv(ParallelEnv):
         over = episode.finished
         info = self.episodes.info(terms)
         agents = self.agents
-        if over:
-            self.agents = []
-        return (observations, rewards, {a: False for a in agents}, {a: over for a in agents},
-                {a: dict(info) for a in agents})
+        self.agents = [] if over else agents[:cameras]
+        return (observations, rewards, {a: j >= cameras for j, a in enumerate(agents)},
+                {a: over for a in agents}, {a: dict(info) for a in agents})
 
     def state(self):
         """The team's observation now (the layout of docs/python.md)."""
-        return self.episodes.episode.observation(self.episodes.sizes)
+        return self.episodes.observation()
 
     def render(self):
         """The present instant as camcov render draws it, (height, width, 3) uint8 RGB, for

@@ -6,9 +6,8 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 import camcov
-from camcov._gym_env import _action_space
-from camcov.env import Episodes
-from gymnasium import spaces
+from camcov._gym_env import _action_space, _observation_space
+from camcov.env import Episodes, commands_of
 
 
 MAX_ENVS = 65536  # each holds a simulation; more would exhaust memory before stepping once
@@ -19,18 +18,21 @@ class VectorCoverageEnv(VectorEnv):
     gymnasium.vector.VectorEnv with next-step autoreset (the step after an episode ends
     starts the next one and ignores that row of actions).
 
-    VectorCoverageEnv(scene, num_envs, threads=None, params=None, reward="reward")
+    VectorCoverageEnv(scene, num_envs, threads=None, params=None, reward="reward",
+                      action_units="normalized", targets=None, pad_to=None)
 
-    scene, params and reward as CoverageEnv's (vector observations only); threads: how many
-    to step on (default: the machine's cores, at most num_envs). Actions (num_envs, cameras,
-    3); observations (num_envs, size) float32. reset(seed=s) seeds environment i with s + i.
-    infos: "coverage" and "time" per environment, and where an episode ended, "average_coverage"
-    (eq. 4) with its mask "_average_coverage".
+    scene, params, reward, action_units, targets and pad_to as CoverageEnv's (vector
+    observations only); threads: how many to step on (default: the machine's cores, at most
+    num_envs). Actions (num_envs, cameras, 3); observations (num_envs, size) float32.
+    reset(seed=s) seeds environment i with s + i. infos: CoverageEnv's keys, each an array of
+    num_envs with its mask "_key" as Gymnasium's vector environments give them ("summary"
+    and "average_coverage" only where an episode ended).
     """
 
     metadata = {"autoreset_mode": AutoresetMode.NEXT_STEP}
 
-    def __init__(self, scene, num_envs, threads=None, params=None, reward="reward"):
+    def __init__(self, scene, num_envs, threads=None, params=None, reward="reward",
+                 action_units="normalized", targets=None, pad_to=None):
         """num_envs episodes of the scenes, stepped on `threads` threads."""
         if not isinstance(num_envs, int) or not 1 <= num_envs <= MAX_ENVS:
             raise ValueError(f"num_envs: expected a whole number from 1 to {MAX_ENVS}, got "
@@ -39,23 +41,26 @@ class VectorCoverageEnv(VectorEnv):
             threads = min(num_envs, os.cpu_count() or 1, 256)
         if not isinstance(threads, int) or not 1 <= threads <= 256:
             raise ValueError(f"threads: expected a whole number from 1 to 256, got {threads!r}")
-        scenes = Episodes(scene, params, reward).scenes  # loaded once, shared by all
-        self.vector_episodes = [Episodes(scenes, params, reward) for _ in range(num_envs)]
+        options = (params, reward, action_units, targets, pad_to)
+        scenes = Episodes(scene, *options).scenes  # loaded once, shared by all
+        self.vector_episodes = [Episodes(scenes, *options) for _ in range(num_envs)]
         self.num_envs = num_envs
         self.stepper = camcov.EpisodeStepper(threads)
         first = self.vector_episodes[0]
-        self.single_observation_space = spaces.Box(-np.inf, np.inf, (first.observation_size,),
-                                                   np.float32)
+        self.single_observation_space = _observation_space(first)
         self.single_action_space = _action_space(first)
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
         self._rngs = [np.random.default_rng() for _ in range(num_envs)]
         self._ended = np.zeros(num_envs, dtype=bool)
+        # Each environment's Episodes.action_scale, a row each, kept as episodes start.
+        self._scales = np.ones(self.action_space.shape)
 
     def _start(self, i, options=None):
         episodes = self.vector_episodes[i]
         episodes.start(self._rngs[i], options)
-        return episodes.episode.observation(episodes.sizes)
+        self._scales[i] = episodes.action_scale
+        return episodes.observation()
 
     def reset(self, *, seed=None, options=None):
         """Starts every episode at t = 0: (observations, infos)."""
@@ -70,16 +75,34 @@ class VectorCoverageEnv(VectorEnv):
         return observations, self._infos()
 
     def _infos(self):
-        return {"coverage": np.array([e.episode.terms["coverage"] for e in self.vector_episodes]),
-                "time": np.array([e.episode.time for e in self.vector_episodes])}
+        """Each environment's Episodes.info() as Gymnasium's vector infos: per key an array of
+        num_envs and its mask "_key" (the keys only some environments have: where they have
+        them)."""
+        each = [e.info() for e in self.vector_episodes]
+        n = self.num_envs
+        # The numbers in one table (an array for each key would cost a third of a step).
+        numbers = [key for key in Episodes.INFO_KEYS if key not in ("scene", "seed")]
+        table = np.array([[info[key] for key in numbers] for info in each])
+        infos = {key: table[:, column] for column, key in enumerate(numbers)}
+        infos["scene"] = np.array([info["scene"] for info in each], dtype=object)
+        infos["seed"] = np.array([info["seed"] for info in each], dtype=np.int64)
+        everywhere = np.ones(n, dtype=bool)
+        everywhere.flags.writeable = False  # one mask for every key (each its own: a µs each)
+        for key in Episodes.INFO_KEYS:
+            infos["_" + key] = everywhere
+        ended = np.array(["summary" in info for info in each])
+        if ended.any():
+            for key in Episodes.FINAL_INFO_KEYS:
+                values = np.zeros(n, dtype=object if key == "summary" else np.float64)
+                for i in np.flatnonzero(ended):
+                    values[i] = each[i][key]
+                infos[key], infos["_" + key] = values, ended.copy()
+        return infos
 
     def step(self, actions):
         """One step of sim.dt in every environment: (observations, rewards, terminations,
         truncations, infos), each with num_envs rows."""
-        actions = np.asarray(actions, dtype=np.float64)
-        if actions.shape != self.action_space.shape:
-            raise ValueError(f"actions: expected shape {self.action_space.shape} (per "
-                             f"environment, vx, vy, yaw rate per camera), got {actions.shape}")
+        commands = commands_of(actions, self._scales, self.action_space.shape, "actions")
         n = self.num_envs
         observations = np.zeros(self.observation_space.shape, np.float32)
         rewards = np.zeros(n)
@@ -90,19 +113,11 @@ class VectorCoverageEnv(VectorEnv):
         if len(stepping):
             first = self.vector_episodes[0]
             new, terms = self.stepper.step(
-                [self.vector_episodes[i].episode for i in stepping], actions[stepping],
-                first.sizes)
+                [self.vector_episodes[i].episode for i in stepping], commands[stepping],
+                first.sizes, first.target_slots)
             observations[stepping] = new
             column = 0 if first.reward_term == "coverage" else 3
             rewards[stepping] = terms[:, column]
             truncations[stepping] = [self.vector_episodes[i].episode.finished for i in stepping]
-        infos = self._infos()
-        average = np.zeros(n)
-        for i in np.flatnonzero(truncations):
-            episode = self.vector_episodes[i].episode
-            episode.close()
-            average[i] = episode.summary["averageCoverage"]
-        if truncations.any():
-            infos["average_coverage"], infos["_average_coverage"] = average, truncations.copy()
         self._ended = truncations
-        return observations, rewards, np.zeros(n, dtype=bool), truncations, infos
+        return observations, rewards, np.zeros(n, dtype=bool), truncations, self._infos()
