@@ -63,10 +63,29 @@ std::string relativeUrl(const std::filesystem::path& file, const std::filesystem
   return url;
 }
 
-std::string scriptSafe(std::string text) {
-  for (auto at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
-    text.replace(at, 2, "<\\/");
-  return text;
+std::string scriptSafe(std::string_view text) {
+  const auto startsHere = [&](std::size_t at, std::string_view what) {
+    if (text.size() - at < what.size()) return false;
+    for (std::size_t i = 0; i < what.size(); ++i) {
+      if (std::tolower(static_cast<unsigned char>(text[at + i])) != what[i]) return false;
+    }
+    return true;
+  };
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    if (text[at] != '<') {
+      out += text[at];
+    } else if (startsHere(at, "</")) {
+      out += "<\\/";
+      ++at;
+    } else if (startsHere(at, "<!--") || startsHere(at, "<script")) {
+      out += "\\u003C";
+    } else {
+      out += '<';
+    }
+  }
+  return out;
 }
 
 }  // namespace camcov::reports

@@ -27,9 +27,12 @@ double textWidth(std::string_view text, double fontSize);
 // An id attribute value from a prefix and a name: "ts-dynamic9"; other bytes become '_'.
 std::string anchorId(std::string_view prefix, std::string_view name);
 
-// Text for inside a <script> element (JSON or JavaScript): "</" becomes "<\/", which means the
-// same in a string, a regular expression or JSON and cannot end the element early.
-std::string scriptSafe(std::string text);
+// Text for inside a <script> element (JSON or JavaScript), for whatever data it holds: "</"
+// becomes "<\/", and the "<" of "<!--" and of "<script" (any case) becomes "\u003C". Each means
+// the same in a string, a regular expression or JSON, and none can end the element early or put
+// the HTML parser into the script's escaped state, where "<!--<script>" in a description would
+// keep the element open past its end and leave the page empty.
+std::string scriptSafe(std::string_view text);
 
 // `file` relative to `fromDir`, with '/' separators and every byte outside the URL-safe set
 // percent-encoded: a relative URL for src and href attributes.

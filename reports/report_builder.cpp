@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "records/atomic_file.h"
+#include "records/batch_folder.h"
 #include "reports/markup.h"
 #include "reports/report_assets.h"
 #include "reports/sections.h"
@@ -67,6 +68,7 @@ std::string buildReportHtml(const ReportData& data, const BuildContext& context)
 
 void writeReport(const std::filesystem::path& resultsDir, const std::filesystem::path& reportFile) {
   const std::filesystem::path target = std::filesystem::absolute(reportFile);
+  records::BatchFolder(resultsDir).refuseToReplaceContent(target);
   const ReportData data = loadReportData(resultsDir, target);
   records::writeFileAtomically(target, buildReportHtml(data, currentBuildContext()));
 }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "records/atomic_file.h"
+#include "records/batch_folder.h"
 #include "records/batch_summary.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
@@ -429,6 +430,8 @@ std::string buildSettingsReportHtml(const SettingsData& data, const BuildContext
 void writeSettingsReport(const std::vector<std::filesystem::path>& folders,
                          const std::string& reference, const std::filesystem::path& reportFile) {
   const std::filesystem::path target = std::filesystem::absolute(reportFile);
+  for (const std::filesystem::path& folder : folders)
+    records::BatchFolder(folder).refuseToReplaceContent(target);
   const SettingsData data = loadSettingsData(folders, reference, target);
   records::writeFileAtomically(target, buildSettingsReportHtml(data, currentBuildContext()));
 }

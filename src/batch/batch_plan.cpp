@@ -188,6 +188,7 @@ std::vector<std::string> methodsMadeByOtherCode(const records::BatchManifest& pr
 
 void prepareFolder(const records::BatchFolder& folder, records::BatchManifest& manifest,
                    bool force) {
+  folder.refuseForeignContent();
   if (const auto previous = folder.readManifest()) {
     if (params::toJson(previous->parameters) != params::toJson(manifest.parameters) && !force) {
       throw InputError(folder.root().string() +

@@ -55,6 +55,7 @@ records::BatchManifest mergeFolders(const std::vector<std::string>& inputs,
                                     const records::BatchFolder& target,
                                     const std::vector<std::string>& command) {
   // Everything is read and checked before anything is written.
+  target.refuseForeignContent();
   std::optional<records::BatchManifest> manifest;
   std::map<std::string, records::JobTiming> timings;
   std::vector<std::pair<fs::path, fs::path>> copies;  // from, to

@@ -3,6 +3,7 @@
 #include "camcov/version.h"
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "cli/output_paths.h"
 
 namespace camcov::cli {
 namespace {
@@ -28,6 +29,7 @@ std::vector<Registration> addCommands(CLI::App& app) {
       addImportCommand(app),   addGenerateCommand(app), addOptimumCommand(app),
   };
   guardNumericOptions(app);
+  refuseEmptyOutputPaths(app);
   return commands;
 }
 

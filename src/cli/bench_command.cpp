@@ -10,6 +10,7 @@
 #include "cli/number_options.h"
 #include "cli/parameter_options.h"
 #include "cli/terminal_observer.h"
+#include "scene/scene.h"
 
 namespace camcov::cli {
 
@@ -34,7 +35,7 @@ Registration addBenchCommand(CLI::App& app) {
   cmd->add_option("--duration", r.duration,
                   "simulated seconds per run (default: a scene's own duration if it has one, else "
                   "sim.duration)")
-      ->check(within(0.0, 1e6));
+      ->check(within(0.0, scene::kMaxDuration, false));
   cmd->add_option("--jobs,-j", r.jobs, "worker threads (default: all cores)")
       ->check(within(0, 1024));
   cmd->add_option("--out,-o", r.out, "results folder")->capture_default_str();

@@ -122,7 +122,7 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
       ->check(within(0.0, scene::kMaxCoordinate));
   cmd.add_option("--front-weight", o.scene.frontWeight,
                  "how many times a person's front counts in weighted coverage (1: no front)")
-      ->check(within(0.0, scene::kMaxWeight))
+      ->check(within(0.0, scene::kMaxWeight, false))
       ->capture_default_str();
   cmd.add_option("--front-angle", o.scene.frontAngleDeg,
                  "a person's front: edges facing within this many degrees of where they go")

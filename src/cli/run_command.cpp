@@ -80,7 +80,7 @@ Registration addRunCommand(CLI::App& app) {
   cmd->add_option("--duration", o->duration,
                   "simulated seconds (default: the scene's own duration if it has one, else "
                   "sim.duration, 30 s)")
-      ->check(within(0.0, 1e6));
+      ->check(within(0.0, scene::kMaxDuration, false));
   cmd->add_option("--out,-o", o->out, "folder for the results files")->capture_default_str();
   cmd->add_option("--video", o->video, "also write the run's video (MP4, 1280x720)");
   cmd->add_option("--threads,-t", o->threads,

@@ -46,11 +46,14 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
 bool discOnSegment(Vec2 centre, double radius, Vec2 a, Vec2 b, double& t0, double& t1) {
   t0 = 0.0;
   t1 = 1.0;
-  if (radius == std::numeric_limits<double>::infinity()) return true;
+  // Both ends inside: all of it (a disc is convex). Also what keeps a radius so large that r²
+  // or the products below overflow from reading as no disc at all.
+  const double r2 = radius * radius;
+  if (dot(a - centre, a - centre) <= r2 && dot(b - centre, b - centre) <= r2) return true;
   // |f + t·d|² = r² with f = a − centre, d = b − a: t²·d·d + 2t·f·d + f·f − r² = 0.
   const Vec2 d = b - a, f = a - centre;
   const double dd = dot(d, d), fd = dot(f, d);
-  const double c = dot(f, f) - radius * radius;
+  const double c = dot(f, f) - r2;
   if (dd == 0.0) return c <= 0.0;
   const double discriminant = fd * fd - dd * c;
   if (discriminant < 0.0) return false;

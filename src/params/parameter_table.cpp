@@ -91,7 +91,8 @@ constexpr std::array kTable{
     row<&P::potential, &PotentialParams::T3>(
         "potential.T3", "T3", "s", "abort a plan after this long without progress", 0, kInf),
     row<&P::sim, &SimParams::dt>("sim.dt", "dt", "s", "fixed simulation time step", 1e-4, 10),
-    row<&P::sim, &SimParams::duration>("sim.duration", "T", "s", "simulated time per run", 0, 1e6),
+    row<&P::sim, &SimParams::duration>("sim.duration", "T", "s", "simulated time per run", 1e-4,
+                                       1e4),
     row<&P::sim, &SimParams::delta>("sim.delta", "δ", "m",
                                     "a camera closer than this to an object or another camera "
                                     "is in collision (a measured metric)",

@@ -195,10 +195,11 @@ void bindRuns(py::module_& m) {
         request.seeds = seeds;
         if (!duration.is_none()) {
           request.duration = duration.cast<double>();
-          if (!withinRange(request.duration, 0.0, 1e6)) {  // as `camcov bench --duration`
+          // as `camcov bench --duration`
+          if (!withinRange(request.duration, 0.0, scene::kMaxDuration) || request.duration == 0.0) {
             throw py::value_error(fmt::format("duration = {}: expected a number in {}",
                                               readableNumber(request.duration),
-                                              rangeText(0.0, 1e6)));
+                                              rangeText(0.0, scene::kMaxDuration, false)));
           }
         }
         request.parameters = parametersFrom(params);

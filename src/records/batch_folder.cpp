@@ -93,6 +93,28 @@ void BatchFolder::writeManifest(const BatchManifest& manifest) const {
   writeJson(manifestFile(), manifestToJson(manifest));
 }
 
+void BatchFolder::refuseForeignContent() const {
+  std::error_code ec;
+  if (!fs::exists(root_, ec) || holdsBatch(root_)) return;
+  if (!fs::is_directory(root_, ec)) throw InputError(root_.string() + ": is not a folder");
+  if (!fs::is_empty(root_, ec)) {
+    throw InputError(root_.string() +
+                     ": holds files but no camcov batch (no batch.json); write the results into "
+                     "a new or empty folder, or into one a batch made");
+  }
+}
+
+void BatchFolder::refuseToReplaceContent(const fs::path& output) const {
+  std::error_code ec;
+  if (!fs::exists(output, ec) || fs::equivalent(output, reportFile(), ec)) return;
+  for (const auto& entry : fs::recursive_directory_iterator(root_, ec)) {
+    if (entry.is_regular_file(ec) && fs::equivalent(entry.path(), output, ec)) {
+      throw InputError(output.string() + ": is part of the results folder " + root_.string() +
+                       " that this report reads; write the report elsewhere");
+    }
+  }
+}
+
 void BatchFolder::removeStaleTemporaries() const {
   for (const fs::path& dir : {root_, runsDir(), omplDir(), optimumDir()}) {
     std::error_code ec;

@@ -96,6 +96,16 @@ class BatchFolder {
   std::optional<BatchManifest> readManifest() const;
   void writeManifest(const BatchManifest& manifest) const;
 
+  // InputError if the folder exists and holds something but no batch (no batch.json): a batch
+  // written into it would replace whatever files there share its names (summary.json,
+  // report.html, runs/...). A new or empty folder, or one holding a batch, is fine.
+  void refuseForeignContent() const;
+  // InputError unless `output` may be written by a command that reads this folder (a report):
+  // a file the folder holds (its batch, runs, summaries, logs, pages, videos, by identity, so
+  // another spelling of the path or a link to it counts) is its content, which the command
+  // reads; only the folder's own report file may be written over.
+  void refuseToReplaceContent(const std::filesystem::path& output) const;
+
   // Deletes "*.tmp-*" files a killed batch may have left.
   void removeStaleTemporaries() const;
   // The finished job's summary if runs/<stem>.json exists and was made with these parameters

@@ -12,6 +12,7 @@
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
 #include "records/json_numbers.h"
+#include "scene/scene_validation.h"
 
 namespace camcov::records {
 namespace {
@@ -23,6 +24,77 @@ nlohmann::json pose(const geometry::Pose& p) {
 geometry::Pose poseFrom(const nlohmann::json& v) {
   return {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>()};
 }
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The latest time a run may record, s: far past any scene's duration (scene::kMaxDuration).
+constexpr double kMaxRecordedTime = 1e9;
+
+// The series of a results file, checked as they are read, so that a file edited by hand or
+// cut short is refused with the column and step named instead of drawing, encoding or
+// summarizing numbers no run can produce: every column one entry a step, every entry a finite
+// number in its range.
+class SeriesReader {
+ public:
+  SeriesReader(const nlohmann::json& series, const std::string& source)
+      : series_(series), source_(source) {}
+
+  // series[name], an array; its length is checked against series.time's where it is read.
+  const nlohmann::json& column(const char* name) const {
+    const nlohmann::json& c = series_.at(name);
+    if (!c.is_array()) throw InputError(fmt::format("{}: series.{} is not a list", source_, name));
+    return c;
+  }
+  double number(const char* name, std::size_t k, double lo, double hi) const {
+    return within(entry(column(name), k, name), lo, hi, fmt::format("series.{}[{}]", name, k));
+  }
+  // A distance: a number ≥ 0, or null for none (infinity: no pair of cameras).
+  double distance(const char* name, std::size_t k) const {
+    const nlohmann::json& v = entry(column(name), k, name);
+    return v.is_null() ? kInfinity
+                       : within(v, 0.0, kInfinity, fmt::format("series.{}[{}]", name, k));
+  }
+  // [x, y, yaw] of camera c at step k of series.cameras or series.goals.
+  geometry::Pose pose(const nlohmann::json& perCamera, const char* name, std::size_t c,
+                      std::size_t k) const {
+    const std::string where = fmt::format("series.{}[{}][{}]", name, c, k);
+    if (!perCamera.is_array() || k >= perCamera.size())
+      throw InputError(fmt::format("{}: {} is missing", source_, where));
+    const nlohmann::json& p = perCamera[k];
+    if (!p.is_array() || p.size() != 3)
+      throw InputError(fmt::format("{}: {} is not a pose [x, y, yaw]", source_, where));
+    return {within(p[0], -scene::kMaxCoordinate, scene::kMaxCoordinate, where + "[0]"),
+            within(p[1], -scene::kMaxCoordinate, scene::kMaxCoordinate, where + "[1]"),
+            within(p[2], -kMaxYaw, kMaxYaw, where + "[2]")};
+  }
+
+ private:
+  // rad: a camera's yaw is wrapped to [-π, π], a goal's as its method gives it, within what a
+  // scene may write (scene::kMaxYawDegrees).
+  static constexpr double kMaxYaw = scene::kMaxYawDegrees * 3.141592653589793 / 180.0;
+
+  const nlohmann::json& entry(const nlohmann::json& column, std::size_t k, const char* name) const {
+    const std::size_t steps = series_.at("time").size();
+    if (column.size() != steps) {
+      throw InputError(fmt::format("{}: series.{} has {} entries for {} steps", source_, name,
+                                   column.size(), steps));
+    }
+    return column[k];
+  }
+  double within(const nlohmann::json& v, double lo, double hi, const std::string& where) const {
+    if (!v.is_number()) throw InputError(fmt::format("{}: {} is not a number", source_, where));
+    const double x = v.get<double>();
+    if (!(x >= lo && x <= hi)) {
+      throw InputError(
+          fmt::format("{}: {} = {} lies outside [{}, {}], where every run's values "
+                      "lie",
+                      source_, where, x, lo, hi));
+    }
+    return x;
+  }
+
+  const nlohmann::json& series_;
+  const std::string& source_;
+};
 
 sim::RunSummary summaryFrom(const nlohmann::json& j) {
   sim::RunSummary s;
@@ -189,47 +261,79 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     run.summary = summaryFrom(j.at("summary"));
 
     const nlohmann::json& series = j.at("series");
-    const auto& time = series.at("time");
+    const SeriesReader read(series, source);
+    const auto& time = read.column("time");
+    const std::size_t steps = time.size();
+    if (steps == 0 || static_cast<std::size_t>(run.summary.steps) != steps) {
+      throw InputError(fmt::format("{}: the summary says {} steps, series.time holds {}", source,
+                                   run.summary.steps, steps));
+    }
     const auto& cameras = series.at("cameras");
     const auto& goals = series.at("goals");
-    for (std::size_t k = 0; k < time.size(); ++k) {
+    if (!cameras.is_array() || !goals.is_array() || goals.size() != cameras.size())
+      throw InputError(source + ": series.cameras and series.goals need one list per camera");
+    const auto fraction = [&](const char* name, std::size_t k) {
+      return read.number(name, k, 0.0, 1.0);
+    };
+    for (std::size_t k = 0; k < steps; ++k) {
       StepRow row;
-      row.time = time.at(k).get<double>();
-      row.terms.coverage = series.at("coverage").at(k).get<double>();
+      row.time = read.number("time", k, 0.0, kMaxRecordedTime);
+      if (k > 0 && !(row.time > run.steps.back().time)) {
+        throw InputError(
+            fmt::format("{}: series.time[{}] = {} does not come after the step "
+                        "before it ({}): a run's times increase",
+                        source, k, row.time, run.steps.back().time));
+      }
+      row.terms.coverage = fraction("coverage", k);
       // Recorded for weighted scenes only; elsewhere the two are one.
       row.terms.weightedCoverage = series.contains("weightedCoverage")
-                                       ? series.at("weightedCoverage").at(k).get<double>()
+                                       ? fraction("weightedCoverage", k)
                                        : row.terms.coverage;
       if (series.contains("resolutionCoverage"))
-        row.resolutionCoverage = series.at("resolutionCoverage").at(k).get<double>();
-      row.terms.utilization = series.at("utilization").at(k).get<double>();
-      row.terms.repulsion = series.at("repulsion").at(k).get<double>();
-      row.terms.reward = series.at("reward").at(k).get<double>();
-      row.minObjectDistance = numberOrInfinity(series.at("minObjectDistance").at(k));
-      row.minCameraDistance = numberOrInfinity(series.at("minCameraDistance").at(k));
-      row.minObjectDistanceInStep = numberOrInfinity(series.at("minObjectDistanceInStep").at(k));
-      row.minCameraDistanceInStep = numberOrInfinity(series.at("minCameraDistanceInStep").at(k));
-      row.avoidableContactTime = series.at("avoidableContactTime").at(k).get<double>();
-      row.unavoidableContactTime = series.at("unavoidableContactTime").at(k).get<double>();
+        row.resolutionCoverage = fraction("resolutionCoverage", k);
+      row.terms.utilization = fraction("utilization", k);
+      row.terms.repulsion = read.number("repulsion", k, 0.0, kInfinity);
+      row.terms.reward = read.number("reward", k, -kInfinity, kInfinity);
+      row.minObjectDistance = read.distance("minObjectDistance", k);
+      row.minCameraDistance = read.distance("minCameraDistance", k);
+      row.minObjectDistanceInStep = read.distance("minObjectDistanceInStep", k);
+      row.minCameraDistanceInStep = read.distance("minCameraDistanceInStep", k);
+      row.avoidableContactTime = read.number("avoidableContactTime", k, 0.0, kMaxRecordedTime);
+      row.unavoidableContactTime = read.number("unavoidableContactTime", k, 0.0, kMaxRecordedTime);
       if (series.contains("targetsPresent"))
-        row.targetsPresent = series.at("targetsPresent").at(k).get<int>();
+        row.targetsPresent = static_cast<int>(read.number("targetsPresent", k, 0.0, 1e9));
       for (std::size_t c = 0; c < cameras.size(); ++c) {
-        row.cameras.push_back(poseFrom(cameras.at(c).at(k)));
-        const auto& g = goals.at(c).at(k);
-        row.goals.push_back(g.is_null() ? std::nullopt : std::optional(poseFrom(g)));
+        row.cameras.push_back(read.pose(cameras.at(c), "cameras", c, k));
+        const auto& g = goals.at(c);
+        if (!g.is_array() || g.size() != steps)
+          throw InputError(fmt::format("{}: series.goals[{}] needs one entry a step", source, c));
+        row.goals.push_back(g.at(k).is_null() ? std::nullopt
+                                              : std::optional(read.pose(g, "goals", c, k)));
       }
       run.steps.push_back(std::move(row));
     }
+    const double lastTime = run.steps.back().time;
+    const int cameraCount = static_cast<int>(cameras.size());
     for (const auto& e : j.at("events")) {
-      control::ControlEvent event{e.at("time").get<double>(),
-                                  e.at("kind").get<std::string>(),
-                                  e.at("camera").get<int>(),
-                                  e.at("detail").get<std::string>(),
-                                  {},
-                                  e.value("reason", std::string())};
+      const double at = e.at("time").get<double>();
+      const int camera = e.at("camera").get<int>();
+      if (!(at >= 0.0 && at <= lastTime) || camera < -1 || camera >= cameraCount) {
+        throw InputError(
+            fmt::format("{}: an event at {} s of camera {} lies outside the run "
+                        "(0 to {} s, cameras 0 to {}, -1 for none)",
+                        source, at, camera, lastTime, cameraCount - 1));
+      }
+      control::ControlEvent event{at,     e.at("kind").get<std::string>(),
+                                  camera, e.at("detail").get<std::string>(),
+                                  {},     e.value("reason", std::string())};
       if (e.contains("path")) {
-        for (const auto& p : e.at("path"))
+        for (const auto& p : e.at("path")) {
           event.path.push_back(poseFrom(p));
+          if (!std::isfinite(event.path.back().x) || !std::isfinite(event.path.back().y) ||
+              std::abs(event.path.back().x) > scene::kMaxCoordinate ||
+              std::abs(event.path.back().y) > scene::kMaxCoordinate)
+            throw InputError(source + ": an event's path leaves every scene's coordinates");
+        }
       }
       run.events.push_back(std::move(event));
     }

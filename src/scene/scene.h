@@ -83,8 +83,9 @@ struct Pitch {
   double width = 0.0;   // m, along y
 };
 
-// The longest run a scene or a command may ask for, s (sim.duration's range).
-inline constexpr double kMaxDuration = 1e6;
+// The longest run a scene or a command may ask for, s (sim.duration's range): 100,000 steps at
+// the default dt = 0.1 s (sim/run_length.h says why that many).
+inline constexpr double kMaxDuration = 1e4;
 
 struct Scene {
   std::string name;         // file stem, e.g. "dynamic9"

@@ -4,16 +4,40 @@
 // recorded past it) and the caller did not ask for one: `durationGiven` (`--duration`), or a
 // sim.duration other than the default 30 s (`--set`, a parameter file, Python's params). One
 // rule for `camcov run`, the batch, and Python's runs and environments.
+//
+// A run's record holds every step (every camera's pose and goal: about 3 KB a step for five
+// cameras, 12 KB for 30) and its explorer page draws every one, in memory before they reach a
+// file. So a run has more than 0 s and at most kMaxSteps steps: 100,000, 2.8 hours at the
+// default dt = 0.1 s, about 300 MB of record for five cameras; longer is refused (InputError)
+// before anything runs, rather than exhausting the machine's memory and disk.
+#include <fmt/format.h>
+
+#include <cmath>
 #include <optional>
 
 #include "params/parameters.h"
+#include "util/input_error.h"
 
 namespace camcov::sim {
+
+inline constexpr double kMaxSteps = 100000;
 
 inline params::Parameters withRunLength(params::Parameters p, std::optional<double> sceneDuration,
                                         bool durationGiven) {
   if (sceneDuration && !durationGiven && p.sim.duration == params::Parameters{}.sim.duration)
     p.sim.duration = *sceneDuration;
+  if (!(std::llround(p.sim.duration / p.sim.dt) >= 1)) {
+    throw InputError(
+        fmt::format("a run of {} s is shorter than one step of dt = {} s: it would "
+                    "average nothing (--duration, sim.duration)",
+                    p.sim.duration, p.sim.dt));
+  }
+  if (p.sim.duration / p.sim.dt > kMaxSteps) {
+    throw InputError(fmt::format(
+        "a run of {} s at dt = {} s would record {:.0f} steps; at most {:.0f} are recorded (every "
+        "camera's pose at each step is kept in memory): shorten the run or lengthen dt",
+        p.sim.duration, p.sim.dt, p.sim.duration / p.sim.dt, kMaxSteps));
+  }
   return p;
 }
 

@@ -558,6 +558,27 @@ def test_two_runs_side_by_side_each_show_their_own_coverage(explorer, camcov, tm
     assert_no_console_errors(explorer)
 
 
+def test_a_comment_and_a_script_tag_in_the_data_leave_the_page_whole(explorer, camcov,
+                                                                     tmp_path):
+    # "<!--<script>" puts an HTML parser that meets it inside a script element into the
+    # escaped state, where the element's own end tag no longer ends it: a scene description or
+    # file name holding it used to leave the page empty.
+    hostile = "<!--<script>alert(1)</script>"
+    scene = json.loads(SCENE.read_text())
+    scene["description"] = f"a hostile {hostile} description"
+    scene_file = tmp_path / "evil<!--<script>.json"
+    scene_file.write_text(json.dumps(scene))
+    run_file, run = record_run(camcov, tmp_path / "runs", "paper", scene=scene_file)
+    page = write_explorer(camcov, [run_file], tmp_path / "explorer.html")
+    explorer.open(page)
+    last = len(run["series"]["coverage"]) - 1
+    explorer.seek(last)
+    assert_shows_fraction(explorer.text(".coverage", explorer.run(0)),
+                          run["series"]["coverage"][last], "the hostile scene's last step")
+    assert "evil<!--<script>" in explorer.driver.find_element(By.TAG_NAME, "body").text
+    assert_no_console_errors(explorer)
+
+
 def test_the_page_loads_nothing_from_the_network(explorer, paper_page):
     page, run = paper_page
     explorer.open(page)

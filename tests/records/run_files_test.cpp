@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "util/input_error.h"
 
 namespace camcov::records {
@@ -83,6 +85,35 @@ TEST(RunFiles, AResolutionRunRecordsItsSeriesSummaryAndCsvColumn) {
   // A run without a resolution has none of it.
   EXPECT_FALSE(runToJson(sampleRun())["series"].contains("resolutionCoverage"));
   EXPECT_FALSE(runToJson(sampleRun())["summary"].contains("averageResolutionCoverage"));
+}
+
+// Each class of impossible run, as a hand edit or a cut makes it: refused naming the column
+// and step, never drawn, encoded or summarized.
+TEST(RunFiles, RejectsSeriesNoRunCanRecord) {
+  const nlohmann::json good = runToJson(sampleRun());
+  const auto refused = [&](const std::function<void(nlohmann::json&)>& edit,
+                           const std::string& fragment) {
+    nlohmann::json j = good;
+    edit(j);
+    try {
+      runFromJson(j, "edited.json");
+      ADD_FAILURE() << "accepted: " << fragment;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  refused([](auto& j) { j["series"]["time"][1] = 0.0; }, "series.time[1] = 0 does not come after");
+  refused([](auto& j) { j["series"]["time"][1] = -0.1; }, "series.time[1] = -0.1 lies outside");
+  refused([](auto& j) { j["series"]["coverage"][1] = 5; }, "series.coverage[1] = 5 lies outside");
+  refused([](auto& j) { j["series"]["utilization"][0] = "a"; }, "series.utilization[0] is not a");
+  refused([](auto& j) { j["series"]["cameras"][0][1][0] = 1e308; },
+          "series.cameras[0][1][0] = 1e+308 lies outside");
+  refused([](auto& j) { j["series"]["reward"].erase(1); }, "series.reward has 1 entries for 2");
+  refused([](auto& j) { j["series"]["minObjectDistance"][0] = -1; },
+          "series.minObjectDistance[0] = -1 lies outside");
+  refused([](auto& j) { j["summary"]["steps"] = 3; }, "the summary says 3 steps");
+  refused([](auto& j) { j["events"][0]["time"] = 7.0; }, "an event at 7 s of camera 0 lies");
+  refused([](auto& j) { j["events"][0]["camera"] = 4; }, "of camera 4 lies outside");
 }
 
 TEST(RunFiles, RejectsDocumentsThatAreNotRuns) {

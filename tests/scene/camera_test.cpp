@@ -69,6 +69,17 @@ TEST(Lens, RangeOnSegmentIsTheChordOfTheCircle) {
   EXPECT_NEAR(t1, 0.75, 1e-9);
 }
 
+TEST(Lens, ARangeBeyondWhatSquaresToADoubleSeesAllItWouldWithout) {
+  // r² overflows from about 1e154 on: such a lens must not read as seeing nothing.
+  double t0 = 0, t1 = 0;
+  for (const double range : {1e150, 1e155, 1e200, 1e308}) {
+    ASSERT_TRUE(rangedLens(kPi / 6, range).rangeOnSegment({0, 0}, {3e8, -8}, {-1e9, 1e9}, t0, t1))
+        << range;
+    EXPECT_EQ(t0, 0.0);
+    EXPECT_EQ(t1, 1.0);
+  }
+}
+
 TEST(Lens, CachesTellARangeApartToTheBit) {
   EXPECT_TRUE(sameBits(rangedLens(0.5, 3.0), rangedLens(0.5, 3.0)));
   EXPECT_FALSE(sameBits(rangedLens(0.5, 3.0), rangedLens(0.5, std::nextafter(3.0, 4.0))));
