@@ -46,6 +46,8 @@ float* writeRing(const geometry::Ring& ring, std::size_t vertices, const RoomFra
   return at + 2 * (vertices - ring.size());
 }
 
+}  // namespace
+
 void requireFits(const scene::Scene& scene, const EncodingSizes& sizes) {
   const EncodingSizes needed = EncodingSizes::of(scene);
   if (needed.cameras > sizes.cameras || needed.targets > sizes.targets ||
@@ -57,8 +59,6 @@ void requireFits(const scene::Scene& scene, const EncodingSizes& sizes) {
                                 " vertices a ring: more than the encoding holds");
   }
 }
-
-}  // namespace
 
 void EncodingSizes::check() const {
   const auto require = [](std::size_t value, std::size_t limit, const char* what) {

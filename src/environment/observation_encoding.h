@@ -50,6 +50,9 @@ struct EncodingSizes {
   static EncodingSizes of(const scene::Scene& scene);
 };
 
+// std::invalid_argument naming the scene's counts unless `sizes` hold `scene`.
+void requireFits(const scene::Scene& scene, const EncodingSizes& sizes);
+
 enum class View { team, own };
 
 // Writes the episode's present instant into `out` (size sizes.size()); `camera` is the

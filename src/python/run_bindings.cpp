@@ -194,7 +194,7 @@ void bindRuns(py::module_& m) {
         }
         request.seeds = seeds;
         if (!duration.is_none()) {
-          request.duration = duration.cast<double>();
+          request.duration = numberFrom(duration, "duration");
           if (!withinRange(request.duration, 0.0, 1e6)) {  // as `camcov bench --duration`
             throw py::value_error(fmt::format("duration = {}: expected a number in {}",
                                               readableNumber(request.duration),

@@ -3,7 +3,7 @@ import numpy as np
 from gymnasium import spaces
 from pettingzoo import ParallelEnv
 
-from camcov.env import Episodes
+from camcov.env import Episodes, one_call_at_a_time
 
 
 class CoverageParallelEnv(ParallelEnv):
@@ -76,6 +76,7 @@ class CoverageParallelEnv(ParallelEnv):
         return {agent: self.episodes.reward(episode.own_terms(j))
                 for j, agent in enumerate(self.agents)}
 
+    @one_call_at_a_time
     def reset(self, seed=None, options=None):
         """Starts an episode at t = 0: (observations, infos), one entry per agent."""
         if seed is not None:
@@ -85,9 +86,10 @@ class CoverageParallelEnv(ParallelEnv):
         info = self.episodes.info()
         return self._observations(), {agent: dict(info) for agent in self.agents}
 
+    @one_call_at_a_time
     def step(self, actions):
-        """One step of sim.dt with every agent's command (a missing agent's camera holds
-        still): (observations, rewards, terminations, truncations, infos)."""
+        """One step of sim.dt with every live agent's command (ValueError naming any missing):
+        (observations, rewards, terminations, truncations, infos)."""
         episode = self.episodes.episode
         if episode is None or not self.agents:
             raise RuntimeError("step: call reset() first; the episode is over")
@@ -105,6 +107,10 @@ class CoverageParallelEnv(ParallelEnv):
                     raise ValueError(f"actions[{agent!r}]: expected shape (3,) (vx, vy, yaw "
                                      f"rate), got {command.shape}")
                 commands[j] = command
+        missing = [agent for agent in self.agents if agent not in actions]
+        if missing:
+            raise ValueError(f"actions: no command for agents {missing}; every live agent "
+                             f"gives one")
         episode.step(commands)
         observations = self._observations()
         terms = episode.terms

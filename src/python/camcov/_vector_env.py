@@ -7,7 +7,7 @@ from gymnasium.vector.utils import batch_space
 
 import camcov
 from camcov._gym_env import _action_space
-from camcov.env import Episodes
+from camcov.env import Episodes, one_call_at_a_time
 from gymnasium import spaces
 
 
@@ -57,6 +57,7 @@ class VectorCoverageEnv(VectorEnv):
         episodes.start(self._rngs[i], options)
         return episodes.episode.observation(episodes.sizes)
 
+    @one_call_at_a_time
     def reset(self, *, seed=None, options=None):
         """Starts every episode at t = 0: (observations, infos)."""
         if seed is not None:
@@ -73,6 +74,7 @@ class VectorCoverageEnv(VectorEnv):
         return {"coverage": np.array([e.episode.terms["coverage"] for e in self.vector_episodes]),
                 "time": np.array([e.episode.time for e in self.vector_episodes])}
 
+    @one_call_at_a_time
     def step(self, actions):
         """One step of sim.dt in every environment: (observations, rewards, terminations,
         truncations, infos), each with num_envs rows."""

@@ -20,7 +20,9 @@ its seeded generator (options={"scene": i} picks scene i). Gymnasium and Petting
 imported only when their environments are first used; camcov itself needs neither.
 The observation layout, the options and the rewards: docs/python.md, "Environments".
 """
+import functools
 import os
+import threading
 
 import numpy as np
 
@@ -40,6 +42,18 @@ def __getattr__(name):
         import importlib
         return getattr(importlib.import_module(_LAZY[name]), name)
     raise AttributeError(f"module 'camcov.env' has no attribute {name!r}")
+
+
+def one_call_at_a_time(method):
+    """An environment's reset() or step() that takes turns with the others so marked on the
+    same environment: Python threads sharing one environment use it one call at a time (its
+    episodes' own locks keep the native state safe; this keeps the environment's Python state
+    whole too)."""
+    @functools.wraps(method)
+    def taking_turns(self, *args, **kwargs):
+        with self.__dict__.setdefault("_one_call_at_a_time", threading.RLock()):
+            return method(self, *args, **kwargs)
+    return taking_turns
 
 
 def family(name, split="tune", count=20):
