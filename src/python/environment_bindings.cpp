@@ -160,8 +160,14 @@ void bindEnvironment(py::module_& m) {
       "One run of a scene stepped from Python, t = 0 to sim.duration in steps of sim.dt: the "
       "simulator of camcov run (saturation, safety layer, boundary), commands chosen by the "
       "caller. What camcov.env's environments step. Threads sharing one take turns.")
-      .def(py::init([](std::shared_ptr<PythonScene> scene, const py::object& params) {
-             return std::make_shared<PythonEpisode>(std::move(scene), parametersFrom(params));
+      .def(py::init([](const py::handle& scene, const py::object& params) {
+             // Checked here: pybind11 would hand None on as a null scene.
+             if (!py::isinstance<PythonScene>(scene)) {
+               throw py::type_error(
+                   fmt::format("scene: expected a camcov.Scene, got {}", typeName(scene)));
+             }
+             return std::make_shared<PythonEpisode>(scene.cast<std::shared_ptr<PythonScene>>(),
+                                                    parametersFrom(params));
            }),
            py::arg("scene"), py::arg("params") = py::none(),
            "Episode(scene, params=None): a camcov.Scene at t = 0, with the parameters as "

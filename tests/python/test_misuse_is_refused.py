@@ -124,6 +124,8 @@ def test_a_parallel_step_missing_agents_names_them(static, envs):
 
 
 def test_wrong_types_get_camcov_messages_not_the_bindings(dynamic):
+    with pytest.raises(TypeError, match="scene: expected a camcov.Scene, got NoneType"):
+        camcov.Episode(None)
     with pytest.raises(TypeError, match="params: expected a dict"):
         camcov.parameters([("sim.dt", 0.1)])
     with pytest.raises(TypeError, match="params: expected a dict"):
