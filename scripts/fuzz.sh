@@ -6,9 +6,10 @@
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
 # Targets: the scene loader, the visibility sweep, the two track importers, the command
-# line's parser and weighted coverage on scenes the bytes choose. The corpus starts from tests/fuzz/seeds, every scene of scenes/ and tests/data/
-# and the track extracts of tests/data/tracks (copied at run time into the build folder, never
-# into the repository).
+# line's parser, weighted coverage on scenes the bytes choose, and the Python environments'
+# native stepping (EpisodeStepper). The corpus starts from tests/fuzz/seeds, every scene of
+# scenes/ and tests/data/ and the track extracts of tests/data/tracks (copied at run time into
+# the build folder, never into the repository).
 # A crash leaves its input in build-asan/artifacts/; replay it with
 #   build-asan/tests/fuzz/fuzz_<target> build-asan/artifacts/<file>
 set -euo pipefail
@@ -20,11 +21,11 @@ case "$budget" in
 esac
 
 dir=$("$repo/scripts/build.sh" sanitize fuzz_scene fuzz_visibility fuzz_lastrow fuzz_ethucy \
-  fuzz_command_line fuzz_weighted_scene | tail -n 1)
+  fuzz_command_line fuzz_weighted_scene fuzz_episode_stepper | tail -n 1)
 
 corpus="$dir/corpus"
 rm -rf "$corpus"
-mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line,weighted_scene} "$dir/artifacts"
+mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line,weighted_scene,episode_stepper} "$dir/artifacts"
 cp "$repo"/tests/fuzz/seeds/scene/*.json "$corpus/scene/"
 find "$repo/scenes" "$repo/tests/data" -name '*.json' -size -64k |
   while read -r f; do cp "$f" "$corpus/scene/$(echo "${f#"$repo"/}" | tr / _)"; done
@@ -60,5 +61,7 @@ run ethucy -max_len=8192 || status=1
 run command_line -max_len=512 || status=1
 # Bytes choose a weighted scene (tests/fuzz/weighted_scene_fuzzer.cpp): a few hundred do.
 run weighted_scene -max_len=512 -len_control=0 || status=1
+# Bytes choose episodes, threads and commands (tests/fuzz/episode_stepper_fuzzer.cpp).
+run episode_stepper -max_len=1024 || status=1
 [ "$status" -eq 0 ] && echo "fuzz: no failures" || echo "fuzz: FAILED, inputs in $dir/artifacts"
 exit "$status"

@@ -1,9 +1,29 @@
 #include "environment/episode_batch.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace camcov::environment {
+namespace {
+
+// Two threads stepping one episode would race: an episode appears once per call.
+void requireDistinct(std::span<Episode* const> episodes) {
+  std::vector<std::pair<const Episode*, std::size_t>> byAddress;
+  for (std::size_t i = 0; i < episodes.size(); ++i)
+    byAddress.emplace_back(episodes[i], i);
+  std::sort(byAddress.begin(), byAddress.end());
+  for (std::size_t k = 1; k < byAddress.size(); ++k) {
+    if (byAddress[k].first == byAddress[k - 1].first) {
+      throw std::invalid_argument("episodes: " + std::to_string(byAddress[k - 1].second) + " and " +
+                                  std::to_string(byAddress[k].second) +
+                                  " are the same episode, which steps once per call");
+    }
+  }
+}
+
+}  // namespace
 
 EpisodeStepper::EpisodeStepper(unsigned threads) {
   if (threads < 1 || threads > kMaxThreads) {
@@ -82,8 +102,11 @@ void EpisodeStepper::step(std::span<Episode* const> episodes,
       throw std::invalid_argument(
           "EpisodeStepper::step: an episode has more cameras than the "
           "stride");
+    requireFits(e->scene(), sizes);  // before any episode steps
   }
+  requireDistinct(episodes);
   if (n == 0) return;
+  const std::lock_guard turn(call_);
   {
     const std::lock_guard hold(lock_);
     task_ = [&](std::size_t i) {

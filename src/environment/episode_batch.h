@@ -34,7 +34,8 @@ class EpisodeStepper {
   // its scene's cameras; stride at least the largest M_i), then writes its new instant's team
   // observation into observations[i·sizes.size(), (i + 1)·sizes.size()) and its terms into
   // terms[i]. Every episode is stepped even if one fails; then the first failure is rethrown.
-  // One call at a time.
+  // Calls from several threads take turns (the workers serve one call at a time); the
+  // episodes must be distinct, and no other thread may use them during the call.
   void step(std::span<Episode* const> episodes, std::span<const scene::CameraCommand> commands,
             std::size_t stride, const EncodingSizes& sizes, std::span<float> observations,
             std::span<reward::RewardTerms> terms);
@@ -43,6 +44,7 @@ class EpisodeStepper {
   void stop();       // joins the workers
   void serve();      // a worker's loop
   void takeItems();  // items of the current call until none is left
+  std::mutex call_;  // held for a whole call: the one the workers serve
   std::function<void(std::size_t)> task_;
   std::size_t count_ = 0;       // items of the current call
   std::size_t next_ = 0;        // the next item to take

@@ -82,6 +82,8 @@ std::vector<std::size_t> targetOrder(const kinematics::World& world,
   return order;
 }
 
+}  // namespace
+
 void requireFits(const scene::Scene& scene, const EncodingSizes& sizes) {
   const EncodingSizes needed = EncodingSizes::of(scene);
   const bool targetsFit =
@@ -95,8 +97,6 @@ void requireFits(const scene::Scene& scene, const EncodingSizes& sizes) {
                                 " vertices a ring: more than the encoding holds");
   }
 }
-
-}  // namespace
 
 void EncodingSizes::check() const {
   const auto require = [](std::size_t value, std::size_t limit, const char* what) {

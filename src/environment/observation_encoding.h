@@ -63,6 +63,9 @@ struct EncodingSizes {
   static EncodingSizes of(const scene::Scene& scene);
 };
 
+// std::invalid_argument naming the scene's counts unless `sizes` hold `scene`.
+void requireFits(const scene::Scene& scene, const EncodingSizes& sizes);
+
 enum class View { team, own };
 
 // The fields' bounds: positions (room frame) within ±kPositionBound, lengths over L (v_max,

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "environment/method_policy.h"
 #include "environment/observation_encoding.h"
 #include "python/bindings.h"
+#include "python/gil_free_lock.h"
 #include "python/numpy_arrays.h"
 #include "python/python_scene.h"
 #include "records/run_files.h"
@@ -33,6 +36,7 @@ using environment::EncodingSizes;
 using FloatArray = py::array_t<float, py::array::c_style>;
 
 // An episode as Python holds it: its scene kept alive with it, and what draws its frames.
+// Every use takes `mutex` (lockWithoutGil): threads sharing one episode take turns.
 struct PythonEpisode {
   PythonEpisode(std::shared_ptr<PythonScene> s, const params::Parameters& params)
       : scene(std::move(s)),
@@ -43,7 +47,44 @@ struct PythonEpisode {
   std::unique_ptr<viz::FrameBuilder> builder;  // made on the first frame
   std::unique_ptr<viz::FrameRenderer> renderer;
   viz::Frame frame;
+  bool closed = false;  // close() ends it: no step after
+  std::mutex mutex;
 };
+
+// With the episode's lock held: RuntimeError unless it can take commands now.
+void requireSteppable(const PythonEpisode& e, const std::string& what) {
+  if (e.closed) throw std::runtime_error(what + ": the episode is closed");
+  if (e.episode.finished()) throw py::value_error(what + ": the episode is finished");
+}
+
+// `f(episode)` with the episode's lock held.
+template <class Use>
+auto locked(PythonEpisode& e, Use&& use) {
+  const auto lock = lockWithoutGil(e.mutex);
+  return use(e.episode);
+}
+
+// A method's policy as Python holds it: the episode it was made for is kept alive, as its
+// controller refers to that episode's scene and parameters; calls on one policy take turns.
+struct PythonMethodPolicy {
+  PythonMethodPolicy(const control::Method& method, std::shared_ptr<PythonEpisode> e,
+                     std::uint64_t seed)
+      : madeFor(std::move(e)), policy(method, madeFor->episode, seed) {}
+  std::shared_ptr<PythonEpisode> madeFor;
+  environment::MethodPolicy policy;
+  std::mutex mutex;
+};
+
+// `item` as an episode: RuntimeError for None (none started yet), TypeError for another type.
+std::shared_ptr<PythonEpisode> episodeFrom(const py::handle& item, const std::string& what) {
+  if (item.is_none())
+    throw std::runtime_error(what + " is None: no episode has started (call reset() first)");
+  if (!py::isinstance<PythonEpisode>(item)) {
+    throw py::type_error(
+        fmt::format("{}: expected a camcov.Episode, got {}", what, typeName(item)));
+  }
+  return item.cast<std::shared_ptr<PythonEpisode>>();
+}
 
 // `targets`: how the target slots are filled, "index" (slot i: the scene's target i) or
 // "nearest" (the targets present, nearest first).
@@ -124,9 +165,15 @@ void bindEnvironment(py::module_& m) {
       m, "Episode",
       "One run of a scene stepped from Python, t = 0 to sim.duration in steps of sim.dt: the "
       "simulator of camcov run (saturation, safety layer, boundary), commands chosen by the "
-      "caller. What camcov.env's environments step.")
-      .def(py::init([](std::shared_ptr<PythonScene> scene, const py::object& params) {
-             return std::make_shared<PythonEpisode>(std::move(scene), parametersFrom(params));
+      "caller. What camcov.env's environments step. Threads sharing one take turns.")
+      .def(py::init([](const py::handle& scene, const py::object& params) {
+             // Checked here: pybind11 would hand None on as a null scene.
+             if (!py::isinstance<PythonScene>(scene)) {
+               throw py::type_error(
+                   fmt::format("scene: expected a camcov.Scene, got {}", typeName(scene)));
+             }
+             return std::make_shared<PythonEpisode>(scene.cast<std::shared_ptr<PythonScene>>(),
+                                                    parametersFrom(params));
            }),
            py::arg("scene"), py::arg("params") = py::none(),
            "Episode(scene, params=None): a camcov.Scene at t = 0, with the parameters as "
@@ -134,33 +181,53 @@ void bindEnvironment(py::module_& m) {
       .def_property_readonly(
           "scene", [](const PythonEpisode& e) { return e.scene; }, "The camcov.Scene it runs.")
       .def_property_readonly(
-          "time", [](const PythonEpisode& e) { return e.episode.observation().time; },
+          "time",
+          [](PythonEpisode& e) {
+            return locked(e, [](const auto& episode) { return episode.observation().time; });
+          },
           "The present instant t, s.")
       .def_property_readonly(
-          "index", [](const PythonEpisode& e) { return e.episode.index(); },
+          "index",
+          [](PythonEpisode& e) {
+            return locked(e, [](const auto& episode) { return episode.index(); });
+          },
           "The present step k (t = k · dt).")
       .def_property_readonly(
-          "steps", [](const PythonEpisode& e) { return e.episode.steps(); },
+          "steps",
+          [](PythonEpisode& e) {
+            return locked(e, [](const auto& episode) { return episode.steps(); });
+          },
           "How many steps the episode takes (sim.duration / sim.dt).")
       .def_property_readonly(
-          "finished", [](const PythonEpisode& e) { return e.episode.finished(); },
+          "finished",
+          [](PythonEpisode& e) {
+            return locked(e, [](const auto& episode) { return episode.finished(); });
+          },
           "True at the last instant, which takes no commands.")
       .def_property_readonly(
           "cameras",
-          [](const PythonEpisode& e) { return posesToArray(e.episode.observation().cameras); },
+          [](PythonEpisode& e) {
+            return locked(
+                e, [](const auto& episode) { return posesToArray(episode.observation().cameras); });
+          },
           "The cameras' poses now, (M, 3): x, y (m), yaw (rad).")
       .def_property_readonly(
           "terms",
-          [](const PythonEpisode& e) { return termsToDict(e.episode.observation().terms); },
+          [](PythonEpisode& e) {
+            return locked(
+                e, [](const auto& episode) { return termsToDict(episode.observation().terms); });
+          },
           "The team's reward terms now: coverage (eq. 3), weightedCoverage (eq. 3 with the "
           "scene's importance weights; coverage where it has none), utilization (5), "
           "repulsion (6), reward (8).")
       .def(
           "own_terms",
-          [](const PythonEpisode& e, std::size_t camera) {
+          [](PythonEpisode& e, std::size_t camera) {
             if (camera >= e.episode.scene().cameras.size())
               throw py::value_error(fmt::format("camera: no camera {}", camera));
-            return termsToDict(environment::ownTerms(e.episode, camera));
+            return locked(e, [&](const auto& episode) {
+              return termsToDict(environment::ownTerms(episode, camera));
+            });
           },
           py::arg("camera"),
           "Camera j's own reward terms, as if it were alone (eq. 3, eq. 5 with M = 1, eq. 6 "
@@ -170,23 +237,25 @@ void bindEnvironment(py::module_& m) {
           [](PythonEpisode& e, const py::handle& actions) {
             std::vector<scene::CameraCommand> commands(e.episode.scene().cameras.size());
             commandsFrom(actions, commands.size(), "action", commands);
-            if (e.episode.finished()) throw py::value_error("step: the episode is finished");
-            py::gil_scoped_release free;
+            const auto lock = lockWithoutGil(e.mutex);
+            requireSteppable(e, "step");
+            const py::gil_scoped_release free;
             e.episode.step(commands);
           },
           py::arg("actions"),
           "Commands for the present instant, (K, 3) with K at least the cameras (rows past them "
           "are not read): vx, vy (m/s), yaw rate (rad/s), saturated to each camera's limits; "
           "then the next instant. ValueError for another shape, a number that is not finite, "
-          "or a finished episode.")
+          "or a finished episode; RuntimeError once closed.")
       .def(
           "observation",
-          [](const PythonEpisode& e, const std::vector<std::size_t>& sizes, const std::string& view,
+          [](PythonEpisode& e, const std::vector<std::size_t>& sizes, const std::string& view,
              std::size_t camera, const std::string& targets) {
             if (view != "team" && view != "own")
               throw py::value_error("view: expected \"team\" or \"own\", got \"" + view + "\"");
             const EncodingSizes s = sizesFrom(sizes, targets);
             FloatArray out(static_cast<py::ssize_t>(s.size()));
+            const auto lock = lockWithoutGil(e.mutex);
             try {
               environment::encodeObservation(
                   e.episode, s, view == "own" ? environment::View::own : environment::View::team,
@@ -205,18 +274,26 @@ void bindEnvironment(py::module_& m) {
       .def(
           "frame",
           [](PythonEpisode& e, int width, int height, const std::string& subtitle) {
+            const auto lock = lockWithoutGil(e.mutex);
             return frameArray(e, width, height, subtitle);
           },
           py::arg("width") = 640, py::arg("height") = 480, py::arg("subtitle") = "",
           "The present instant drawn as camcov render draws it, with `subtitle` under the "
           "scene's name: an (height, width, 3) uint8 RGB array.")
       .def(
-          "close", [](PythonEpisode& e) { e.episode.close(); },
-          "Records the last instant, completing the summary's averages (once finished).")
+          "close",
+          [](PythonEpisode& e) {
+            const auto lock = lockWithoutGil(e.mutex);
+            e.closed = true;
+            e.episode.close();
+          },
+          "Ends the episode: it takes no more steps. Once finished, records the last instant, "
+          "completing the summary's averages.")
       .def_property_readonly(
           "summary",
-          [](const PythonEpisode& e) {
-            return jsonToPython(records::summaryJson(e.episode.summary()));
+          [](PythonEpisode& e) {
+            return jsonToPython(records::summaryJson(
+                locked(e, [](const auto& episode) { return episode.summary(); })));
           },
           "The run's summary so far (its averages, eq. 4, once closed).");
 
@@ -239,23 +316,35 @@ void bindEnvironment(py::module_& m) {
       "(low, high): the bounds, float32, of every float of an observation padded to sizes = "
       "(cameras, targets, obstacles, vertices); the encoding clamps to them.");
 
-  py::class_<environment::MethodPolicy>(
+  py::class_<PythonMethodPolicy>(
       m, "MethodPolicy",
       "A method of the table choosing an episode's commands, its controller made and asked as "
-      "a batch run makes and asks it: driven by it, an episode is that method's run.")
-      .def(py::init([](const std::string& method, const PythonEpisode& e, std::uint64_t seed) {
-             return std::make_unique<environment::MethodPolicy>(control::requireMethod(method),
-                                                                e.episode, seed);
+      "a batch run makes and asks it: driven by it, an episode is that method's run. Threads "
+      "sharing one take turns.")
+      .def(py::init([](const std::string& method, const py::handle& episode, std::uint64_t seed) {
+             return std::make_unique<PythonMethodPolicy>(control::requireMethod(method),
+                                                         episodeFrom(episode, "episode"), seed);
            }),
            py::arg("method"), py::arg("episode"), py::arg("seed"),
            "MethodPolicy(method, episode, seed): made at the episode's start.")
       .def(
           "decide",
-          [](environment::MethodPolicy& policy, PythonEpisode& e) {
-            std::vector<scene::CameraCommand> commands(e.episode.scene().cameras.size());
+          [](PythonMethodPolicy& p, const py::handle& episode) {
+            const std::shared_ptr<PythonEpisode> e = episodeFrom(episode, "episode");
+            // Its controller knows one scene's cameras, targets and obstacles.
+            if (e->scene != p.madeFor->scene) {
+              throw py::value_error(fmt::format(
+                  "decide: an episode of scene '{}', but this policy was made for an episode "
+                  "of scene '{}' (another camcov.Scene object); make one per episode",
+                  e->scene->scene.name, p.madeFor->scene->scene.name));
+            }
+            std::vector<scene::CameraCommand> commands(e->episode.scene().cameras.size());
             {
-              py::gil_scoped_release free;
-              policy.decide(e.episode, commands);
+              const auto turn = lockWithoutGil(p.mutex);
+              const auto lock = lockWithoutGil(e->mutex);
+              if (e->closed) throw std::runtime_error("decide: the episode is closed");
+              const py::gil_scoped_release free;
+              p.policy.decide(e->episode, commands);
             }
             std::vector<geometry::Pose> rows;
             for (const auto& u : commands)
@@ -263,12 +352,14 @@ void bindEnvironment(py::module_& m) {
             return posesToArray(rows);
           },
           py::arg("episode"),
-          "The commands for the episode's present instant, (M, 3): vx, vy, yaw rate.");
+          "The commands for the episode's present instant, (M, 3): vx, vy, yaw rate. "
+          "ValueError for an episode of another scene than the one it was made for; "
+          "RuntimeError for a closed one.");
 
   py::class_<environment::EpisodeStepper>(
       m, "EpisodeStepper",
       "Steps many episodes at once on threads that wait between calls, without the GIL: what "
-      "camcov.env.VectorCoverageEnv steps with.")
+      "camcov.env.VectorCoverageEnv steps with. Threads sharing one take turns.")
       .def(py::init([](unsigned threads) {
              try {
                return std::make_unique<environment::EpisodeStepper>(threads);
@@ -281,10 +372,16 @@ void bindEnvironment(py::module_& m) {
                              "How many threads step.")
       .def(
           "step",
-          [](environment::EpisodeStepper& stepper,
-             const std::vector<std::shared_ptr<PythonEpisode>>& episodes, const py::handle& actions,
-             const std::vector<std::size_t>& sizes, const std::string& targets) {
+          [](environment::EpisodeStepper& stepper, const py::sequence& items,
+             const py::handle& actions, const std::vector<std::size_t>& sizes,
+             const std::string& targets) {
             const EncodingSizes s = sizesFrom(sizes, targets);
+            std::vector<std::shared_ptr<PythonEpisode>> episodes;
+            std::vector<std::mutex*> mutexes;
+            for (const py::handle item : items) {
+              episodes.push_back(episodeFrom(item, fmt::format("episodes[{}]", episodes.size())));
+              mutexes.push_back(&episodes.back()->mutex);
+            }
             const Array a = Array::ensure(actions);
             const std::size_t n = episodes.size();
             if (!a || a.ndim() != 3 || static_cast<std::size_t>(a.shape(0)) != n ||
@@ -296,12 +393,15 @@ void bindEnvironment(py::module_& m) {
             }
             const std::size_t stride = static_cast<std::size_t>(a.shape(1));
             const auto v = a.unchecked<3>();
+            FloatArray observations(
+                {static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(s.size())});
             std::vector<scene::CameraCommand> commands(n * stride);
             std::vector<environment::Episode*> stepped;
+            // An episode given twice is locked once, then refused by the stepper.
+            const auto locks = lockAllWithoutGil(mutexes);
             for (std::size_t i = 0; i < n; ++i) {
+              requireSteppable(*episodes[i], fmt::format("episodes[{}]", i));
               environment::Episode& episode = episodes[i]->episode;
-              if (episode.finished())
-                throw py::value_error(fmt::format("episode {} is finished", i));
               for (std::size_t j = 0; j < episode.scene().cameras.size(); ++j) {
                 const scene::CameraCommand u{{v(i, j, 0), v(i, j, 1)}, v(i, j, 2)};
                 if (!u.isFinite()) {
@@ -312,8 +412,6 @@ void bindEnvironment(py::module_& m) {
               }
               stepped.push_back(&episode);
             }
-            FloatArray observations(
-                {static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(s.size())});
             std::vector<reward::RewardTerms> terms(n);
             std::string failure;
             {
@@ -341,7 +439,8 @@ void bindEnvironment(py::module_& m) {
           "observations (N, size) float32 (team view; targets as Episode.observation takes "
           "it) and terms (N, 4): coverage (as the "
           "reward takes it: weighted where the scene has importance weights), "
-          "utilization, repulsion, reward.");
+          "utilization, repulsion, reward. The episodes are distinct and started (not "
+          "None); calls from several threads take turns.");
 
   m.def(
       "family_scene",

@@ -60,6 +60,19 @@ std::vector<geometry::Pose> posesFromArray(const py::handle& poses, const char* 
   return out;
 }
 
+std::string typeName(const py::handle& value) {
+  return py::str(py::type::of(value).attr("__name__"));
+}
+
+double numberFrom(const py::handle& value, const char* what) {
+  const double number = PyFloat_AsDouble(value.ptr());
+  if (number == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw py::type_error(fmt::format("{}: expected numbers, got {}", what, typeName(value)));
+  }
+  return number;
+}
+
 std::vector<geometry::Pose> rowsFromArray(const py::handle& poses, const char* what) {
   // A list or tuple of rows is read directly: a controller's few rows cost less so than
   // through a numpy array made for them.
@@ -69,7 +82,7 @@ std::vector<geometry::Pose> rowsFromArray(const py::handle& poses, const char* w
       if (!py::isinstance<py::sequence>(row) || py::len(row) != 3)
         throw py::value_error(std::string(what) + ": expected rows of x, y, yaw");
       const auto r = py::reinterpret_borrow<py::sequence>(row);
-      out.push_back({r[0].cast<double>(), r[1].cast<double>(), r[2].cast<double>()});
+      out.push_back({numberFrom(r[0], what), numberFrom(r[1], what), numberFrom(r[2], what)});
     }
     return out;
   }

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geometry/ring.h"
@@ -20,6 +21,11 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 Array ringToArray(const geometry::Ring& ring);
 py::list ringsToList(const std::vector<geometry::Ring>& rings);
 Array posesToArray(std::span<const geometry::Pose> poses);
+// The name of a value's type, as Python's messages give it ("list", "NoneType").
+std::string typeName(const py::handle& value);
+// A Python number (or anything float() takes without parsing text) as a double; TypeError
+// naming `what` and the type otherwise.
+double numberFrom(const py::handle& value, const char* what);
 // An (M, 3) array-like (list of lists too) of any numbers, e.g. velocities; ValueError naming
 // `what` for another shape.
 std::vector<geometry::Pose> rowsFromArray(const py::handle& rows, const char* what);

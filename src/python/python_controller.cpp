@@ -3,6 +3,7 @@
 #include <pybind11/eval.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "python/bindings.h"
@@ -90,10 +91,18 @@ void PythonController::takeEventsFrom(const py::handle& events, double time, std
     control::ControlEvent event;
     event.time = time;
     event.kind = py::str(e["kind"]);
-    event.camera = e.contains("camera") ? e["camera"].cast<int>() : -1;
-    if (event.camera < -1 || event.camera >= static_cast<int>(cameras))
-      throw py::value_error("controller's events: camera " + std::to_string(event.camera) + " of " +
-                            std::to_string(cameras));
+    if (e.contains("camera") && !py::isinstance<py::int_>(e["camera"]))
+      throw py::value_error("controller's events: 'camera' must be an int");
+    // An int too large for C++ reads as out of range, like any other camera it does not have.
+    long long camera = e.contains("camera") ? PyLong_AsLongLong(e["camera"].ptr()) : -1;
+    if (PyErr_Occurred()) {
+      PyErr_Clear();
+      camera = std::numeric_limits<long long>::max();
+    }
+    if (camera < -1 || camera >= static_cast<long long>(cameras))
+      throw py::value_error("controller's events: camera " + std::string(py::str(e["camera"])) +
+                            " of " + std::to_string(cameras));
+    event.camera = static_cast<int>(camera);
     if (e.contains("detail")) event.detail = py::str(e["detail"]);
     if (e.contains("reason")) event.reason = py::str(e["reason"]);
     if (e.contains("path")) event.path = posesFromArray(e["path"], "controller's event path");

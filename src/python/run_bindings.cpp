@@ -194,7 +194,7 @@ void bindRuns(py::module_& m) {
         }
         request.seeds = seeds;
         if (!duration.is_none()) {
-          request.duration = duration.cast<double>();
+          request.duration = numberFrom(duration, "duration");
           // as `camcov bench --duration`
           if (!withinRange(request.duration, 0.0, scene::kMaxDuration) || request.duration == 0.0) {
             throw py::value_error(fmt::format("duration = {}: expected a number in {}",

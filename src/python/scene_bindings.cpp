@@ -18,7 +18,12 @@ namespace camcov::python {
 params::Parameters parametersFrom(const py::handle& values) {
   params::Parameters p;
   if (values.is_none()) return p;
-  for (const auto& [key, value] : py::cast<py::dict>(values)) {
+  if (!py::isinstance<py::dict>(values)) {
+    throw py::type_error(
+        fmt::format("params: expected a dict of \"group.name\" keys to values, or None; got {}",
+                    typeName(values)));
+  }
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(values)) {
     const std::string text = py::isinstance<py::bool_>(value)
                                  ? (value.cast<bool>() ? "true" : "false")
                                  : py::str(value).cast<std::string>();

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "control/methods.h"
@@ -211,6 +212,57 @@ TEST(EpisodeStepper, ThreadsGiveWhatOneThreadGivesAndAFailureStopsNothingElse) {
   EXPECT_EQ(observations[0], observations[1]);
   EXPECT_THROW(EpisodeStepper(0), std::invalid_argument);
   EXPECT_THROW(EpisodeStepper(EpisodeStepper::kMaxThreads + 1), std::invalid_argument);
+}
+
+TEST(EpisodeStepper, AnEpisodeGivenTwiceInOneCallIsRefusedBeforeAnyStep) {
+  const auto scene = oneTargetScene();
+  const EncodingSizes sizes = EncodingSizes::of(*scene);
+  const std::size_t m = scene->cameras.size();
+  Episode a(scene, shortRun(1.0)), b(scene, shortRun(1.0));
+  const std::vector<Episode*> episodes{&a, &b, &a};
+  std::vector<scene::CameraCommand> commands(3 * m);
+  std::vector<float> out(3 * sizes.size());
+  std::vector<reward::RewardTerms> terms(3);
+  EpisodeStepper stepper(2);
+  try {
+    stepper.step(episodes, commands, m, sizes, out, terms);
+    FAIL() << "an episode given twice was stepped";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(), "episodes: 0 and 2 are the same episode, which steps once per call");
+  }
+  EXPECT_EQ(a.index(), 0);
+  EXPECT_EQ(b.index(), 0);
+}
+
+TEST(EpisodeStepper, CallsFromSeveralThreadsTakeTurns) {
+  const auto scene = oneTargetScene();
+  const EncodingSizes sizes = EncodingSizes::of(*scene);
+  const std::size_t m = scene->cameras.size();
+  EpisodeStepper stepper(2);
+  // Each caller steps its own episodes through the one stepper until they finish.
+  const auto stepToTheEnd = [&] {
+    std::vector<std::unique_ptr<Episode>> owned;
+    std::vector<Episode*> episodes;
+    for (int i = 0; i < 3; ++i) {
+      owned.push_back(std::make_unique<Episode>(scene, shortRun(1.0)));
+      episodes.push_back(owned.back().get());
+    }
+    std::vector<scene::CameraCommand> commands(3 * m);
+    std::vector<float> out(3 * sizes.size());
+    std::vector<reward::RewardTerms> terms(3);
+    while (!episodes.front()->finished())
+      stepper.step(episodes, commands, m, sizes, out, terms);
+    return episodes.front()->index();
+  };
+  std::vector<std::thread> callers;
+  std::vector<int> reached(4);
+  for (std::size_t t = 0; t < reached.size(); ++t)
+    callers.emplace_back([&, t] { reached[t] = stepToTheEnd(); });
+  for (std::thread& caller : callers)
+    caller.join();
+  const int steps = Episode(scene, shortRun(1.0)).steps();
+  for (const int index : reached)
+    EXPECT_EQ(index, steps);
 }
 
 TEST(EncodingSizes, CountsThatWouldOverflowTheSizeAreRefused) {

@@ -3,7 +3,7 @@ import gymnasium
 import numpy as np
 from gymnasium import spaces
 
-from camcov.env import Episodes, commands_of
+from camcov.env import Episodes, commands_of, one_call_at_a_time
 
 
 def _action_space(episodes):
@@ -93,12 +93,14 @@ class CoverageEnv(gymnasium.Env):
             return episode.frame(*self.image_size)
         return self.episodes.observation()
 
+    @one_call_at_a_time
     def reset(self, *, seed=None, options=None):
         """Starts an episode at t = 0: (observation, info)."""
         super().reset(seed=seed)
         self.episodes.start(self.np_random, options)
         return self._observation(), self.episodes.info()
 
+    @one_call_at_a_time
     def step(self, action):
         """Moves every camera by its command for one step of sim.dt: (observation, reward,
         terminated (always False: coverage has no goal state), truncated (at sim.duration),

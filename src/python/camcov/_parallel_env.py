@@ -3,7 +3,7 @@ import numpy as np
 from gymnasium import spaces
 from pettingzoo import ParallelEnv
 
-from camcov.env import Episodes, commands_of
+from camcov.env import Episodes, commands_of, one_call_at_a_time
 
 
 class CoverageParallelEnv(ParallelEnv):
@@ -90,6 +90,7 @@ class CoverageParallelEnv(ParallelEnv):
                         else self.episodes.reward(episode.own_terms(j)))
                 for j, agent in enumerate(self.agents)}
 
+    @one_call_at_a_time
     def reset(self, seed=None, options=None):
         """Starts an episode at t = 0: (observations, infos), one entry per agent. Every
         possible agent starts; one whose slot the scene has no camera for (a family's smaller
@@ -101,9 +102,10 @@ class CoverageParallelEnv(ParallelEnv):
         info = self.episodes.info()
         return self._observations(), {agent: dict(info) for agent in self.agents}
 
+    @one_call_at_a_time
     def step(self, actions):
-        """One step of sim.dt with every agent's command (a missing agent's camera holds
-        still): (observations, rewards, terminations, truncations, infos)."""
+        """One step of sim.dt with every live agent's command (ValueError naming any missing):
+        (observations, rewards, terminations, truncations, infos)."""
         episode = self.episodes.episode
         if episode is None or not self.agents:
             raise RuntimeError("step: call reset() first; the episode is over")
@@ -119,6 +121,10 @@ class CoverageParallelEnv(ParallelEnv):
         for j, agent in enumerate(self.agents[:cameras]):
             if agent in actions:
                 commands[j] = commands_of(actions[agent], scale[j], (3,), f"actions[{agent!r}]")
+        missing = [agent for agent in self.agents if agent not in actions]
+        if missing:
+            raise ValueError(f"actions: no command for agents {missing}; every live agent "
+                             f"gives one")
         episode.step(commands)
         observations = self._observations()
         terms = episode.terms

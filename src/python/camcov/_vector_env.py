@@ -7,7 +7,7 @@ from gymnasium.vector.utils import batch_space
 
 import camcov
 from camcov._gym_env import _action_space, _observation_space
-from camcov.env import Episodes, commands_of
+from camcov.env import Episodes, commands_of, one_call_at_a_time
 
 
 MAX_ENVS = 65536  # each holds a simulation; more would exhaust memory before stepping once
@@ -62,6 +62,7 @@ class VectorCoverageEnv(VectorEnv):
         self._scales[i] = episodes.action_scale
         return episodes.observation()
 
+    @one_call_at_a_time
     def reset(self, *, seed=None, options=None):
         """Starts every episode at t = 0: (observations, infos)."""
         if seed is not None:
@@ -99,6 +100,7 @@ class VectorCoverageEnv(VectorEnv):
                 infos[key], infos["_" + key] = values, ended.copy()
         return infos
 
+    @one_call_at_a_time
     def step(self, actions):
         """One step of sim.dt in every environment: (observations, rewards, terminations,
         truncations, infos), each with num_envs rows."""

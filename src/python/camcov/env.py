@@ -22,7 +22,9 @@ its seeded generator (options={"scene": i} picks scene i). Importing camcov.env 
 camcov itself needs neither Gymnasium nor PettingZoo.
 The observation layout, the options and the rewards: docs/python.md, "Environments".
 """
+import functools
 import os
+import threading
 
 import numpy as np
 
@@ -76,6 +78,18 @@ def make(id, **options):
         import gymnasium
         return gymnasium.make(id, **options)
     return __getattr__("CoverageParallelEnv")(**options)
+
+
+def one_call_at_a_time(method):
+    """An environment's reset() or step() that takes turns with the others so marked on the
+    same environment: Python threads sharing one environment use it one call at a time (its
+    episodes' own locks keep the native state safe; this keeps the environment's Python state
+    whole too)."""
+    @functools.wraps(method)
+    def taking_turns(self, *args, **kwargs):
+        with self.__dict__.setdefault("_one_call_at_a_time", threading.RLock()):
+            return method(self, *args, **kwargs)
+    return taking_turns
 
 
 def family(name, split="tune", count=20):
