@@ -96,6 +96,28 @@ class SeriesReader {
   const std::string& source_;
 };
 
+// The summary's average coverage is its series' (eq. (4) by the trapezoid rule over the
+// intervals with targets at both ends, as the simulator takes it): a summary edited by hand, or
+// series edited without it, is refused rather than reported.
+void requireSummaryOfSeries(const RunRecord& run, const std::string& source) {
+  const double dt = run.metadata.parameters.sim.dt;
+  double integral = 0.0;
+  int measured = 0;
+  for (std::size_t k = 1; k < run.steps.size(); ++k) {
+    const StepRow &before = run.steps[k - 1], &now = run.steps[k];
+    if (before.targetsPresent == 0 || now.targetsPresent == 0) continue;
+    integral += 0.5 * (before.terms.coverage + now.terms.coverage) * dt;
+    ++measured;
+  }
+  const double average = measured > 0 ? integral / (measured * dt) : 0.0;
+  if (std::abs(average - run.summary.averageCoverage) > 1e-9) {
+    throw InputError(
+        fmt::format("{}: summary.averageCoverage = {} is not its series' average "
+                    "coverage ({})",
+                    source, run.summary.averageCoverage, average));
+  }
+}
+
 sim::RunSummary summaryFrom(const nlohmann::json& j) {
   sim::RunSummary s;
   s.steps = j.at("steps").get<int>();
@@ -272,8 +294,9 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     const auto& goals = series.at("goals");
     if (!cameras.is_array() || !goals.is_array() || goals.size() != cameras.size())
       throw InputError(source + ": series.cameras and series.goals need one list per camera");
+    // Fractions, with the last bits a sum of lengths or angles may round to past 1.
     const auto fraction = [&](const char* name, std::size_t k) {
-      return read.number(name, k, 0.0, 1.0);
+      return read.number(name, k, 0.0, 1.0 + 1e-9);
     };
     for (std::size_t k = 0; k < steps; ++k) {
       StepRow row;
@@ -312,6 +335,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       }
       run.steps.push_back(std::move(row));
     }
+    requireSummaryOfSeries(run, source);
     const double lastTime = run.steps.back().time;
     const int cameraCount = static_cast<int>(cameras.size());
     for (const auto& e : j.at("events")) {

@@ -9,6 +9,7 @@
 #include "batch/batch_plan.h"
 #include "batch/merge.h"
 #include "control/methods.h"
+#include "records/run_files.h"
 #include "scene/scene_families.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
@@ -250,6 +251,51 @@ TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("other code"), std::string::npos) << e.what();
   }
+}
+
+TEST(MergeFolders, AMissingShardOrRunAndARunUnderAnotherJobsNameAreRefused) {
+  const testing::ScratchDir dir;
+  const auto refused = [&](const std::vector<std::string>& inputs, const std::string& fragment) {
+    const records::BatchFolder target(dir / "target");
+    try {
+      mergeFolders(inputs, target, {});
+      ADD_FAILURE() << "merged: " << fragment;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(target.runsDir())) << "nothing copied";
+  };
+  std::vector<std::string> shards;
+  for (std::size_t k = 1; k <= 2; ++k) {
+    BatchRequest r = tinyRequest(2);
+    r.shard = {k - 1, 2};
+    BatchPlan plan = planBatch(r, "test");
+    const records::BatchFolder folder(dir / ("shard-" + std::to_string(k)));
+    prepareFolder(folder, plan.manifest, false);
+    Recorder quiet;
+    runBatch(plan.jobs, folder, 1, quiet);
+    shards.push_back(folder.root().string());
+  }
+  // One shard of two.
+  refused({shards[0]}, "jobs have no run in any folder given");
+  // Both, but a run deleted.
+  const records::BatchFolder second(shards[1]);
+  const std::vector<records::JobOutcome> jobs = second.allJobs();
+  ASSERT_GE(jobs.size(), 2u);
+  const fs::path first =
+      second.runFile(records::runStem(jobs[0].scene, jobs[0].method, jobs[0].seed));
+  const fs::path other =
+      second.runFile(records::runStem(jobs[1].scene, jobs[1].method, jobs[1].seed));
+  const fs::path kept = dir / "kept.json";
+  fs::rename(first, kept);
+  refused(shards, "jobs have no run in any folder given");
+  // Another job's run under its name.
+  fs::copy_file(other, first);
+  refused(shards, "not a run of this batch: its name is not its job's");
+  fs::remove(first);
+  fs::rename(kept, first);
+  const records::BatchFolder whole(dir / "whole");
+  EXPECT_EQ(mergeFolders(shards, whole, {}).scenes.size(), 2u);
 }
 
 TEST(MergeFolders, ADamagedRunIsNamedInItsSourceAndNothingIsCopied) {

@@ -11,7 +11,9 @@ import pytest
 
 import camcov
 
-LONG = {"sim.duration": 100000.0}  # hours of work: only Ctrl-C ends it in time
+# The longest run (100,000 steps), with a global step of 20,000 samples a camera every step:
+# hours of work, so only Ctrl-C ends it in time.
+LONG = {"sim.duration": 10000.0, "global.K": 20000, "global.T1": 0.1}
 
 
 def press_ctrl_c_after(seconds):
@@ -24,17 +26,21 @@ def test_ctrl_c_stops_a_run_of_a_builtin_method(tiny):
     press_ctrl_c_after(0.5)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        camcov.run(tiny("tiny_dynamic"), method="local", params=LONG)
+        camcov.run(tiny("tiny_dynamic"), method="paper", params=LONG)
     assert time.monotonic() - start < 5
 
 
 def test_ctrl_c_stops_a_run_of_a_python_controller(tiny):
     cameras = len(camcov.load_scene(tiny("tiny_dynamic")).cameras)
+
+    def slow_still(observation):  # a millisecond a step: 100 s for the longest run
+        time.sleep(0.001)
+        return np.zeros((cameras, 3))
+
     press_ctrl_c_after(0.5)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        camcov.simulate(tiny("tiny_dynamic"), lambda o: np.zeros((cameras, 3)), method="still",
-                        params=LONG)
+        camcov.simulate(tiny("tiny_dynamic"), slow_still, method="still", params=LONG)
     assert time.monotonic() - start < 5
     # And the next call runs normally.
     run = camcov.simulate(tiny("tiny_dynamic"), lambda o: np.zeros((cameras, 3)), method="still",

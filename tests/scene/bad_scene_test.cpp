@@ -69,7 +69,7 @@ const BadCase kBadCases[] = {
     {"sensing_range_not_number", "cameras[0].sensingRange", "expected a number"},
     {"duration_zero", "duration", "must be positive, is 0 s"},
     {"duration_negative", "duration", "must be positive, is -3 s"},
-    {"duration_beyond_range", "duration", "lies beyond 1e+06 s"},
+    {"duration_beyond_range", "duration", "lies beyond 10000 s"},
     {"duration_not_number", "duration", "expected a number"},
     {"no_cameras", "cameras", "at least one camera"},
     {"no_targets", "targets", "at least one target"},
