@@ -22,7 +22,7 @@
 #include "records/run_files.h"
 #include "scene/scene_families.h"
 #include "scene/scene_loader.h"
-#include "sim/run_length.h"
+#include "sim/scene_parameters.h"
 #include "viz/frame.h"
 #include "viz/frame_renderer.h"
 
@@ -37,7 +37,8 @@ struct PythonEpisode {
   PythonEpisode(std::shared_ptr<PythonScene> s, const params::Parameters& params)
       : scene(std::move(s)),
         episode(std::shared_ptr<const scene::Scene>(scene, &scene->scene),
-                sim::withRunLength(params, scene->scene.duration, false)) {}
+                sim::forScene(params, scene->scene,
+                              scene->file.empty() ? scene->scene.name : scene->file, false)) {}
   std::shared_ptr<PythonScene> scene;
   environment::Episode episode;
   std::unique_ptr<viz::FrameBuilder> builder;  // made on the first frame

@@ -48,6 +48,11 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
     s.averageWeightedCoverage = j.at("averageWeightedCoverage").get<double>();
   if (j.contains("finalWeightedCoverage"))
     s.finalWeightedCoverage = j.at("finalWeightedCoverage").get<double>();
+  if (j.contains("messages")) {
+    const nlohmann::json& m = j.at("messages");
+    s.messages = sim::MessageCounts{m.at("sent").get<int>(), m.at("delivered").get<int>(),
+                                    m.at("lost").get<int>()};
+  }
   return s;
 }
 
@@ -74,6 +79,12 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
   // Only weighted scenes have weighted coverage; the same.
   if (s.averageWeightedCoverage) j["averageWeightedCoverage"] = *s.averageWeightedCoverage;
   if (s.finalWeightedCoverage) j["finalWeightedCoverage"] = *s.finalWeightedCoverage;
+  // Only runs under limited knowledge send messages; the same.
+  if (s.messages) {
+    j["messages"] = {{"sent", s.messages->sent},
+                     {"delivered", s.messages->delivered},
+                     {"lost", s.messages->lost}};
+  }
   return j;
 }
 
