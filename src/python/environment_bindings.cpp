@@ -145,11 +145,11 @@ void bindEnvironment(py::module_& m) {
           [](const PythonEpisode& e) { return posesToArray(e.episode.observation().cameras); },
           "The cameras' poses now, (M, 3): x, y (m), yaw (rad).")
       .def_property_readonly(
-          "terms",
-          [](const PythonEpisode& e) { return termsToDict(e.episode.observation().terms); },
+          "terms", [](const PythonEpisode& e) { return termsToDict(e.episode.scored().terms); },
           "The team's reward terms now: coverage (eq. 3), weightedCoverage (eq. 3 with the "
           "scene's importance weights; coverage where it has none), utilization (5), "
-          "repulsion (6), reward (8).")
+          "repulsion (6), reward (8); as the run is scored, in the true world also under limited "
+          "knowledge.")
       .def(
           "own_terms",
           [](const PythonEpisode& e, std::size_t camera) {

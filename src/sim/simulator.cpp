@@ -162,10 +162,13 @@ double Simulation::time() const {
 
 control::Observation Simulation::observation() const {
   const State& s = *state_;
-  if (s.team) {
-    return {time(),       s.team->known(), cameras_, s.knownMeasure->segments(),
-            s.knownTerms, &*s.knownMeasure};
-  }
+  if (!s.team) return scored();
+  return {time(),       s.team->known(), cameras_, s.knownMeasure->segments(),
+          s.knownTerms, &*s.knownMeasure};
+}
+
+control::Observation Simulation::scored() const {
+  const State& s = *state_;
   return {time(), s.world, cameras_, s.measure.segments(), s.record.terms, &s.measure};
 }
 

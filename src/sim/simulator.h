@@ -107,6 +107,10 @@ class Simulation {
   // measured in that world: a method never reads the true one.
   control::Observation observation() const;
   std::span<const geometry::Pose> cameras() const { return cameras_; }
+  // The present instant as the run is scored and recorded: the true world, S and the terms
+  // in it. observation() but under limited knowledge; for a learner's reward, never for a
+  // method. Valid until advance().
+  control::Observation scored() const;
   // Commands for the present instant: a non-finite one holds the camera still and is a
   // NonFiniteCommand event at the first step of each such stretch (a controller's bug shows in
   // the results instead of hiding in them); each is saturated to its camera's limits

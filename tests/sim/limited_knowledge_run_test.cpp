@@ -125,5 +125,20 @@ TEST(LimitedKnowledge, NoMethodIsShownATargetNobodyHasSeen) {
   }
 }
 
+TEST(LimitedKnowledge, TheObservationsTermsAreTheKnownWorldsAndTheScoredOnesTheTrueWorlds) {
+  const scene::Scene scene = testing::sceneFromJson(kHiddenTarget);
+  Simulation full(scene, shortRun(false), 1);
+  Simulation limited(scene, shortRun(true), 1);
+  EXPECT_EQ(full.observation().terms.coverage, full.scored().terms.coverage);
+  EXPECT_EQ(limited.scored().terms.coverage, full.scored().terms.coverage);
+  EXPECT_EQ(limited.scored().world.targets.size(), 2U);
+  EXPECT_EQ(limited.observation().world.targets.size(), 1U);
+  // The hidden target's 4 m of boundary count in the true world only: what is seen of the
+  // small target (2.4 m round) is a larger part of the known world's perimeter.
+  const double seen = full.scored().terms.coverage * 6.4;
+  EXPECT_GT(seen, 0.0);
+  EXPECT_NEAR(limited.observation().terms.coverage, seen / 2.4, 1e-9);
+}
+
 }  // namespace
 }  // namespace camcov::sim
