@@ -151,6 +151,17 @@ nlohmann::json runToJson(const RunRecord& run) {
     for (const StepRow& row : run.steps)
       series["targetsPresent"].push_back(row.targetsPresent);
   }
+  // Runs under limited knowledge (RunSummary::messages) say who heard whom at each step:
+  // [from, to, sent at].
+  if (run.summary.messages) {
+    series["heard"] = nlohmann::json::array();
+    for (const StepRow& row : run.steps) {
+      nlohmann::json step = nlohmann::json::array();
+      for (const sim::Hearing& h : row.heard)
+        step.push_back({h.from, h.to, h.sentAt});
+      series["heard"].push_back(std::move(step));
+    }
+  }
   series["cameras"] = std::move(poses);
   series["goals"] = std::move(goals);
   j["series"] = std::move(series);
@@ -209,6 +220,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       row.unavoidableContactTime = series.at("unavoidableContactTime").at(k).get<double>();
       if (series.contains("targetsPresent"))
         row.targetsPresent = series.at("targetsPresent").at(k).get<int>();
+      if (series.contains("heard")) {
+        for (const auto& h : series.at("heard").at(k))
+          row.heard.push_back({h.at(0).get<int>(), h.at(1).get<int>(), h.at(2).get<double>()});
+      }
       for (std::size_t c = 0; c < cameras.size(); ++c) {
         row.cameras.push_back(poseFrom(cameras.at(c).at(k)));
         const auto& g = goals.at(c).at(k);

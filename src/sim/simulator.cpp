@@ -283,6 +283,7 @@ void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, R
   record.cameras = cameras_;
   record.goals = goals;
   record.events = events_;
+  if (s.team) record.heard = s.team->heard();
   recorder.step(record);
   if (k_ == steps_) {
     ++k_;

@@ -39,6 +39,8 @@ struct StepRecord {
   // Raised since the last step: contacts that began in the step that ended at t, targets
   // appearing or leaving, commands at t that are not finite, then the controller's events at t.
   std::span<const control::ControlEvent> events;
+  // Under limited knowledge: who heard whom at t (TeamKnowledge::heard); else empty.
+  std::span<const Hearing> heard;
 };
 
 struct RunSummary {
