@@ -246,6 +246,15 @@
                                   "vector-effect": "non-scaling-stroke", class: "object-path"}, svg);
       el("title", {}, loop).textContent = path.speed;
     }
+    // Under limited knowledge: a dashed line from each camera heard to each that heard it now.
+    const heard = panel.run.series.heard;
+    for (const [from, to] of heard ? heard[Math.min(k, heard.length - 1)] : []) {
+      const a = step.cameras[from], b = step.cameras[to];
+      el("line", {class: "heard", "data-from": String(from), "data-to": String(to),
+                  x1: a.x, y1: -a.y, x2: b.x, y2: -b.y, stroke: P.text, "stroke-opacity": 0.45,
+                  "stroke-width": 1.2, "stroke-dasharray": "3 3",
+                  "vector-effect": "non-scaling-stroke"}, svg);
+    }
     for (const c of step.cameras) {
       if (c.view.length > 2) {
         el("polygon", {points: pts(c.view), fill: P.view, "fill-opacity": panel.run.viewAlpha,
@@ -361,6 +370,13 @@
             : `${objectName(c.object)} at ${c.objectDistance.toFixed(3)} m`);
       field(info, "nearest-camera", "nearest camera", c.other === 0 ? "none"
             : `camera ${c.other - 1} at ${c.cameraDistance.toFixed(3)} m`);
+      const heard = run.series.heard;
+      if (heard) {
+        const from = heard[Math.min(k, heard.length - 1)]
+            .filter(([, to]) => to === sel.camera).map(([f]) => f);
+        field(info, "heard", "heard now from",
+              from.length ? `camera${from.length > 1 ? "s" : ""} ${from.join(", ")}` : "nobody");
+      }
       field(info, "goal", "goal", c.goal
             ? `(${c.goal.x.toFixed(2)}, ${c.goal.y.toFixed(2)}) m, ${deg(c.goal.yaw)}°, ` +
               `${c.plan.length - 1} waypoints ahead` : "none");

@@ -263,7 +263,15 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
                            {"reward", nlohmann::json::array()}};
   const bool weighted = scene.isWeighted();
   if (weighted) series["weightedCoverage"] = nlohmann::json::array();
+  // Under limited knowledge: who heard whom at each step, [from, to] pairs.
+  if (run.summary.messages) series["heard"] = nlohmann::json::array();
   for (const auto& step : run.steps) {
+    if (run.summary.messages) {
+      nlohmann::json pairs = nlohmann::json::array();
+      for (const sim::Hearing& h : step.heard)
+        pairs.push_back({h.from, h.to});
+      series["heard"].push_back(std::move(pairs));
+    }
     series["time"].push_back(step.time);
     series["coverage"].push_back(step.terms.coverage);
     if (weighted) series["weightedCoverage"].push_back(step.terms.weightedCoverage);

@@ -11,7 +11,7 @@
 #include "records/run_files.h"
 #include "scene/scene_families.h"
 #include "scene/scene_loader.h"
-#include "sim/run_length.h"
+#include "sim/scene_parameters.h"
 #include "util/code_identity.h"
 #include "util/input_error.h"
 #include "util/natural_order.h"
@@ -135,10 +135,11 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
       plan.manifest.methodLooks[r.methods[m]] = {brought[m]->description, brought[m]->color};
   }
   std::vector<fs::path> folderOf;  // per scene not drawn from a family, its folder; else empty
-  std::vector<params::Parameters> runParameters;  // per scene: its own duration, if any
+  // Per scene: with its own duration and knowledge settings, if any.
+  std::vector<params::Parameters> runParameters;
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
-    runParameters.push_back(sim::withRunLength(r.parameters, s.scene.duration, r.durationGiven));
+    runParameters.push_back(sim::forScene(r.parameters, s.scene, file.string(), r.durationGiven));
     const auto family = scene::familyNamedIn(s.scene.description);
     plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family.value_or("")});
     folderOf.push_back(family ? fs::path() : fs::absolute(file).lexically_normal().parent_path());

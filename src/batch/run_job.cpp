@@ -26,7 +26,8 @@ records::RunRecord recordRun(const scene::Scene& scene, records::RunMetadata met
   records::RunRecord run;
   run.metadata = std::move(metadata);
   records::RunRecorder recorder(run);
-  run.summary = sim::simulate(scene, run.metadata.parameters, controller, recorder);
+  run.summary =
+      sim::simulate(scene, run.metadata.parameters, controller, recorder, run.metadata.seed);
   return run;
 }
 

@@ -12,7 +12,7 @@
 #include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
-#include "sim/run_length.h"
+#include "sim/scene_parameters.h"
 #include "util/run_threads.h"
 #include "viz/run_replay.h"
 
@@ -36,7 +36,7 @@ int run(const RunOptions& o) {
   batch::JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
   job.parameters =
-      sim::withRunLength(job.parameters, scene::loadScene(o.scene).duration, o.duration >= 0.0);
+      sim::forScene(job.parameters, scene::loadScene(o.scene), o.scene, o.duration >= 0.0);
   setRunThreads(o.threads);
   const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);

@@ -8,6 +8,7 @@
 #include "kinematics/object_overlaps.h"
 #include "params/parameters.h"
 #include "scene/scene_loader.h"
+#include "sim/scene_parameters.h"
 #include "util/input_error.h"
 #include "util/printable.h"
 
@@ -23,6 +24,7 @@ Registration addValidateCommand(CLI::App& app) {
             for (const auto& file : *files) {
               try {
                 const scene::Scene s = scene::loadScene(file);
+                sim::forScene({}, s, file, false);  // checks its knowledge settings
                 std::cout << fmt::format("ok    {}: {} target(s), {} obstacle(s), {} camera(s)\n",
                                          printable(file), s.targets.size(), s.obstacles.size(),
                                          s.cameras.size());

@@ -36,6 +36,20 @@ std::vector<geometry::Vec2> velocities(const kinematics::World& now,
   return v;
 }
 
+}  // namespace
+
+std::vector<geometry::Vec2> targetVelocities(const kinematics::World& now,
+                                             const kinematics::World& before) {
+  return velocities(now, before, &kinematics::World::targets, kinematics::targetId);
+}
+
+std::vector<geometry::Vec2> obstacleVelocities(const kinematics::World& now,
+                                               const kinematics::World& before) {
+  return velocities(now, before, &kinematics::World::obstacles, kinematics::obstacleId);
+}
+
+namespace {
+
 void moveOn(std::vector<geometry::Ring>& rings, const std::vector<geometry::Vec2>& velocity,
             double seconds, const geometry::Box& room) {
   for (std::size_t i = 0; i < rings.size(); ++i) {
@@ -88,9 +102,8 @@ Forecast MotionWatch::forecast(const geometry::Box& room) const {
     return Forecast(last_, std::vector<geometry::Vec2>(last_.targets.size()),
                     std::vector<geometry::Vec2>(last_.obstacles.size()), room);
   }
-  return Forecast(
-      last_, velocities(last_, before_, &kinematics::World::targets, kinematics::targetId),
-      velocities(last_, before_, &kinematics::World::obstacles, kinematics::obstacleId), room);
+  return Forecast(last_, targetVelocities(last_, before_), obstacleVelocities(last_, before_),
+                  room);
 }
 
 }  // namespace camcov::control

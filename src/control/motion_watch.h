@@ -30,6 +30,15 @@ class Forecast {
   geometry::Box room_;
 };
 
+// Per target (obstacle) of `now`, the velocity of its bounding box's centre since `before`,
+// matched by scene id; zero for one that was not there before, and all zero unless `now` is
+// later than `before`. What the forecast goes on with, and what a camera remembers an object
+// moving at (sim/knowledge.h).
+std::vector<geometry::Vec2> targetVelocities(const kinematics::World& now,
+                                             const kinematics::World& before);
+std::vector<geometry::Vec2> obstacleVelocities(const kinematics::World& now,
+                                               const kinematics::World& before);
+
 class MotionWatch {
  public:
   // The world at the next instant. Whether a target or obstacle moved, turned, deformed, came or

@@ -30,6 +30,9 @@ class Episode {
   // The present instant t_k = k · dt, as a controller sees it: the world, the poses, S(t) and
   // the reward's terms, measured. Valid until the next step().
   control::Observation observation() const { return simulation_->observation(); }
+  // The present instant as the run is scored (the true world): what a learner is rewarded by,
+  // also under limited knowledge, where observation() holds the known world.
+  control::Observation scored() const { return simulation_->scored(); }
   int index() const { return simulation_->index(); }
   // Instants after t = 0 in the run (sim.duration / dt): the number of steps an episode takes.
   int steps() const { return simulation_->steps(); }

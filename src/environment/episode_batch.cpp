@@ -114,7 +114,7 @@ void EpisodeStepper::step(std::span<Episode* const> episodes,
       episode.step(commands.subspan(i * stride, episode.scene().cameras.size()));
       encodeObservation(episode, sizes, View::team, 0,
                         observations.subspan(i * sizes.size(), sizes.size()));
-      terms[i] = episode.observation().terms;
+      terms[i] = episode.scored().terms;
     };
     count_ = unfinished_ = n;
     next_ = 0;

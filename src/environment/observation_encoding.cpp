@@ -232,7 +232,7 @@ void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View 
 }
 
 reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera) {
-  const control::Observation o = episode.observation();
+  const control::Observation o = episode.scored();  // a reward: the true world's
   const scene::Scene& scene = episode.scene();
   if (camera >= scene.cameras.size())
     throw std::invalid_argument("ownTerms: no camera " + std::to_string(camera));

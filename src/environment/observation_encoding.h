@@ -85,7 +85,8 @@ void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View 
                        std::size_t camera, std::span<float> out);
 
 // Camera j's own terms of the reward, as if it were alone: eq. (3) over what it sees, eq. (5)
-// with M = 1, eq. (6) against the objects and the other cameras, and eq. (8) of those.
+// with M = 1, eq. (6) against the objects and the other cameras, and eq. (8) of those; in the
+// true world, as the run is scored (Episode::scored), also under limited knowledge.
 reward::RewardTerms ownTerms(const Episode& episode, std::size_t camera);
 
 }  // namespace camcov::environment

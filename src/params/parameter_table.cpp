@@ -21,7 +21,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // One row of the table from two member pointers: the group in Parameters, the field in it.
 template <auto Group, auto Field>
 constexpr ParamField row(const char* key, const char* symbol, const char* unit,
-                         const char* description, double min, double max) {
+                         const char* description, double min, double max, bool infinite = false,
+                         bool (*written)(const Parameters&) = nullptr) {
   using Value = std::remove_cvref_t<decltype(std::declval<Parameters>().*Group.*Field)>;
   return {key,
           symbol,
@@ -31,11 +32,19 @@ constexpr ParamField row(const char* key, const char* symbol, const char* unit,
           max,
           std::is_integral_v<Value>,
           std::is_same_v<Value, bool>,
+          infinite,
+          written,
           [](const Parameters& p) { return static_cast<double>(p.*Group.*Field); },
           [](Parameters& p, double v) { p.*Group.*Field = static_cast<Value>(v); }};
 }
 
 using P = Parameters;
+
+// Limited knowledge and its communication settings are written only while it is on.
+constexpr bool knowledgeIsLimited(const Parameters& p) {
+  return p.knowledge.limited;
+}
+
 constexpr std::array kTable{
     row<&P::reward, &RewardParams::lambda1>("reward.lambda1", "λ1", "",
                                             "weight of coverage in the reward, eq. (8)", 0, kInf),
@@ -156,10 +165,46 @@ constexpr std::array kTable{
         "(everything going on at its last velocity) and credit it with the better of that and "
         "the present world; a candidate is sampled to fit the present, so it is judged there",
         0, 1),
+    row<&P::knowledge, &KnowledgeParams::limited>(
+        "knowledge.limited", "", "",
+        "our extension: a camera knows a target or obstacle only as it last saw it or was told "
+        "(comms.*), and the methods read the union of what the team knows; false: every method "
+        "reads the true world (the paper). Scoring is the same either way",
+        0, 1, false, knowledgeIsLimited),
+    row<&P::comms, &CommsParams::range>(
+        "comms.range", "", "m",
+        "under limited knowledge: a camera farther than this from the sender does not hear "
+        "it; inf: every camera hears every message",
+        0, kInf, true, knowledgeIsLimited),
+    row<&P::comms, &CommsParams::period>(
+        "comms.period", "", "s",
+        "under limited knowledge: time between two messages of a camera (each camera sends "
+        "at t = 0 and then at the first step this long after its last message; up to dt: "
+        "every step)",
+        0, 1e6, false, knowledgeIsLimited),
+    row<&P::comms, &CommsParams::latency>(
+        "comms.latency", "", "s",
+        "under limited knowledge: a message is heard at the first step at least this long "
+        "after it was sent",
+        0, 1e6, false, knowledgeIsLimited),
+    row<&P::comms, &CommsParams::loss>(
+        "comms.loss", "", "",
+        "under limited knowledge: probability that a receiver in range does not get a message "
+        "(drawn from the run's seed, apart from the methods' own random draws)",
+        0, 1, false, knowledgeIsLimited),
+    row<&P::comms, &CommsParams::sizeLimit>(
+        "comms.sizeLimit", "", "entries",
+        "under limited knowledge: targets and obstacles a message carries at most, the most "
+        "recently seen first; 0: no limit",
+        0, 1e6, false, knowledgeIsLimited),
 };
 
 void checkValue(const ParamField& f, double v, const std::string& where) {
-  if (!std::isfinite(v)) throw InputError(where + ": " + f.key + " must be a finite number");
+  const bool allowed = std::isfinite(v) || (f.infinite && v == kInf);
+  if (!allowed) {
+    throw InputError(where + ": " + f.key +
+                     (f.infinite ? " must be a number or inf" : " must be a finite number"));
+  }
   if (f.integer && v != std::floor(v)) {
     throw InputError(fmt::format("{}: {} must be a whole number, is {}", where, f.key, v));
   }
@@ -196,8 +241,11 @@ std::string formatValue(const ParamField& field, double value) {
 nlohmann::json toJson(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& f : kTable) {
+    if (f.written != nullptr && !f.written(p)) continue;
     auto& slot = j[std::string(groupOf(f.key))][std::string(nameOf(f.key))];
-    if (f.boolean) {
+    if (f.infinite && f.get(p) == kInf) {
+      slot = "inf";  // JSON has no infinity
+    } else if (f.boolean) {
       slot = f.get(p) != 0.0;
     } else if (f.integer) {
       slot = static_cast<long long>(f.get(p));
@@ -218,11 +266,16 @@ Parameters fromJson(const nlohmann::json& j, const std::string& source, Paramete
       const std::string key = group + "." + name;
       const ParamField* f = findParameter(key);
       if (f == nullptr) throw InputError(source + ": " + key + ": unknown parameter");
-      if (f->boolean ? !value.is_boolean() : !value.is_number()) {
+      const bool infinity = f->infinite && value.is_string() && value.get<std::string>() == "inf";
+      if (!infinity && (f->boolean ? !value.is_boolean() : !value.is_number())) {
         throw InputError(source + ": " + key + ": expected " +
-                         (f->boolean ? "true or false" : "a number"));
+                         (f->boolean    ? "true or false"
+                          : f->infinite ? "a number or \"inf\""
+                                        : "a number"));
       }
-      const double v = value.is_boolean() ? (value.get<bool>() ? 1.0 : 0.0) : value.get<double>();
+      const double v = infinity             ? kInf
+                       : value.is_boolean() ? (value.get<bool>() ? 1.0 : 0.0)
+                                            : value.get<double>();
       checkValue(*f, v, source);
       f->set(base, v);
     }

@@ -19,8 +19,13 @@ struct ParamField {
   const char* description;  // meaning and where it enters the method
   double min;               // valid range, inclusive
   double max;
-  bool integer;  // value must be a whole number
-  bool boolean;  // an on/off switch: JSON true/false, --set true|false|1|0 (range [0, 1])
+  bool integer;   // value must be a whole number
+  bool boolean;   // an on/off switch: JSON true/false, --set true|false|1|0 (range [0, 1])
+  bool infinite;  // may also be +infinity: JSON "inf", --set inf
+  // Whether the field is written into JSON (toJson): always when null. Settings of an
+  // extension that is off by default are written only while it is on, so that the results of
+  // runs without it keep their bytes.
+  bool (*written)(const Parameters&);
   double (*get)(const Parameters&);
   void (*set)(Parameters&, double);
 };

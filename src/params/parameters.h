@@ -3,6 +3,8 @@
 // plus the simulation settings of SPEC section 3. The field table in parameter_table.h
 // declares each one's key, symbol, unit and valid range once; JSON, --set and the report all
 // read that table.
+#include <limits>
+
 namespace camcov::params {
 
 // Reward, eq. (5)-(8).
@@ -98,6 +100,24 @@ struct CamcovParams {
   bool forecastStay = true;
 };
 
+// What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every
+// method reads the true world at each instant, as the paper assumes. Limited: a camera knows a
+// target or obstacle only as it last saw it itself or was told (sim/knowledge.h), and the
+// methods read the union of what the team knows; the world the simulator scores is the same.
+struct KnowledgeParams {
+  bool limited = false;
+};
+
+// How cameras tell each other what they know under limited knowledge (sim/communication.h).
+struct CommsParams {
+  double range =
+      std::numeric_limits<double>::infinity();  // m: a receiver farther off hears nothing
+  double period = 0.0;   // s between a camera's messages; up to one step: every step
+  double latency = 0.0;  // s from sending to hearing
+  double loss = 0.0;     // probability that one receiver does not get one message
+  int sizeLimit = 0;     // object entries per message, the most recently seen first; 0: no limit
+};
+
 struct Parameters {
   RewardParams reward;
   GlobalParams global;
@@ -107,6 +127,8 @@ struct Parameters {
   SimParams sim;
   SafetyParams safety;
   CamcovParams camcov;
+  KnowledgeParams knowledge;
+  CommsParams comms;
 };
 
 }  // namespace camcov::params

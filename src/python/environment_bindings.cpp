@@ -25,7 +25,7 @@
 #include "records/run_files.h"
 #include "scene/scene_families.h"
 #include "scene/scene_loader.h"
-#include "sim/run_length.h"
+#include "sim/scene_parameters.h"
 #include "viz/frame.h"
 #include "viz/frame_renderer.h"
 
@@ -41,7 +41,8 @@ struct PythonEpisode {
   PythonEpisode(std::shared_ptr<PythonScene> s, const params::Parameters& params)
       : scene(std::move(s)),
         episode(std::shared_ptr<const scene::Scene>(scene, &scene->scene),
-                sim::withRunLength(params, scene->scene.duration, false)) {}
+                sim::forScene(params, scene->scene,
+                              scene->file.empty() ? scene->scene.name : scene->file, false)) {}
   std::shared_ptr<PythonScene> scene;
   environment::Episode episode;
   std::unique_ptr<viz::FrameBuilder> builder;  // made on the first frame
@@ -215,11 +216,12 @@ void bindEnvironment(py::module_& m) {
           "terms",
           [](PythonEpisode& e) {
             return locked(
-                e, [](const auto& episode) { return termsToDict(episode.observation().terms); });
+                e, [](const auto& episode) { return termsToDict(episode.scored().terms); });
           },
           "The team's reward terms now: coverage (eq. 3), weightedCoverage (eq. 3 with the "
           "scene's importance weights; coverage where it has none), utilization (5), "
-          "repulsion (6), reward (8).")
+          "repulsion (6), reward (8); as the run is scored, in the true world also under limited "
+          "knowledge.")
       .def(
           "own_terms",
           [](PythonEpisode& e, std::size_t camera) {

@@ -20,19 +20,19 @@
 #include "records/run_files.h"
 #include "reports/report_builder.h"
 #include "scene/scene_loader.h"
-#include "sim/run_length.h"
+#include "sim/scene_parameters.h"
 #include "util/interruption.h"
 #include "util/person_numbers.h"
 
 namespace camcov::python {
 namespace {
 
-// A run as `camcov run` makes it: for the scene's own duration where it has one, unless the
-// parameters set another sim.duration.
+// A run as `camcov run` makes it: with the scene's own duration and knowledge settings where it
+// has them, unless the parameters say otherwise (sim/scene_parameters.h).
 records::RunRecord runWithoutGil(batch::JobSpec job) {
   py::gil_scoped_release free;
   job.parameters =
-      sim::withRunLength(job.parameters, scene::loadScene(job.sceneFile).duration, false);
+      sim::forScene(job.parameters, scene::loadScene(job.sceneFile), job.sceneFile.string(), false);
   return batch::runJob(job);
 }
 

@@ -44,6 +44,10 @@ class SeriesReader {
     if (!c.is_array()) throw InputError(fmt::format("{}: series.{} is not a list", source_, name));
     return c;
   }
+  // Entry k of column `name`, whatever it holds (the column one entry a step).
+  const nlohmann::json& entryOf(const char* name, std::size_t k) const {
+    return entry(column(name), k, name);
+  }
   double number(const char* name, std::size_t k, double lo, double hi) const {
     return within(entry(column(name), k, name), lo, hi, fmt::format("series.{}[{}]", name, k));
   }
@@ -146,6 +150,11 @@ sim::RunSummary summaryFrom(const nlohmann::json& j) {
     s.averageResolutionCoverage = j.at("averageResolutionCoverage").get<double>();
   if (j.contains("finalResolutionCoverage"))
     s.finalResolutionCoverage = j.at("finalResolutionCoverage").get<double>();
+  if (j.contains("messages")) {
+    const nlohmann::json& m = j.at("messages");
+    s.messages = sim::MessageCounts{m.at("sent").get<int>(), m.at("delivered").get<int>(),
+                                    m.at("lost").get<int>()};
+  }
   return s;
 }
 
@@ -175,6 +184,12 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
   // Only scenes with a resolution have resolution coverage; the same.
   if (s.averageResolutionCoverage) j["averageResolutionCoverage"] = *s.averageResolutionCoverage;
   if (s.finalResolutionCoverage) j["finalResolutionCoverage"] = *s.finalResolutionCoverage;
+  // Only runs under limited knowledge send messages; the same.
+  if (s.messages) {
+    j["messages"] = {{"sent", s.messages->sent},
+                     {"delivered", s.messages->delivered},
+                     {"lost", s.messages->lost}};
+  }
   return j;
 }
 
@@ -246,6 +261,17 @@ nlohmann::json runToJson(const RunRecord& run) {
     series["targetsPresent"] = nlohmann::json::array();
     for (const StepRow& row : run.steps)
       series["targetsPresent"].push_back(row.targetsPresent);
+  }
+  // Runs under limited knowledge (RunSummary::messages) say who heard whom at each step:
+  // [from, to, sent at].
+  if (run.summary.messages) {
+    series["heard"] = nlohmann::json::array();
+    for (const StepRow& row : run.steps) {
+      nlohmann::json step = nlohmann::json::array();
+      for (const sim::Hearing& h : row.heard)
+        step.push_back({h.from, h.to, h.sentAt});
+      series["heard"].push_back(std::move(step));
+    }
   }
   series["cameras"] = std::move(poses);
   series["goals"] = std::move(goals);
@@ -325,6 +351,19 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       row.unavoidableContactTime = read.number("unavoidableContactTime", k, 0.0, kMaxRecordedTime);
       if (series.contains("targetsPresent"))
         row.targetsPresent = static_cast<int>(read.number("targetsPresent", k, 0.0, 1e9));
+      if (series.contains("heard")) {
+        const nlohmann::json& heard = read.entryOf("heard", k);
+        for (const auto& h : heard) {
+          const sim::Hearing hearing{h.at(0).get<int>(), h.at(1).get<int>(), h.at(2).get<double>()};
+          if (hearing.from < 0 || hearing.to < 0 ||
+              hearing.from >= static_cast<int>(cameras.size()) ||
+              hearing.to >= static_cast<int>(cameras.size()) || !(hearing.sentAt <= row.time))
+            throw InputError(fmt::format("{}: series.heard[{}] names a camera or a time the run "
+                                         "does not have",
+                                         source, k));
+          row.heard.push_back(hearing);
+        }
+      }
       for (std::size_t c = 0; c < cameras.size(); ++c) {
         row.cameras.push_back(read.pose(cameras.at(c), "cameras", c, k));
         const auto& g = goals.at(c);

@@ -18,6 +18,7 @@ void RunRecorder::step(const sim::StepRecord& step) {
   row.targetsPresent = step.targetsPresent;
   row.cameras.assign(step.cameras.begin(), step.cameras.end());
   row.goals.assign(step.goals.begin(), step.goals.end());
+  row.heard.assign(step.heard.begin(), step.heard.end());
   record_.steps.push_back(std::move(row));
   record_.events.insert(record_.events.end(), step.events.begin(), step.events.end());
 }

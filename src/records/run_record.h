@@ -37,6 +37,7 @@ struct StepRow {
   int targetsPresent = -1;  // recorded tracks only (scene::Scene::hasPresenceWindows); else −1
   std::vector<geometry::Pose> cameras;
   std::vector<std::optional<geometry::Pose>> goals;
+  std::vector<sim::Hearing> heard;  // under limited knowledge: who heard whom at this step
 };
 
 struct RunRecord {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
 #include "scene/camera.h"
@@ -102,6 +104,11 @@ struct Scene {
   // (reward/resolution_coverage.h); then every camera has an image model (Lens::imageWidth), and
   // its records carry resolution coverage beside the plain one.
   std::optional<ResolutionRequirement> resolution;
+  // "knowledge" and "comms" (our extension), as a parameter file writes those groups, e.g.
+  // {"knowledge": {"limited": true}, "comms": {"range": 10}}: what a camera knows and how the
+  // cameras talk in a run of it, where the run's parameters keep their defaults
+  // (sim/scene_parameters.h, which also checks them). Null where the scene has neither.
+  nlohmann::json knowledgeSettings;
   // What the loader found wrong but allowed ("targets[3]: leaves the boundary: …"), for
   // `camcov validate` to print.
   std::vector<std::string> warnings;

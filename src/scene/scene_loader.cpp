@@ -478,7 +478,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
   }
   const Node root(document, "", sourceName);
   root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch",
-               "duration", "imageWidth", "resolution"});
+               "duration", "imageWidth", "resolution", "knowledge", "comms"});
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -495,6 +495,16 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
       node.fail(fmt::format("duration {} s lies beyond {:g} s", seconds, kMaxDuration));
     scene.duration = seconds;
   });
+  // Kept as written: the parameter table, one stage up, owns their names and ranges.
+  for (const char* group : {"knowledge", "comms"}) {
+    problems.attempt([&] {
+      if (!root.has(group)) return;
+      const json& settings = document.at(group);
+      if (!settings.is_object())
+        root.child(group).fail("expected an object, as the group in a parameter file");
+      scene.knowledgeSettings[group] = settings;
+    });
+  }
   problems.attempt([&] {
     if (!root.has("pitch")) return;
     const Node pitch = root.child("pitch");

@@ -14,6 +14,7 @@
 #include "reward/reward_model.h"
 #include "safety/safety_filter.h"
 #include "safety/step_contacts.h"
+#include "sim/team_knowledge.h"
 #include "util/interruption.h"
 
 namespace camcov::sim {
@@ -97,7 +98,7 @@ void accountStep(const safety::StepContacts& step, std::span<const safety::Verdi
 
 // Everything a run keeps between its instants.
 struct Simulation::State {
-  State(const scene::Scene& scene, const params::Parameters& params)
+  State(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed)
       : scene(scene),
         kinematics(scene),
         lenses(scene::lenses(scene)),
@@ -105,7 +106,12 @@ struct Simulation::State {
         safety(scene, params),
         accounting(kinematics, params.sim.delta),
         dt(params.sim.dt),
-        comesAndGoes(scene.hasPresenceWindows()) {}
+        comesAndGoes(scene.hasPresenceWindows()) {
+    if (params.knowledge.limited) {
+      team.emplace(scene, params, seed);
+      knownMeasure.emplace(params.reward, scene::lenses(scene));
+    }
+  }
 
   const scene::Scene& scene;
   const kinematics::Kinematics kinematics;
@@ -128,10 +134,16 @@ struct Simulation::State {
   reward::RewardTerms previous;
   double previousResolution = 0.0;  // StepRecord::resolutionCoverage one step before
   RunSummary summary;
+  // Limited knowledge only: what the team knows, and the present measured in that world for
+  // the methods.
+  std::optional<TeamKnowledge> team;
+  std::optional<reward::RewardModel> knownMeasure;
+  reward::RewardTerms knownTerms;
 };
 
-Simulation::Simulation(const scene::Scene& scene, const params::Parameters& params)
-    : state_(std::make_unique<State>(scene, params)),
+Simulation::Simulation(const scene::Scene& scene, const params::Parameters& params,
+                       std::uint64_t seed)
+    : state_(std::make_unique<State>(scene, params, seed)),
       steps_(static_cast<int>(std::llround(params.sim.duration / params.sim.dt))) {
   for (const auto& c : scene.cameras)
     cameras_.push_back(c.initial);
@@ -155,6 +167,13 @@ double Simulation::time() const {
 
 control::Observation Simulation::observation() const {
   const State& s = *state_;
+  if (!s.team) return scored();
+  return {time(),       s.team->known(), cameras_, s.knownMeasure->segments(),
+          s.knownTerms, &*s.knownMeasure};
+}
+
+control::Observation Simulation::scored() const {
+  const State& s = *state_;
   return {time(), s.world, cameras_, s.measure.segments(), s.record.terms, &s.measure};
 }
 
@@ -175,6 +194,11 @@ void Simulation::measure() {
   if (s.scene.resolution) {
     record.resolutionCoverage = reward::resolutionCoverage(
         s.measure.segments(), cameras_, s.lenses, *s.scene.resolution, s.measure.perimeter());
+  }
+  if (s.team) {
+    s.team->update(s.world, cameras_);
+    s.knownMeasure->setWorld(s.team->known());
+    s.knownTerms = s.knownMeasure->evaluate(cameras_);
   }
   RunSummary& summary = s.summary;
   if (s.comesAndGoes) {
@@ -271,6 +295,7 @@ void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, R
   record.cameras = cameras_;
   record.goals = goals;
   record.events = events_;
+  if (s.team) record.heard = s.team->heard();
   recorder.step(record);
   if (k_ == steps_) {
     ++k_;
@@ -294,6 +319,7 @@ void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, R
 RunSummary Simulation::summary() const {
   const State& s = *state_;
   RunSummary summary = s.summary;
+  if (s.team) summary.messages = s.team->messages();
   if (!finished()) return summary;
   summary.steps = steps_ + 1;
   summary.finalCoverage = s.previous.coverage;
@@ -326,8 +352,8 @@ RunSummary Simulation::summary() const {
 }
 
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
-                    control::Controller& controller, Recorder& recorder) {
-  Simulation simulation(scene, params);
+                    control::Controller& controller, Recorder& recorder, std::uint64_t seed) {
+  Simulation simulation(scene, params, seed);
   std::vector<scene::CameraCommand> commands(scene.cameras.size());
   std::vector<std::optional<geometry::Pose>> goals(scene.cameras.size());
   while (!simulation.finished()) {

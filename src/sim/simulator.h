@@ -5,6 +5,7 @@
 // step is measured — at the samples and, for distances and contacts, in continuous time over
 // the step — and handed to a recorder. Computation takes no simulated time, so a run depends
 // only on its inputs.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -15,6 +16,7 @@
 #include "params/parameters.h"
 #include "reward/metrics.h"
 #include "scene/scene.h"
+#include "sim/communication.h"
 
 namespace camcov::sim {
 
@@ -40,6 +42,8 @@ struct StepRecord {
   // Raised since the last step: contacts that began in the step that ended at t, targets
   // appearing or leaving, commands at t that are not finite, then the controller's events at t.
   std::span<const control::ControlEvent> events;
+  // Under limited knowledge: who heard whom at t (TeamKnowledge::heard); else empty.
+  std::span<const Hearing> heard;
 };
 
 struct RunSummary {
@@ -75,6 +79,9 @@ struct RunSummary {
   int unavoidableContacts = 0;  // each one begins with an "unavoidable-contact" event
   int boundaryClamps = 0;       // steps where a move was cut short at the boundary
   int stepsWithoutTargets = 0;  // recorded steps with no target present (recorded tracks)
+  // Under limited knowledge (params::KnowledgeParams), the cameras' messages; none otherwise,
+  // so such runs' records stay as they were.
+  std::optional<MessageCounts> messages;
 };
 
 class Recorder {
@@ -91,7 +98,8 @@ class Recorder {
 // instant to the recorder, then moves the cameras and measures t_k+1.
 class Simulation {
  public:
-  Simulation(const scene::Scene& scene, const params::Parameters& params);
+  // `seed`: the run's, from which limited knowledge draws its message losses (unused else).
+  Simulation(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed = 0);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -103,9 +111,15 @@ class Simulation {
   bool atLastInstant() const { return k_ == steps_; }
   bool finished() const { return k_ > steps_; }
 
-  // The present instant as a controller sees it; valid until advance().
+  // The present instant as a controller sees it; valid until advance(). Under limited
+  // knowledge its world is what the team knows (team_knowledge.h), and S and the terms are
+  // measured in that world: a method never reads the true one.
   control::Observation observation() const;
   std::span<const geometry::Pose> cameras() const { return cameras_; }
+  // The present instant as the run is scored and recorded: the true world, S and the terms
+  // in it. observation() but under limited knowledge; for a learner's reward, never for a
+  // method. Valid until advance().
+  control::Observation scored() const;
   // Commands for the present instant: a non-finite one holds the camera still and is a
   // NonFiniteCommand event at the first step of each such stretch (a controller's bug shows in
   // the results instead of hiding in them); each is saturated to its camera's limits
@@ -131,6 +145,6 @@ class Simulation {
 
 // A whole run with `controller` choosing the commands: Simulation stepped to the end.
 RunSummary simulate(const scene::Scene& scene, const params::Parameters& params,
-                    control::Controller& controller, Recorder& recorder);
+                    control::Controller& controller, Recorder& recorder, std::uint64_t seed = 0);
 
 }  // namespace camcov::sim

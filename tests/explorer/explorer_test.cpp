@@ -93,6 +93,31 @@ TEST_F(Explore, WritesOneOfflinePageWithEveryRunAndStep) {
   EXPECT_EQ(readFile(dir_ / "again.html"), html);
 }
 
+TEST_F(Explore, ARunUnderLimitedKnowledgeSaysWhoHeardWhomAtEachStep) {
+  // Two cameras, a message each way at every step that has come round (every 0.5 s), and
+  // every one heard at once.
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  const fs::path limited = run(scene, "local",
+                               "--set sim.duration=2 --set knowledge.limited=true "
+                               "--set comms.period=0.5");
+  const fs::path page = dir_ / "page.html";
+  ASSERT_EQ(runCamcov("explore " + limited.string() + " -o " + page.string()).exitCode, 0);
+  const nlohmann::json heard = embeddedData(page)["runs"][0]["series"]["heard"];
+  ASSERT_EQ(heard.size(), 21u);
+  for (std::size_t k = 0; k < heard.size(); ++k) {
+    const nlohmann::json expected =
+        k % 5 == 0 ? nlohmann::json{{0, 1}, {1, 0}} : nlohmann::json::array();
+    EXPECT_EQ(heard[k], expected) << "step " << k;
+  }
+  // The record says it too, with the time each message was sent; a run with full knowledge
+  // says nothing of it.
+  const nlohmann::json recorded = nlohmann::json::parse(readFile(limited));
+  EXPECT_EQ(recorded["series"]["heard"][5], (nlohmann::json{{0, 1, 0.5}, {1, 0, 0.5}}));
+  const fs::path full = run(scene, "paper", "--set sim.duration=2");
+  ASSERT_EQ(runCamcov("explore " + full.string() + " -o " + page.string()).exitCode, 0);
+  EXPECT_FALSE(embeddedData(page)["runs"][0]["series"].contains("heard"));
+}
+
 TEST_F(Explore, TwoMethodsOfDynamic9ForThirtySecondsFitWellUnderTwoMegabytes) {
   CAMCOV_REQUIRE_PUBLISHED_SCENES();
   const std::string scene = (publishedScenesDir() / "dynamic9.json").string();

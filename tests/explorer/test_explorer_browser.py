@@ -728,3 +728,27 @@ def test_a_weighted_scene_shows_weighted_coverage_and_edges_as_wide_as_important
     explorer.wait_for(lambda: explorer.field(0, "weight"), lambda text: first_number(text) == 1.0,
                       "the importance weight of a clicked edge")
     assert_no_console_errors(explorer)
+
+
+def test_under_limited_knowledge_the_world_draws_who_heard_whom_and_a_camera_says_whom_it_heard(
+        explorer, camcov, tmp_path):
+    # tiny_static's two cameras each send every 0.5 s (every fifth step) and are heard at once.
+    scene = SCENE.parent / "tiny_static.json"
+    result = camcov("run", scene, "--method", "local", "--seed", 1, "--set", "sim.duration=2",
+                    "--set", "knowledge.limited=true", "--set", "comms.period=0.5",
+                    "--out", tmp_path / "runs")
+    assert result.returncode == 0, result.stderr
+    page = write_explorer(camcov, [tmp_path / "runs" / "tiny_static-local-seed1.json"],
+                          tmp_path / "explorer.html")
+    explorer.open(page)
+    pairs = {(line.get_attribute("data-from"), line.get_attribute("data-to"))
+             for line in explorer.world(0).find_elements(By.CSS_SELECTOR, "line.heard")}
+    assert pairs == {("0", "1"), ("1", "0")}
+    explorer.click(explorer.world(0).find_element(By.CSS_SELECTOR, 'g.camera[data-camera="0"]'))
+    assert explorer.wait_for(lambda: explorer.field(0, "heard"), lambda text: text != "",
+                             "whom camera 0 heard") == "camera 1"
+    explorer.seek(1)
+    assert explorer.world(0).find_elements(By.CSS_SELECTOR, "line.heard") == []
+    assert explorer.wait_for(lambda: explorer.field(0, "heard"), lambda text: text != "camera 1",
+                             "whom camera 0 heard at step 1") == "nobody"
+    assert_no_console_errors(explorer)

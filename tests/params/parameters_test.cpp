@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 
 #include "params/parameter_table.h"
 #include "util/input_error.h"
@@ -130,6 +131,39 @@ TEST(Warnings, FlagsEquationNineViolation) {
   p.reward.lambda3 = 0.1;  // below δ²(λ1 + λ2) = 0.25 · 1.2 = 0.3
   ASSERT_EQ(warnings(p).size(), 1u);
   EXPECT_NE(warnings(p)[0].find("eq. (9)"), std::string::npos);
+}
+
+TEST(KnowledgeParameters, AreLeftOutOfJsonUnlessKnowledgeIsLimited) {
+  // Runs with full knowledge, the default, keep the bytes they had before the option existed.
+  Parameters p;
+  p.comms.range = 10.0;
+  const nlohmann::json full = toJson(p);
+  EXPECT_FALSE(full.contains("knowledge"));
+  EXPECT_FALSE(full.contains("comms"));
+  p.knowledge.limited = true;
+  const nlohmann::json limited = toJson(p);
+  EXPECT_EQ(limited.at("knowledge").at("limited"), true);
+  EXPECT_EQ(limited.at("comms").at("range"), 10.0);
+  EXPECT_EQ(limited.at("comms").at("sizeLimit"), 0);
+}
+
+TEST(KnowledgeParameters, RangeMayBeInfiniteAsInfInJsonAndOnTheCommandLine) {
+  Parameters p;
+  p.knowledge.limited = true;
+  applyAssignment(p, "comms.range=5");
+  EXPECT_EQ(p.comms.range, 5.0);
+  applyAssignment(p, "comms.range=inf");
+  EXPECT_EQ(p.comms.range, std::numeric_limits<double>::infinity());
+  const nlohmann::json j = toJson(p);
+  EXPECT_EQ(j.at("comms").at("range"), "inf");
+  EXPECT_EQ(fromJson(j, "back").comms.range, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(formatValue(*findParameter("comms.range"), p.comms.range), "inf");
+  // Only a field that says so takes infinity.
+  EXPECT_THROW(applyAssignment(p, "comms.latency=inf"), InputError);
+  EXPECT_THROW(fromJson(nlohmann::json::parse(R"({"comms": {"latency": "inf"}})"), "t"),
+               InputError);
+  EXPECT_THROW(applyAssignment(p, "comms.loss=1.5"), InputError);
+  EXPECT_THROW(applyAssignment(p, "comms.sizeLimit=2.5"), InputError);
 }
 
 }  // namespace

@@ -559,3 +559,28 @@ def test_the_coverage_reward_is_the_one_the_reward_takes_on_a_weighted_scene(wei
         assert reward == info[key] and rewards[0] == reward
         differ |= info["weightedCoverage"] != info["coverage"]
     assert differ, "the scene's weights changed nothing"
+
+
+def test_under_limited_knowledge_the_agents_observe_the_known_world_and_are_rewarded_by_the_true(
+        published):
+    scene = published("dynamic5")
+    limited = {**SHORT, "knowledge.limited": True}
+    full_env = E.CoverageEnv(scene, params=SHORT)
+    limited_env = E.CoverageEnv(scene, params=limited)
+    full_observation, _ = full_env.reset(seed=1)
+    limited_observation, _ = limited_env.reset(seed=1)
+    assert not np.array_equal(full_observation, limited_observation)  # a target not yet seen
+    action = np.zeros(full_env.action_space.shape, dtype=full_env.action_space.dtype)
+    for _ in range(5):
+        _, full_reward, *_ = full_env.step(action)
+        _, limited_reward, *_ = limited_env.step(action)
+        assert limited_reward == full_reward
+    full_agents = E.CoverageParallelEnv(scene, params=SHORT, agent_reward="own")
+    limited_agents = E.CoverageParallelEnv(scene, params=limited, agent_reward="own")
+    full_agents.reset(seed=1)
+    limited_agents.reset(seed=1)
+    still = {agent: np.zeros(full_agents.action_space(agent).shape, dtype=np.float32)
+             for agent in full_agents.agents}
+    _, full_rewards, *_ = full_agents.step(still)
+    _, limited_rewards, *_ = limited_agents.step(still)
+    assert limited_rewards == full_rewards

@@ -119,6 +119,27 @@ def test_bad_input_raises_the_clis_errors(tiny, tmp_path):
                         method="wrong", params=SHORT)
 
 
+def test_a_limited_knowledge_run_is_the_clis_to_the_byte_and_counts_its_messages(
+        cli, tiny, tmp_path):
+    scene_file = tiny("tiny_static")  # two cameras
+    limited = {**SHORT, "knowledge.limited": True, "comms.range": float("inf"),
+               "comms.loss": 0.3}
+    run = camcov.run(scene_file, method="paper", seed=2, params=limited)
+    ours = pathlib.Path(run.write(str(tmp_path / "python")))
+    result = cli("run", scene_file, "--method", "paper", "--seed", 2, "--duration", 3,
+                 "--set", "global.K=30", "--set", "planner.T2=0.05",
+                 "--set", "knowledge.limited=true", "--set", "comms.range=inf",
+                 "--set", "comms.loss=0.3", "--out", tmp_path / "cli")
+    assert result.returncode == 0, result.stderr
+    assert ours.read_bytes() == (tmp_path / "cli" / ours.name).read_bytes()
+    messages = run.summary["messages"]
+    assert messages["sent"] == messages["delivered"] + messages["lost"]  # no latency
+    assert 0 < messages["lost"] < messages["sent"]
+    assert "messages" not in camcov.run(scene_file, method="paper", seed=2, params=SHORT).summary
+    with pytest.raises(camcov.InputError, match="comms.loss"):
+        camcov.run(scene_file, method="paper", params={"comms.loss": 2})
+
+
 def test_the_gil_is_let_go_while_cpp_runs(published):
     # While a run works in another thread, this thread keeps running Python: with the GIL
     # held for the whole run it could not count at all until the run returned.

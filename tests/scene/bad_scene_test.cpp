@@ -71,6 +71,7 @@ const BadCase kBadCases[] = {
     {"duration_negative", "duration", "must be positive, is -3 s"},
     {"duration_beyond_range", "duration", "lies beyond 10000 s"},
     {"duration_not_number", "duration", "expected a number"},
+    {"comms_not_object", "comms", "expected an object"},
     {"no_cameras", "cameras", "at least one camera"},
     {"no_targets", "targets", "at least one target"},
     {"too_many_cameras", "cameras", "at most 64"},

@@ -1,0 +1,62 @@
+#pragma once
+// How cameras tell each other what they know under limited knowledge (docs/method.md, "What a
+// camera knows"), in one place: every `period` seconds a camera sends what it knows, the most
+// recently seen entries first and at most `sizeLimit` of them; every other camera within
+// `range` of it at that instant hears it at the first step `latency` seconds later, unless the
+// message is lost for that receiver, with probability `loss`. The losses are drawn from a
+// stream of their own seeded from the run's seed, so a run is deterministic and the methods'
+// random draws do not shift with them.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "params/parameters.h"
+#include "sim/knowledge.h"
+#include "util/random.h"
+
+namespace camcov::sim {
+
+// Messages of a run, one per sender and receiver in range: sent = delivered + lost + those
+// still on their way when the run ended.
+struct MessageCounts {
+  int sent = 0;
+  int delivered = 0;
+  int lost = 0;
+};
+
+// Camera `to` heard camera `from`'s message sent at `sentAt`.
+struct Hearing {
+  int from = 0;
+  int to = 0;
+  double sentAt = 0.0;
+};
+
+class Communication {
+ public:
+  Communication(const params::CommsParams& params, double dt, std::size_t cameras,
+                std::uint64_t seed);
+  // At instant `time`, with the cameras at `poses`: every camera whose period has come round
+  // sends what `knowledge[j]` holds now.
+  void send(double time, std::span<const geometry::Pose> poses,
+            std::span<const Knowledge> knowledge);
+  // Hands every message due by `time` to its receiver, in the order sent; who heard whom.
+  std::vector<Hearing> deliver(double time, std::span<Knowledge> knowledge);
+  const MessageCounts& counts() const { return counts_; }
+
+ private:
+  struct InFlight {
+    Hearing hearing;
+    double due = 0.0;
+    std::shared_ptr<const std::vector<KnownObject>> entries;  // one message, shared by receivers
+  };
+  const params::CommsParams params_;
+  const double dt_;
+  std::vector<double> lastSent_;  // per camera; −infinity before its first message
+  std::vector<InFlight> inFlight_;
+  Random random_;
+  MessageCounts counts_;
+};
+
+}  // namespace camcov::sim

@@ -1,0 +1,60 @@
+#pragma once
+// What one camera knows of the targets and obstacles under limited knowledge (docs/method.md,
+// "What a camera knows"): each object as it was when last seen — by the camera itself or by
+// whoever told it — with that time. Kept per camera, so that a method of one camera can read
+// its own; the union (unionOf) is what the team knows, which the centralized methods read.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/ring.h"
+#include "geometry/vec2.h"
+#include "kinematics/world.h"
+
+namespace camcov::sim {
+
+enum class ObjectKind : std::uint8_t { target, obstacle };
+
+// One target or obstacle as it was when last seen.
+struct KnownObject {
+  ObjectKind kind = ObjectKind::target;
+  std::uint32_t id = 0;  // the scene's index of the object (kinematics::targetId, obstacleId)
+  geometry::Ring shape;  // world coordinates: its pose and shape when seen
+  // Of its bounding box's centre over the step before it was seen, m/s (zero where it was not
+  // present one step before): what a method may carry it on with.
+  geometry::Vec2 velocity;
+  double seenAt = 0.0;              // s
+  std::vector<double> edgeWeights;  // a target's importance weights when seen; empty: none
+};
+
+class Knowledge {
+ public:
+  // The camera sees `object` now: its entry is replaced.
+  void see(KnownObject object);
+  // What a message tells: an entry replaces the one known only if it was seen later.
+  void hear(std::span<const KnownObject> told);
+  // Every object known, targets then obstacles, each by ascending id.
+  std::span<const KnownObject> objects() const { return objects_; }
+  const KnownObject* find(ObjectKind kind, std::uint32_t id) const;
+  // What a message carries: the entries seen most recently first (ties: in objects() order),
+  // at most `limit` of them (0: all).
+  std::vector<KnownObject> newestFirst(std::size_t limit) const;
+
+ private:
+  // Replaces or inserts at the place of its kind and id; `onlyIfNewer`: keeps an entry seen
+  // at the same time or later.
+  void put(KnownObject object, bool onlyIfNewer);
+  std::vector<KnownObject> objects_;  // targets then obstacles, by id
+};
+
+// Of each object, the entry seen last among `team`'s.
+Knowledge unionOf(std::span<const Knowledge> team);
+
+// The world a method reads at `time`: every known object where and as it was last seen (not
+// carried on: docs/method.md says why), those never seen absent. Edge weights are carried
+// where `weighted` (the true world has them).
+kinematics::World knownWorld(const Knowledge& knowledge, const geometry::Ring& boundary,
+                             double time, bool weighted);
+
+}  // namespace camcov::sim

@@ -1,0 +1,47 @@
+#pragma once
+// Limited knowledge over a run (docs/method.md, "What a camera knows"): at each instant every
+// camera sees what its view reaches of the true world, then sends and hears messages
+// (communication.h), and the team's union becomes the world the methods read. An object is
+// seen by camera j at an instant when some piece of its boundary is visible to j (in visibleBy
+// of j) in the sweep of eq. (1) over the true world, with the obstacles' boundaries swept as
+// the targets' are: the same occlusion, field of view and sensing range that coverage counts.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "kinematics/world.h"
+#include "params/parameters.h"
+#include "reward/reward_model.h"
+#include "scene/scene.h"
+#include "sim/communication.h"
+#include "sim/knowledge.h"
+
+namespace camcov::sim {
+
+class TeamKnowledge {
+ public:
+  // `seed`: the run's, from which the message losses are drawn.
+  TeamKnowledge(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed);
+  // The instant of `world`, the true one, with the cameras at `poses`: each camera sees, then
+  // whoever is due sends, then every message due is heard; known() follows.
+  void update(const kinematics::World& world, std::span<const geometry::Pose> poses);
+  // What each camera knows, in camera order.
+  std::span<const Knowledge> cameras() const { return cameras_; }
+  // What the team knows (unionOf of cameras()), as the world the centralized methods read.
+  const kinematics::World& known() const { return known_; }
+  const MessageCounts& messages() const { return communication_.counts(); }
+  // Who heard whom at the last update.
+  std::span<const Hearing> heard() const { return heard_; }
+
+ private:
+  void see(const kinematics::World& world, std::span<const geometry::Pose> poses);
+  reward::RewardModel sight_;  // sweeps every object's boundary; weights play no part
+  Communication communication_;
+  std::vector<Knowledge> cameras_;
+  kinematics::World before_;  // the true world one step before, for the objects' velocities
+  bool weighted_ = false;
+  kinematics::World known_;
+  std::vector<Hearing> heard_;
+};
+
+}  // namespace camcov::sim

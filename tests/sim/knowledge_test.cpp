@@ -1,0 +1,241 @@
+// What each camera knows under limited knowledge, and what the cameras tell each other:
+// sim/knowledge.h, sim/communication.h, sim/team_knowledge.h.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "sim/communication.h"
+#include "sim/knowledge.h"
+#include "sim/team_knowledge.h"
+#include "support/small_worlds.h"
+
+namespace camcov::sim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A 1 m square target at the origin and a 2 x 1 m obstacle at (6, 0). Camera 0 at (-5, 0)
+// faces the target along +x; the target hides the obstacle from it (from (-5, 0) the target
+// spans ±6.3°, the obstacle's near side ±2.9°). Camera 1 at (8, 10) faces down onto the
+// obstacle's top; the target, 35° or more off its axis, is outside its 30° half field of view.
+const char* kTwoLookers = R"js({
+  "boundary": "POLYGON((-20 -20,20 -20,20 20,-20 20))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((0 0))"}],
+  "obstacles": [{"shape": "POLYGON((-1 -0.5,1 -0.5,1 0.5,-1 0.5))", "path": "POLYGON((6 0))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-5 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(8 10)", "angle": -90, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
+
+const scene::Scene& twoLookers() {
+  static const scene::Scene s = testing::sceneFromJson(kTwoLookers);
+  return s;
+}
+
+const std::vector<geometry::Pose> kLooking = {{-5, 0, 0}, {8, 10, -kPi / 2}};
+
+kinematics::World worldAt(double time, geometry::Vec2 targetAt) {
+  kinematics::World w = testing::world(
+      testing::box(-20, -20, 20, 20),
+      {testing::box(targetAt.x - 0.5, targetAt.y - 0.5, targetAt.x + 0.5, targetAt.y + 0.5)},
+      {testing::box(5, -0.5, 7, 0.5)});
+  w.time = time;
+  w.targetIds = {0};
+  w.obstacleIds = {0};
+  return w;
+}
+
+params::Parameters limited(double range = kInf) {
+  params::Parameters p;
+  p.knowledge.limited = true;
+  p.comms.range = range;
+  return p;
+}
+
+KnownObject entry(ObjectKind kind, std::uint32_t id, double seenAt) {
+  KnownObject o;
+  o.kind = kind;
+  o.id = id;
+  o.seenAt = seenAt;
+  o.shape = testing::box(id, 0, id + 1, 1);
+  return o;
+}
+
+TEST(Knowledge, ACameraThatNeverSeesATargetDoesNotKnowIt) {
+  TeamKnowledge team(twoLookers(), limited(0.0), 1);  // nobody hears anybody
+  for (int k = 0; k < 5; ++k)
+    team.update(worldAt(0.1 * k, {0, 0}), kLooking);
+  const Knowledge& looker = team.cameras()[0];
+  const Knowledge& other = team.cameras()[1];
+  EXPECT_NE(looker.find(ObjectKind::target, 0), nullptr);
+  EXPECT_EQ(looker.find(ObjectKind::obstacle, 0), nullptr);  // hidden behind the target
+  EXPECT_EQ(other.find(ObjectKind::target, 0), nullptr);
+  EXPECT_NE(other.find(ObjectKind::obstacle, 0), nullptr);
+  // The team as a whole knows both.
+  EXPECT_EQ(team.known().targets.size(), 1U);
+  EXPECT_EQ(team.known().obstacles.size(), 1U);
+}
+
+TEST(Knowledge, ATargetSeenThenHiddenIsRememberedWhereAndWhenLastSeen) {
+  TeamKnowledge team(twoLookers(), limited(0.0), 1);
+  team.update(worldAt(0.0, {0, 0}), kLooking);
+  team.update(worldAt(0.1, {0, 0.3}), kLooking);  // moved 0.3 m up in 0.1 s
+  // Camera 0 turns away; the target moves on unseen.
+  const std::vector<geometry::Pose> away = {{-5, 0, kPi}, kLooking[1]};
+  team.update(worldAt(0.2, {0, 0.6}), away);
+  team.update(worldAt(0.3, {0, 0.9}), away);
+  const KnownObject* known = team.cameras()[0].find(ObjectKind::target, 0);
+  ASSERT_NE(known, nullptr);
+  EXPECT_DOUBLE_EQ(known->seenAt, 0.1);
+  EXPECT_EQ(known->shape, testing::box(-0.5, -0.2, 0.5, 0.8));
+  EXPECT_NEAR(known->velocity.x, 0.0, 1e-12);
+  EXPECT_NEAR(known->velocity.y, 3.0, 1e-9);
+  // What the methods read: the target where it was last seen, at the present time.
+  const kinematics::World& known_world = team.known();
+  EXPECT_DOUBLE_EQ(known_world.time, 0.3);
+  ASSERT_EQ(known_world.targets.size(), 1U);
+  EXPECT_EQ(known_world.targets[0], testing::box(-0.5, -0.2, 0.5, 0.8));
+  EXPECT_EQ(known_world.targetIds, std::vector<std::uint32_t>{0});
+}
+
+TEST(Knowledge, EveryCameraKnowsTheUnionWhenEveryoneHearsEveryoneAtOnce) {
+  // Range inf, no loss, no latency, a message every step.
+  TeamKnowledge team(twoLookers(), limited(), 1);
+  for (int k = 0; k < 3; ++k) {
+    team.update(worldAt(0.1 * k, {0, 0.1 * k}), kLooking);
+    const Knowledge all = unionOf(team.cameras());
+    for (const Knowledge& camera : team.cameras()) {
+      ASSERT_EQ(camera.objects().size(), all.objects().size());
+      for (std::size_t i = 0; i < all.objects().size(); ++i) {
+        EXPECT_EQ(camera.objects()[i].id, all.objects()[i].id);
+        EXPECT_EQ(camera.objects()[i].kind, all.objects()[i].kind);
+        EXPECT_EQ(camera.objects()[i].seenAt, all.objects()[i].seenAt);
+        EXPECT_EQ(camera.objects()[i].shape, all.objects()[i].shape);
+      }
+    }
+    EXPECT_EQ(all.objects().size(), 2U);  // the target from camera 0, the obstacle from 1
+  }
+}
+
+TEST(Knowledge, AHeardEntryReplacesOnlyAnOlderOne) {
+  Knowledge k;
+  k.see(entry(ObjectKind::target, 3, 2.0));
+  KnownObject older = entry(ObjectKind::target, 3, 1.0);
+  older.shape = testing::box(9, 9, 10, 10);
+  KnownObject newer = entry(ObjectKind::target, 3, 3.0);
+  newer.shape = testing::box(7, 7, 8, 8);
+  k.hear(std::vector{older});
+  EXPECT_EQ(k.find(ObjectKind::target, 3)->seenAt, 2.0);
+  k.hear(std::vector{newer});
+  EXPECT_EQ(k.find(ObjectKind::target, 3)->shape, testing::box(7, 7, 8, 8));
+  // Targets and obstacles are told apart by kind, not only by id.
+  k.hear(std::vector{entry(ObjectKind::obstacle, 3, 0.5)});
+  EXPECT_EQ(k.objects().size(), 2U);
+  EXPECT_EQ(k.find(ObjectKind::target, 3)->seenAt, 3.0);
+}
+
+// Two cameras `apart` metres apart, each knowing one object of its own.
+struct Pair {
+  std::vector<geometry::Pose> poses;
+  std::vector<Knowledge> knowledge;
+  explicit Pair(double apart) : poses{{0, 0, 0}, {apart, 0, 0}}, knowledge(2) {
+    knowledge[0].see(entry(ObjectKind::target, 0, 0.0));
+    knowledge[1].see(entry(ObjectKind::target, 1, 0.0));
+  }
+  // Sends and delivers at instant k of steps of 0.1 s.
+  std::vector<Hearing> step(Communication& c, int k) {
+    c.send(0.1 * k, poses, knowledge);
+    return c.deliver(0.1 * k, knowledge);
+  }
+};
+
+params::CommsParams comms(double range, double latency = 0.0, double loss = 0.0) {
+  params::CommsParams p;
+  p.range = range;
+  p.latency = latency;
+  p.loss = loss;
+  return p;
+}
+
+TEST(Communication, AReceiverOutOfRangeHearsNothing) {
+  Pair far(10.0);
+  Communication c(comms(9.99), 0.1, 2, 1);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_TRUE(far.step(c, k).empty());
+  EXPECT_EQ(far.knowledge[0].find(ObjectKind::target, 1), nullptr);
+  EXPECT_EQ(c.counts().sent, 0);
+  // At exactly the range it hears.
+  Pair near(10.0);
+  Communication d(comms(10.0), 0.1, 2, 1);
+  EXPECT_EQ(near.step(d, 0).size(), 2U);
+  EXPECT_NE(near.knowledge[0].find(ObjectKind::target, 1), nullptr);
+}
+
+TEST(Communication, LatencyDelaysHearingToTheFirstStepAfterIt) {
+  Pair pair(1.0);
+  params::CommsParams once = comms(kInf, 0.25);
+  once.period = 100.0;  // one message each, at t = 0
+  Communication single(once, 0.1, 2, 1);
+  std::vector<int> heardAt;
+  for (int k = 0; k < 6; ++k) {
+    if (!pair.step(single, k).empty()) heardAt.push_back(k);
+  }
+  EXPECT_EQ(heardAt, std::vector<int>{3});  // sent at 0, due at 0.25: heard at 0.3
+  EXPECT_EQ(single.counts().sent, 2);
+  EXPECT_EQ(single.counts().delivered, 2);
+}
+
+TEST(Communication, APeriodSpacesACameraMessages) {
+  Pair pair(1.0);
+  params::CommsParams p = comms(kInf);
+  p.period = 0.5;
+  Communication c(p, 0.1, 2, 1);
+  for (int k = 0; k < 10; ++k)  // t = 0 ... 0.9: messages at 0 and 0.5
+    pair.step(c, k);
+  EXPECT_EQ(c.counts().sent, 4);
+}
+
+TEST(Communication, LossIsDeterministicForASeedAndNearItsProbability) {
+  const double loss = 0.3;
+  auto heardPattern = [&](std::uint64_t seed, MessageCounts& counts) {
+    Pair pair(1.0);
+    Communication c(comms(kInf, 0.0, loss), 0.1, 2, seed);
+    std::vector<int> pattern;
+    for (int k = 0; k < 10000; ++k)
+      pattern.push_back(static_cast<int>(pair.step(c, k).size()));
+    counts = c.counts();
+    return pattern;
+  };
+  MessageCounts a, b, other;
+  const std::vector<int> first = heardPattern(7, a);
+  EXPECT_EQ(heardPattern(7, b), first);
+  EXPECT_NE(heardPattern(8, other), first);
+  EXPECT_EQ(a.sent, 20000);
+  EXPECT_EQ(a.sent, a.delivered + a.lost);
+  // Binomial: standard deviation sqrt(0.3 · 0.7 / 20000) = 0.0032; within five of them.
+  EXPECT_NEAR(static_cast<double>(a.lost) / a.sent, loss, 0.016);
+}
+
+TEST(Communication, AMessageCarriesAtMostSizeLimitEntriesTheNewestFirst) {
+  std::vector<Knowledge> knowledge(2);
+  for (std::uint32_t id = 0; id < 5; ++id)  // seen at 0.4, 0.3, 0.2, 0.1, 0.0
+    knowledge[0].see(entry(ObjectKind::target, id, 0.1 * (4 - id)));
+  knowledge[0].see(entry(ObjectKind::obstacle, 0, 0.35));
+  params::CommsParams p = comms(kInf);
+  p.sizeLimit = 3;
+  Communication c(p, 0.1, 2, 1);
+  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+  const auto& heard = knowledge[1].objects();
+  ASSERT_EQ(heard.size(), 3U);
+  EXPECT_NE(knowledge[1].find(ObjectKind::target, 0), nullptr);
+  EXPECT_NE(knowledge[1].find(ObjectKind::obstacle, 0), nullptr);
+  EXPECT_NE(knowledge[1].find(ObjectKind::target, 1), nullptr);
+}
+
+}  // namespace
+}  // namespace camcov::sim
