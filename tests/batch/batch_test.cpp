@@ -213,11 +213,11 @@ TEST(PlanBatch, MethodsNamedTwiceOrNotAtAllAndTooManyJobsAreRefused) {
   EXPECT_THROW(planBatch(r, "test"), InputError) << "more than a million jobs";
 }
 
-TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
-  const testing::ScratchDir dir;
+// The tiny batch with `seeds` seeds run as two shards in dir/shard-1 and dir/shard-2.
+std::vector<std::string> runTwoShards(const fs::path& dir, std::uint64_t seeds) {
   std::vector<std::string> shards;
   for (std::size_t k = 1; k <= 2; ++k) {
-    BatchRequest r = tinyRequest(1);
+    BatchRequest r = tinyRequest(seeds);
     r.shard = {k - 1, 2};
     BatchPlan plan = planBatch(r, "test");
     const records::BatchFolder folder(dir / ("shard-" + std::to_string(k)));
@@ -226,6 +226,12 @@ TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
     runBatch(plan.jobs, folder, 1, quiet);
     shards.push_back(folder.root().string());
   }
+  return shards;
+}
+
+TEST(MergeFolders, ShardsCombineIntoEveryRunAndOtherParametersAreRefused) {
+  const testing::ScratchDir dir;
+  const std::vector<std::string> shards = runTwoShards(dir.path(), 1);
   const records::BatchFolder merged(dir / "merged");
   const auto manifest = mergeFolders(shards, merged, {"camcov", "merge"});
   EXPECT_EQ(manifest.scenes.size(), 2u);
@@ -265,17 +271,7 @@ TEST(MergeFolders, AMissingShardOrRunAndARunUnderAnotherJobsNameAreRefused) {
     }
     EXPECT_FALSE(fs::exists(target.runsDir())) << "nothing copied";
   };
-  std::vector<std::string> shards;
-  for (std::size_t k = 1; k <= 2; ++k) {
-    BatchRequest r = tinyRequest(2);
-    r.shard = {k - 1, 2};
-    BatchPlan plan = planBatch(r, "test");
-    const records::BatchFolder folder(dir / ("shard-" + std::to_string(k)));
-    prepareFolder(folder, plan.manifest, false);
-    Recorder quiet;
-    runBatch(plan.jobs, folder, 1, quiet);
-    shards.push_back(folder.root().string());
-  }
+  const std::vector<std::string> shards = runTwoShards(dir.path(), 2);
   // One shard of two.
   refused({shards[0]}, "jobs have no run in any folder given");
   // Both, but a run deleted.
