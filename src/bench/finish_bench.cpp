@@ -25,7 +25,7 @@ void BenchOutputOptions::check() const {
 }
 
 records::VideoChoice BenchOutputOptions::explorerChoice() const {
-  const records::VideoChoice choice = records::parseVideoChoice(explorer);
+  const records::VideoChoice choice = records::parseVideoChoice(explorer, "--explorer");
   if (choice == records::VideoChoice::All) {
     throw InputError("--explorer " + explorer + ": one of none, median, best");
   }

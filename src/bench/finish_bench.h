@@ -21,7 +21,7 @@ struct BenchOutputOptions {
   std::string reference;            // the method the others are tested against; empty: the baseline
   std::int64_t optimumBudget = 200000;  // reward evaluations per optimum/<scene>.json; 0: none
   // InputError for a bad --videos.
-  records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos); }
+  records::VideoChoice videoChoice() const { return records::parseVideoChoice(videos, "--videos"); }
   // InputError for a bad --explorer (all seeds of a scene on one page would not be read).
   records::VideoChoice explorerChoice() const;
   // Those checks and the optimum's budget in [0, 2^40] (Python passes it unchecked by a

@@ -6,12 +6,12 @@
 
 namespace camcov::records {
 
-VideoChoice parseVideoChoice(const std::string& text) {
+VideoChoice parseVideoChoice(const std::string& text, const std::string& option) {
   if (text == "none") return VideoChoice::None;
   if (text == "median") return VideoChoice::Median;
   if (text == "best") return VideoChoice::Best;
   if (text == "all") return VideoChoice::All;
-  throw InputError("--videos " + text + ": expected none, median, best or all");
+  throw InputError(option + " " + text + ": expected none, median, best or all");
 }
 
 std::vector<VideoRun> chooseVideoRuns(const BatchSummary& summary,

@@ -18,8 +18,9 @@ enum class VideoChoice {
   All,     // every finished run
 };
 
-// "none", "median", "best" or "all"; InputError otherwise.
-VideoChoice parseVideoChoice(const std::string& text);
+// "none", "median", "best" or "all"; InputError naming `option` (the one it was given as,
+// "--videos" or "--explorer") otherwise.
+VideoChoice parseVideoChoice(const std::string& text, const std::string& option);
 
 struct VideoRun {
   std::string scene;

@@ -32,12 +32,18 @@ std::vector<VideoRun> choose(VideoChoice choice) {
 }
 
 TEST(VideoChoice, ParsesItsFourNamesAndRejectsOthers) {
-  EXPECT_EQ(parseVideoChoice("none"), VideoChoice::None);
-  EXPECT_EQ(parseVideoChoice("median"), VideoChoice::Median);
-  EXPECT_EQ(parseVideoChoice("best"), VideoChoice::Best);
-  EXPECT_EQ(parseVideoChoice("all"), VideoChoice::All);
-  EXPECT_THROW(parseVideoChoice("Median"), InputError);
-  EXPECT_THROW(parseVideoChoice(""), InputError);
+  EXPECT_EQ(parseVideoChoice("none", "--videos"), VideoChoice::None);
+  EXPECT_EQ(parseVideoChoice("median", "--videos"), VideoChoice::Median);
+  EXPECT_EQ(parseVideoChoice("best", "--videos"), VideoChoice::Best);
+  EXPECT_EQ(parseVideoChoice("all", "--videos"), VideoChoice::All);
+  EXPECT_THROW(parseVideoChoice("Median", "--videos"), InputError);
+  EXPECT_THROW(parseVideoChoice("", "--videos"), InputError);
+  try {
+    parseVideoChoice("bogus", "--explorer");
+    ADD_FAILURE() << "took bogus";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--explorer bogus:", 0), 0u) << e.what();
+  }
 }
 
 TEST(VideoChoice, MedianIsOneRunPerSceneAndMethodWithRunsInSummaryOrder) {
