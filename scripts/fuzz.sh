@@ -5,7 +5,7 @@
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
-# Targets: the scene loader, the visibility sweep, the two track importers, the command
+# Targets: the scene loader, the visibility sweep, the three track importers, the command
 # line's parser, weighted coverage on scenes the bytes choose, and the Python environments'
 # native stepping (EpisodeStepper). The corpus starts from tests/fuzz/seeds, every scene of
 # scenes/ and tests/data/ and the track extracts of tests/data/tracks (copied at run time into
@@ -21,11 +21,11 @@ case "$budget" in
 esac
 
 dir=$("$repo/scripts/build.sh" sanitize fuzz_scene fuzz_visibility fuzz_lastrow fuzz_ethucy \
-  fuzz_command_line fuzz_weighted_scene fuzz_episode_stepper | tail -n 1)
+  fuzz_csv_tracks fuzz_command_line fuzz_weighted_scene fuzz_episode_stepper | tail -n 1)
 
 corpus="$dir/corpus"
 rm -rf "$corpus"
-mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,command_line,weighted_scene,episode_stepper} "$dir/artifacts"
+mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,csv_tracks,command_line,weighted_scene,episode_stepper} "$dir/artifacts"
 cp "$repo"/tests/fuzz/seeds/scene/*.json "$corpus/scene/"
 find "$repo/scenes" "$repo/tests/data" -name '*.json' -size -64k |
   while read -r f; do cp "$f" "$corpus/scene/$(echo "${f#"$repo"/}" | tr / _)"; done
@@ -37,6 +37,7 @@ cp "$tracks/ethucy_extract/obsmat.txt" "$corpus/ethucy/obsmat_only"
 { cat "$tracks/ethucy_extract/obsmat.txt"; printf '\0'; cat "$tracks/ethucy_extract/map.xml"; } \
   >"$corpus/ethucy/with_map"
 cp "$repo"/tests/fuzz/seeds/command_line/* "$corpus/command_line/"
+cp "$repo"/tests/fuzz/seeds/csv_tracks/* "$corpus/csv_tracks/"
 
 run() {
   local target=$1 log="$dir/fuzz_$1.log" code=0
@@ -58,6 +59,7 @@ run scene -max_len=8192 -dict="$repo/tests/fuzz/scene.dict" || status=1
 run visibility -max_len=1024 -len_control=0 || status=1
 run lastrow -max_len=8192 || status=1
 run ethucy -max_len=8192 || status=1
+run csv_tracks -max_len=8192 || status=1
 run command_line -max_len=512 || status=1
 # Bytes choose a weighted scene (tests/fuzz/weighted_scene_fuzzer.cpp): a few hundred do.
 run weighted_scene -max_len=512 -len_control=0 || status=1

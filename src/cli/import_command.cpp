@@ -1,6 +1,7 @@
-// `camcov import lastrow FILE.csv -o scene.json` and `camcov import ethucy DIR [--fps F] -o
-// scene.json`: recorded tracks as a self-contained scene (src/import). The scene is
-// validated by the loader before it is written, atomically: bad input leaves no file behind.
+// `camcov import lastrow FILE.csv -o scene.json`, `camcov import ethucy DIR [--fps F] -o
+// scene.json` and `camcov import csv FILE -o scene.json [--x-column ...]`: recorded tracks as a
+// self-contained scene (src/import). The scene is validated by the loader before it is
+// written, atomically: bad input leaves no file behind.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "import/csv_tracks_reader.h"
 #include "import/ethucy_reader.h"
 #include "import/lastrow_reader.h"
 #include "import/scene_builder.h"
@@ -33,6 +35,16 @@ struct ImportOptions {
   double rate = 20.0;  // Last Row frames per second
   double fps = 0.0;    // ETH/UCY video frames per second; 0: from the recorded velocities
   import::SceneOptions scene;
+};
+
+// The units and layout of a table of tracks, as given on the command line.
+struct CsvOptions {
+  import::CsvTrackFormat format;
+  std::string delimiter = ",";
+  std::string timeUnit = "s";
+  double frameRate = 0.0;  // frames per second, for --time-unit frames
+  std::string lengthUnit = "m";
+  std::string headingUnit = "deg";
 };
 
 // Validates the scene as any file is validated, writes it, and says what it holds.
@@ -75,6 +87,24 @@ int importEthUcy(ImportOptions o) {
   const import::Recording recording =
       import::readEthUcy(o.input, o.fps > 0.0 ? std::optional(o.fps) : std::nullopt);
   return writeImported(import::buildScene(recording, o.scene), o);
+}
+
+int importCsv(ImportOptions o, const CsvOptions& c) {
+  resolveCommonOptions(o);
+  import::CsvTrackFormat format = c.format;
+  format.delimiter = c.delimiter == "tab" ? '\t' : c.delimiter == "space" ? ' ' : c.delimiter[0];
+  if (c.timeUnit == "frames") {
+    if (!(c.frameRate > 0.0)) throw InputError("--time-unit frames: give the frame rate, --rate");
+    format.secondsPerUnit = 1.0 / c.frameRate;
+  } else {
+    if (c.frameRate > 0.0) throw InputError("--rate is for --time-unit frames");
+    format.secondsPerUnit = c.timeUnit == "ms" ? 1e-3 : 1.0;
+  }
+  const std::map<std::string, double> metres{
+      {"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"ft", 0.3048}};
+  format.metresPerUnit = metres.at(c.lengthUnit);
+  format.radiansPerUnit = c.headingUnit == "deg" ? geometry::degToRad(1.0) : 1.0;
+  return writeImported(import::buildScene(import::readCsvTracks(o.input, format), o.scene), o);
 }
 
 // The options every importer has.
@@ -142,8 +172,9 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
 }  // namespace
 
 Registration addImportCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "import", "Make a scene from recorded tracks: football (lastrow) or pedestrians (ethucy)");
+  auto* cmd = app.add_subcommand("import",
+                                 "Make a scene from recorded tracks: football (lastrow), "
+                                 "pedestrians (ethucy) or a table (csv)");
   cmd->require_subcommand(1);
 
   auto lastrow = std::make_shared<ImportOptions>();
@@ -187,8 +218,51 @@ Registration addImportCommand(CLI::App& app) {
       ->capture_default_str();
   addSceneOptions(*e, *ethucy);
 
-  return {cmd, [cmd, l, lastrow, ethucy] {
-            return cmd->got_subcommand(l) ? importLastRow(*lastrow) : importEthUcy(*ethucy);
+  auto table = std::make_shared<ImportOptions>();
+  auto csv = std::make_shared<CsvOptions>();
+  auto* t = cmd->add_subcommand(
+      "csv", "any table of tracks: a header, then id,t,x,y (heading, radius, color) per row");
+  t->add_option("file", table->input, "the table")->required()->check(CLI::ExistingFile);
+  import::CsvTrackColumns& columns = csv->format.columns;
+  t->add_option("--id-column", columns.id, "who a row is")->capture_default_str();
+  t->add_option("--time-column", columns.time, "when")->capture_default_str();
+  t->add_option("--x-column", columns.x, "where, across")->capture_default_str();
+  t->add_option("--y-column", columns.y, "where, up")->capture_default_str();
+  t->add_option("--heading-column", columns.heading,
+                "where they face, counter-clockwise from +x, read if the header has it "
+                "(\"\": never)")
+      ->capture_default_str();
+  t->add_option("--radius-column", columns.radius,
+                "the disc each is, read if the header has it (\"\": never; else --radius)")
+      ->capture_default_str();
+  t->add_option("--color-column", columns.color,
+                "#rrggbb or a colour name to draw each in, read if the header has it")
+      ->capture_default_str();
+  t->add_option("--delimiter", csv->delimiter,
+                "between fields: , ; | tab or space (runs of blanks)")
+      ->check(CLI::IsMember({",", ";", "|", "tab", "space"}))
+      ->capture_default_str();
+  t->add_option("--time-unit", csv->timeUnit, "of the time column: s, ms or frames (with --rate)")
+      ->check(CLI::IsMember({"s", "ms", "frames"}))
+      ->capture_default_str();
+  t->add_option("--rate", csv->frameRate, "frames per second, for --time-unit frames")
+      ->check(within(0.0, import::kMaxFrameRate, false));
+  t->add_option("--length-unit", csv->lengthUnit, "of x, y and radius: m, cm, mm or ft")
+      ->check(CLI::IsMember({"m", "cm", "mm", "ft"}))
+      ->capture_default_str();
+  t->add_option("--heading-unit", csv->headingUnit, "of the heading column: deg or rad")
+      ->check(CLI::IsMember({"deg", "rad"}))
+      ->capture_default_str();
+  t->add_option("--radius", table->scene.personRadius,
+                "disc radius of everyone the table gives none for, m")
+      ->check(within(0.0, 1e2, false))
+      ->capture_default_str();
+  addSceneOptions(*t, *table);
+
+  return {cmd, [cmd, l, e, lastrow, ethucy, table, csv] {
+            if (cmd->got_subcommand(l)) return importLastRow(*lastrow);
+            if (cmd->got_subcommand(e)) return importEthUcy(*ethucy);
+            return importCsv(*table, *csv);
           }};
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "import/colour_names.h"
 #include "import/text_fields.h"
 #include "import/track_collector.h"
 #include "util/input_error.h"
@@ -14,23 +15,6 @@
 #include "util/person_numbers.h"
 
 namespace camcov::import {
-
-std::string colourHex(const std::string& name) {
-  static const std::map<std::string, std::string> kColours = {
-      {"black", "#000000"},   {"white", "#ffffff"},     {"red", "#ff0000"},
-      {"darkred", "#8b0000"}, {"blue", "#0000ff"},      {"darkblue", "#00008b"},
-      {"navy", "#000080"},    {"skyblue", "#87ceeb"},   {"lightblue", "#add8e6"},
-      {"green", "#008000"},   {"darkgreen", "#006400"}, {"yellow", "#ffff00"},
-      {"orange", "#ffa500"},  {"purple", "#800080"},    {"grey", "#808080"},
-      {"gray", "#808080"},    {"pink", "#ffc0cb"},      {"gold", "#ffd700"},
-      {"maroon", "#800000"},  {"cyan", "#00ffff"},      {"magenta", "#ff00ff"}};
-  std::string key;
-  for (const char c : name)
-    key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (key.size() == 7 && key[0] == '#') return key;
-  const auto it = kColours.find(key);
-  return it == kColours.end() ? std::string() : it->second;
-}
 
 Recording readLastRow(const std::string& file, const Pitch& pitch, double rate) {
   return parseLastRow(readInputFile(file), file, pitch, rate);
@@ -63,7 +47,7 @@ Recording parseLastRow(std::string text, const std::string& file, const Pitch& p
   recording.onPitch = true;
   recording.pitch = pitch;
   TrackCollector tracks;
-  std::vector<std::string> unknownColours;
+  UnknownColours colours;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].empty()) continue;
     const Where where{file, i + 1};
@@ -86,20 +70,12 @@ Recording parseLastRow(std::string text, const std::string& file, const Pitch& p
             100.0};
     const bool ball = team < 0 || f[static_cast<std::size_t>(team)].empty();
     std::string hex;
-    if (!ball && colour >= 0) {
-      const std::string name = f[static_cast<std::size_t>(colour)];
-      hex = colourHex(name);
-      if (hex.empty() && !name.empty() &&
-          std::find(unknownColours.begin(), unknownColours.end(), name) == unknownColours.end())
-        unknownColours.push_back(name);
-    }
+    if (!ball && colour >= 0) hex = colours.hex(f[static_cast<std::size_t>(colour)]);
     tracks.add(ball ? "ball" : id, t, p, where, ball ? "ball" : "person", hex);
   }
   if (tracks.empty()) throw InputError(file + ": no rows after the header");
   recording.tracks = tracks.take();
-  for (const auto& name : unknownColours)
-    recording.notes.push_back("colour \"" + printable(name, kQuotedField) +
-                              "\" is not one camcov knows: drawn in the default");
+  recording.notes = colours.notes();
   return recording;
 }
 

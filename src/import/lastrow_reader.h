@@ -18,7 +18,4 @@ Recording readLastRow(const std::string& file, const Pitch& pitch, double rate =
 Recording parseLastRow(std::string text, const std::string& file, const Pitch& pitch,
                        double rate = 20.0);
 
-// "#rrggbb" for a CSS colour name used by the data (red, darkblue, ...); empty if unknown.
-std::string colourHex(const std::string& name);
-
 }  // namespace camcov::import

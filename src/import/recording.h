@@ -1,7 +1,8 @@
 #pragma once
 // Recorded trajectories as the importers read them, before they become a scene:
 // per person (or ball) its samples in time, and the static walls and pillars of the place.
-// Readers: lastrow_reader.h (football), ethucy_reader.h (pedestrians); scene_builder.h turns
+// Readers: lastrow_reader.h (football), ethucy_reader.h (pedestrians), csv_tracks_reader.h
+// (anyone's tracks as a table); scene_builder.h turns
 // a recording into a scene file.
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@ struct RecordedTrack {
   std::string kind;                       // "person" or "ball"
   std::vector<double> times;              // s from the recording's start, increasing
   std::vector<geometry::Vec2> positions;  // m
+  std::vector<double> headings;           // rad, one per time, or empty: none recorded
+  double radius = 0.0;                    // m, the disc it is; 0: the importer's default
 };
 
 struct Wall {

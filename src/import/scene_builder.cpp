@@ -67,11 +67,13 @@ std::vector<RecordedTrack> cut(const RecordedTrack& track, const SceneOptions& o
       RecordedTrack piece = track;
       piece.times.clear();
       piece.positions.clear();
+      piece.headings.clear();
       if (!pieces.empty()) piece.id = fmt::format("{}#{}", track.id, pieces.size() + 1);
       pieces.push_back(std::move(piece));
     }
     pieces.back().times.push_back(us(t - o.from));
     pieces.back().positions.push_back(track.positions[k]);
+    if (!track.headings.empty()) pieces.back().headings.push_back(track.headings[k]);
   }
   return pieces;
 }
@@ -84,6 +86,12 @@ bool crossesAWall(const RecordedTrack& track, const std::vector<Wall>& walls) {
     }
   }
   return false;
+}
+
+// The radius of the disc a tracked person or ball is: its own where the recording gives one.
+double discRadius(const RecordedTrack& track, const SceneOptions& o) {
+  if (track.radius > 0.0) return track.radius;
+  return track.kind == "ball" ? o.ballRadius : o.personRadius;
 }
 
 constexpr double kTick = 0.1;  // s between the instants people are counted at
@@ -202,10 +210,10 @@ geometry::Box boundaryBox(const Recording& recording, const Selected& kept, cons
   };
   for (const auto& t : kept.targets)
     for (const Vec2 p : t.positions)
-      grow(p, t.kind == "ball" ? o.ballRadius : o.personRadius);
+      grow(p, discRadius(t, o));
   for (const auto& t : kept.movingObstacles)
     for (const Vec2 p : t.positions)
-      grow(p, o.ballRadius);
+      grow(p, discRadius(t, o));
   for (const Wall& w : recording.walls) {
     grow(w.a, o.wallThickness);
     grow(w.b, o.wallThickness);
@@ -324,12 +332,14 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     object.path = {{mm(at.x), mm(at.y)}};
     return object;
   };
-  const auto tracked = [&](const RecordedTrack& t, double radius) {
+  const auto tracked = [&](const RecordedTrack& t) {
     scene::Track track;
     track.times = t.times;
     for (const Vec2 p : t.positions)
       track.positions.push_back({mm(p.x), mm(p.y)});
-    scene::MovingObject object = still(mmRing(disc({0.0, 0.0}, radius)), track.positions.front());
+    track.headings = t.headings;
+    scene::MovingObject object =
+        still(mmRing(disc({0.0, 0.0}, discRadius(t, o))), track.positions.front());
     object.track = std::move(track);
     object.color = t.color;
     if (t.kind != "ball" && o.frontWeight != 1.0)
@@ -337,7 +347,7 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     return object;
   };
   for (const auto& t : kept.targets)
-    scene.targets.push_back(tracked(t, t.kind == "ball" ? o.ballRadius : o.personRadius));
+    scene.targets.push_back(tracked(t));
   std::vector<geometry::Ring> solid;  // where a camera must not start
   for (const Wall& w : recording.walls) {
     solid.push_back(wallRing(w, o.wallThickness));
@@ -348,7 +358,7 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     scene.obstacles.push_back(still(mmRing(disc({0.0, 0.0}, p.radius)), p.centre));
   }
   for (const auto& t : kept.movingObstacles)
-    scene.obstacles.push_back(tracked(t, o.ballRadius));
+    scene.obstacles.push_back(tracked(t));
   scene.halfFovDegrees = o.cameraHalfFovDeg;
   const bool imaged = o.imageWidth > 0;
   if (imaged) scene.resolution = scene::ResolutionRequirement{o.minDensity, false};

@@ -35,7 +35,7 @@ double parseNumber(std::string_view text, const Where& where, std::string_view w
   return *value;
 }
 
-std::vector<std::string> splitCsv(std::string_view line, const Where& where) {
+std::vector<std::string> splitCsv(std::string_view line, const Where& where, char delimiter) {
   std::vector<std::string> fields(1);
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -51,7 +51,7 @@ std::vector<std::string> splitCsv(std::string_view line, const Where& where) {
       }
     } else if (c == '"') {
       quoted = true;
-    } else if (c == ',') {
+    } else if (c == delimiter) {
       fields.emplace_back();
     } else {
       fields.back() += c;

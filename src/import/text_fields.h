@@ -34,9 +34,9 @@ double parseNumber(std::string_view text, const Where& where, std::string_view w
 // How a field of a file is quoted in a message: util/printable.h, at most 40 characters.
 inline constexpr PrintableOptions kQuotedField{.maxCharacters = 40};
 
-// The fields of one CSV line (RFC 4180: commas, fields in double quotes may hold commas and
-// doubled quotes). InputError for an unterminated quote.
-std::vector<std::string> splitCsv(std::string_view line, const Where& where);
+// The fields of one CSV line (RFC 4180: fields separated by `delimiter`, a comma unless told;
+// fields in double quotes may hold it and doubled quotes). InputError for an unterminated quote.
+std::vector<std::string> splitCsv(std::string_view line, const Where& where, char delimiter = ',');
 
 // The whitespace-separated fields of a line.
 std::vector<std::string_view> splitWhitespace(std::string_view line);

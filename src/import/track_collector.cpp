@@ -8,8 +8,9 @@
 
 namespace camcov::import {
 
-void TrackCollector::add(const std::string& id, double time, geometry::Vec2 position,
-                         const Where& where, const std::string& kind, const std::string& color) {
+RecordedTrack& TrackCollector::add(const std::string& id, double time, geometry::Vec2 position,
+                                   const Where& where, const std::string& kind,
+                                   const std::string& color) {
   // Bounded so that what is built from the recording, sampled every 0.1 s, stays in memory.
   if (!(std::abs(time) <= kMaxRecordingSeconds)) {
     throw InputError(
@@ -18,7 +19,7 @@ void TrackCollector::add(const std::string& id, double time, geometry::Vec2 posi
                     where.prefix(), kind, id, time, kMaxRecordingSeconds));
   }
   auto [it, fresh] = index_.try_emplace(id, tracks_.size());
-  if (fresh) tracks_.push_back({id, color, kind, {}, {}});
+  if (fresh) tracks_.push_back({id, color, kind, {}, {}, {}, 0.0});
   RecordedTrack& track = tracks_[it->second];
   if (!track.times.empty() && time <= track.times.back()) {
     throw InputError(
@@ -27,6 +28,7 @@ void TrackCollector::add(const std::string& id, double time, geometry::Vec2 posi
   }
   track.times.push_back(time);
   track.positions.push_back(position);
+  return track;
 }
 
 }  // namespace camcov::import

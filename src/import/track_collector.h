@@ -16,9 +16,11 @@ inline constexpr double kMaxRecordingSeconds = 1e6;
 
 class TrackCollector {
  public:
-  // The track of `id`, made on first sight with `kind` and `color`.
-  void add(const std::string& id, double time, geometry::Vec2 position, const Where& where,
-           const std::string& kind = "person", const std::string& color = "");
+  // The track of `id`, made on first sight with `kind` and `color`, with the sample added (a
+  // reader adds what else its rows say, a heading, to the track returned).
+  RecordedTrack& add(const std::string& id, double time, geometry::Vec2 position,
+                     const Where& where, const std::string& kind = "person",
+                     const std::string& color = "");
   std::vector<RecordedTrack> take() { return std::move(tracks_); }
   bool empty() const { return tracks_.empty(); }
 

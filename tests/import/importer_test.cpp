@@ -319,7 +319,7 @@ TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
 
 struct BadInput {
   const char* name;
-  const char* importer;  // "lastrow" or "ethucy"
+  const char* importer;  // "lastrow", "ethucy" or "csv"
   const char* file;      // what is written: the CSV, or obsmat.txt (ethucy)
   const char* map;       // ethucy: map.xml, or nullptr for none
   const char* message;   // expected in stderr, after the file name
@@ -343,6 +343,31 @@ const BadInput kBadInputs[] = {
     {"lastrow_longer_than_any_recording", "lastrow",
      "player,frame,x,y,team,bgcolor\n1,0,3,4,attack,red\n1,1e12,3,4,attack,red\n", nullptr,
      ":3: person 1 at t = 50000000000 s: a recording's times lie within +-1e+06 s"},
+    {"csv_empty_file", "csv", "", nullptr, ": empty file"},
+    {"csv_missing_column", "csv", "id,t,x\n1,0,0\n", nullptr,
+     ":1: missing column(s) y (--y-column)"},
+    {"csv_another_delimiter", "csv", "id;t;x;y\n1;0;0;0\n", nullptr,
+     "another delimiter? (--delimiter ;)"},
+    {"csv_column_named_twice", "csv", "id,t,x,x,y\n1,0,0,0,0\n", nullptr,
+     ":1: column \"x\" is named twice"},
+    {"csv_short_row", "csv", "id,t,x,y\n1,0,0,0\n1,1,0\n", nullptr,
+     ":3: 3 fields, the header has 4"},
+    {"csv_nan", "csv", "id,t,x,y\n1,0,nan,0\n", nullptr,
+     ":2: column x: \"nan\" is not a finite number"},
+    {"csv_empty_id", "csv", "id,t,x,y\n,0,0,0\n", nullptr, ":2: column id: empty id"},
+    {"csv_time_repeats", "csv", "id,t,x,y\n1,0,0,0\n1,0,1,1\n", nullptr,
+     ":3: person 1 at t = 0 s after t = 0 s: time goes backwards or repeats"},
+    {"csv_longer_than_any_recording", "csv", "id,t,x,y\n1,0,0,0\n1,2e6,0,0\n", nullptr,
+     ":3: person 1 at t = 2000000 s: a recording's times lie within"},
+    {"csv_far_away", "csv", "id,t,x,y\n1,0,2e6,0\n", nullptr,
+     ":2: column x: 2e+06 m is outside [-1e+06, 1e+06]"},
+    {"csv_radius_zero", "csv", "id,t,x,y,radius\n1,0,0,0,0\n", nullptr,
+     ":2: column radius: 0 m is outside (0, 100]"},
+    {"csv_radius_changes", "csv", "id,t,x,y,radius\n1,0,0,0,0.3\n1,1,1,1,0.4\n", nullptr,
+     ":3: person 1: radius 0.4 m after 0.3 m"},
+    {"csv_heading_beyond_reason", "csv", "id,t,x,y,heading\n1,0,0,0,1e300\n", nullptr,
+     ":2: column heading: 1e+300 is outside"},
+    {"csv_no_rows", "csv", "id,t,x,y\n", nullptr, ": no rows after the header"},
     {"ethucy_empty_file", "ethucy", "", nullptr, "obsmat.txt: empty file"},
     {"ethucy_short_row", "ethucy", "1 1 0 0 1 0 0 0\n11 1 0 0 1 0 0\n", nullptr,
      "obsmat.txt:2: 7 numbers, a row has 8"},
@@ -371,7 +396,7 @@ TEST_P(ImportBadInput, ExitsWithTwoNamingFileAndLineAndWritesNothing) {
   const BadInput& c = GetParam();
   const ScratchDir dir;
   std::string input;
-  if (std::string(c.importer) == "lastrow") {
+  if (std::string(c.importer) != "ethucy") {
     input = (dir / "input.csv").string();
     std::ofstream(input) << c.file;
   } else {
