@@ -193,7 +193,8 @@ void drawObjects(const Painter& p, const kinematics::World& world,
 
 // Red under green: where a seen and an unseen piece meet, the round caps favour what is seen.
 void drawSegments(const Painter& p, std::span<const visibility::Segment> segments,
-                  const Enlargements* enlarged, const std::vector<std::vector<double>>& weights) {
+                  const Enlargements* enlarged, const std::vector<std::vector<double>>& weights,
+                  Rgb seenColour) {
   cairo_t* cr = p.cr();
   // Round caps and joins: a run of segments that continue one another is one polyline, the
   // same shape as its segments stroked one by one, with fewer edges for Cairo to scan.
@@ -210,7 +211,7 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
       const Enlargement e = enlargementAt(enlarged ? &enlarged->targets : nullptr, s.target);
       // A polyline has one width: a segment of another weight starts a new one.
       if (last != nullptr && widthOf(*last) != widthOf(s)) {
-        p.stroke(seen ? kSeen : kUnseen, widthOf(*last));
+        p.stroke(seen ? seenColour : kUnseen, widthOf(*last));
         last = nullptr;
       }
       if (last != nullptr && last->target == s.target && last->b == s.a) {
@@ -220,7 +221,7 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
       }
       last = &s;
     }
-    if (last != nullptr) p.stroke(seen ? kSeen : kUnseen, widthOf(*last));
+    if (last != nullptr) p.stroke(seen ? seenColour : kUnseen, widthOf(*last));
   }
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);

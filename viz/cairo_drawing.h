@@ -96,12 +96,13 @@ void drawEnlargedMarks(const Painter& p, const kinematics::World& world,
 void drawObjects(const Painter& p, const kinematics::World& world,
                  std::span<const std::optional<Rgb>> targetColours = {},
                  const Enlargements* enlarged = nullptr);
-// The targets' boundaries: seen by some camera green, by none red; enlarged with their targets;
+// The targets' boundaries: seen by some camera green (or `seenColour`), by none red; enlarged with
+// their targets;
 // in a weighted world (World::targetEdgeWeights, by target and edge) as wide as important
 // (importanceWidthFactor).
 void drawSegments(const Painter& p, std::span<const visibility::Segment> segments,
                   const Enlargements* enlarged = nullptr,
-                  const std::vector<std::vector<double>>& weights = {});
+                  const std::vector<std::vector<double>>& weights = {}, Rgb seenColour = kSeen);
 // What a camera sees, a translucent amber fill of opacity `alpha`.
 void drawView(const Painter& p, std::span<const geometry::Vec2> view, double alpha = kViewAlpha);
 // A dark disc with the camera's number and a nose in its heading: the heading still shows

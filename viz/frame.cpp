@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "reward/metrics.h"
+#include "reward/resolution_coverage.h"
 
 namespace camcov::viz {
 namespace {
@@ -70,6 +71,14 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
     out.caption.weightedCoverage = reward::weightedCoverage(out.segments, out.world);
   }
   out.caption.utilization = reward::utilization(out.segments, cameras, lenses_);
+  out.unresolved.clear();
+  out.caption.resolutionCoverage.reset();
+  if (const auto& asked = out.world.resolution) {
+    out.caption.resolutionCoverage = reward::resolutionCoverage(
+        out.segments, cameras, lenses_, *asked, reward::targetPerimeter(out.world));
+    for (const visibility::Segment& s : out.segments)
+      reward::addUnresolvedPieces(s, cameras, lenses_, asked->minDensity, out.unresolved);
+  }
 }
 
 }  // namespace camcov::viz

@@ -47,6 +47,9 @@ struct Caption {
   double coverage = 0.0;  // eq. (3), in [0, 1]
   // Importance-weighted coverage (reward::RewardTerms), for a weighted scene's frames only.
   std::optional<double> weightedCoverage;
+  // Resolution-aware coverage (reward/resolution_coverage.h), for the frames of a scene that
+  // asks a resolution only.
+  std::optional<double> resolutionCoverage;
   double utilization = 0.0;  // eq. (5), in [0, 1]
 };
 
@@ -56,6 +59,9 @@ struct Frame {
   // Per target of `world`: its own colour (a recorded player's team), or none: the palette's.
   std::vector<std::optional<Rgb>> targetColours;
   std::vector<visibility::Segment> segments;  // every target's boundary, seen or not
+  // The pieces of seen boundary no camera resolves (a scene that asks a resolution only):
+  // drawn over the seen in another colour.
+  std::vector<visibility::Segment> unresolved;
   std::vector<CameraView> cameras;
   std::vector<ObjectPath> paths;
   std::vector<std::vector<geometry::Vec2>> markings;  // a football pitch's (scene::Pitch)

@@ -24,18 +24,35 @@ constexpr double kPitchLineWidth = 0.08;
 
 // The caption's rows are drawPanelStill's and drawPanelMoving's; the legend has one row per
 // entry (palette.h). A weighted scene's frames have a row more of each: weighted coverage, and
-// what an edge's width means.
-bool weighted(const Caption& caption) {
-  return caption.weightedCoverage.has_value();
+// what an edge's width means; so have the frames of a scene that asks a resolution: resolved
+// coverage, and what the amber pieces are.
+std::vector<Legend> legendEntries(const Caption& caption) {
+  std::vector<Legend> entries(std::begin(kLegendEntries), std::end(kLegendEntries));
+  if (caption.weightedCoverage) entries.push_back(Legend::Importance);
+  if (caption.resolutionCoverage) entries.push_back(Legend::Unresolved);
+  return entries;
 }
-constexpr int kPlainCaptionRows = 5;  // title, subtitle, time, coverage, utilization
+// The caption rows that change every frame: time, coverage, a weighted scene's weighted
+// coverage, the resolved coverage of a scene that asks a resolution, and utilization.
+enum class MovingRow { Time, Coverage, Weighted, Resolved, Utilization };
+struct PlacedRow {
+  MovingRow what;
+  int row;  // caption row
+};
+// Under the title and subtitle, in this order.
+std::vector<PlacedRow> movingRows(const Caption& caption) {
+  std::vector<PlacedRow> rows;
+  for (const MovingRow what : {MovingRow::Time, MovingRow::Coverage, MovingRow::Weighted,
+                               MovingRow::Resolved, MovingRow::Utilization}) {
+    if (what == MovingRow::Weighted && !caption.weightedCoverage) continue;
+    if (what == MovingRow::Resolved && !caption.resolutionCoverage) continue;
+    rows.push_back({what, 2 + static_cast<int>(rows.size())});
+  }
+  return rows;
+}
 PanelRows panelRows(const Caption& caption) {
-  const int more = weighted(caption) ? 1 : 0;
-  return {kPlainCaptionRows + more, static_cast<int>(std::size(kLegendEntries)) + more};
-}
-Legend legendEntry(int row) {
-  return row < static_cast<int>(std::size(kLegendEntries)) ? kLegendEntries[row]
-                                                           : Legend::Importance;
+  return {2 + static_cast<int>(movingRows(caption).size()),
+          static_cast<int>(legendEntries(caption).size())};
 }
 
 // Object paths are dashed: they are where things will be, not where they are.
@@ -203,6 +220,9 @@ void drawLegendSample(cairo_t* cr, Legend entry, Vec2 middleLeft, double em) {
       line(kObjectPath, kObjectPathWidth);
       cairo_set_dash(cr, nullptr, 0, 0.0);
       break;
+    case Legend::Unresolved:
+      line(kUnresolved, kSegmentWidth);
+      break;
     case Legend::Importance:
       // Three pieces of edge, from the least important to the most.
       for (int k = 0; k < 3; ++k) {
@@ -262,9 +282,10 @@ void drawPanelStill(cairo_t* cr, const FrameLayout& layout, const Caption& capti
   };
   line(0, caption.title, 1.25 * em, kText, true);
   line(1, caption.subtitle, 0.9 * em, kMutedText, false);
-  for (int i = 0; i < panelRows(caption).legend; ++i) {
-    const Legend entry = legendEntry(i);
-    const Vec2 row = layout.legendRow(i);
+  const std::vector<Legend> entries = legendEntries(caption);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const Legend entry = entries[i];
+    const Vec2 row = layout.legendRow(static_cast<int>(i));
     drawLegendSample(cr, entry, row + Vec2{0.0, 0.8 * em}, em);
     text(cr, rowBaseline(row, em) + Vec2{2.6 * em, 0.0}, legendText(entry), 0.88 * em, kText);
   }
@@ -278,25 +299,6 @@ void clippedTo(cairo_t* cr, const PixelRect& area, Draw draw) {
   cairo_clip(cr);
   draw();
   cairo_restore(cr);
-}
-
-// The caption rows that change every frame, under the title and subtitle: time, coverage, a
-// weighted scene's weighted coverage (when the layout has a row for it: panelRows()), and
-// utilization.
-enum class MovingRow { Time, Coverage, Weighted, Utilization };
-struct PlacedRow {
-  MovingRow what;
-  int row;  // caption row
-};
-std::vector<PlacedRow> movingRows(const FrameLayout& layout) {
-  const bool weighted = layout.rows.caption > kPlainCaptionRows;
-  std::vector<PlacedRow> rows;
-  for (const MovingRow what :
-       {MovingRow::Time, MovingRow::Coverage, MovingRow::Weighted, MovingRow::Utilization}) {
-    if (what == MovingRow::Weighted && !weighted) continue;
-    rows.push_back({what, 2 + static_cast<int>(rows.size())});
-  }
-  return rows;
 }
 
 // A moving row's whole pixels (half an em to the left of its text, for overhanging glyphs),
@@ -314,7 +316,7 @@ PixelRect movingRowArea(const FrameLayout& layout, int row) {
 // Each moving row clipped to its area, so that nothing of it lands outside movingAreas().
 void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& caption) {
   const double em = layout.em;
-  for (const PlacedRow& placed : movingRows(layout)) {
+  for (const PlacedRow& placed : movingRows(caption)) {
     clippedTo(cr, movingRowArea(layout, placed.row), [&] {
       const Vec2 baseline = rowBaseline(layout.captionRow(placed.row), em);
       switch (placed.what) {
@@ -327,6 +329,9 @@ void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& capt
         case MovingRow::Weighted:
           drawMeter(cr, baseline, "weighted", caption.weightedCoverage.value_or(0.0), kSeen, em);
           break;
+        case MovingRow::Resolved:
+          drawMeter(cr, baseline, "resolved", caption.resolutionCoverage.value_or(0.0), kSeen, em);
+          break;
         case MovingRow::Utilization:
           drawMeter(cr, baseline, "utilization", caption.utilization, kView, em);
           break;
@@ -338,9 +343,9 @@ void drawPanelMoving(cairo_t* cr, const FrameLayout& layout, const Caption& capt
 }  // namespace
 
 // Everything drawMoving() may touch: outside these a frame is its still part.
-std::vector<PixelRect> movingAreas(const FrameLayout& layout) {
+std::vector<PixelRect> movingAreas(const FrameLayout& layout, const Caption& caption) {
   std::vector<PixelRect> areas{layout.worldArea};
-  for (const PlacedRow& placed : movingRows(layout))
+  for (const PlacedRow& placed : movingRows(caption))
     areas.push_back(movingRowArea(layout, placed.row));
   return areas;
 }
@@ -374,6 +379,7 @@ void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, Fram
     const Enlargements enlarged = enlargementsFor(painter, frame.world);
     drawObjects(painter, frame.world, frame.targetColours, &enlarged);
     drawSegments(painter, frame.segments, &enlarged, frame.world.targetEdgeWeights);
+    drawSegments(painter, frame.unresolved, &enlarged, frame.world.targetEdgeWeights, kUnresolved);
     drawEnlargedMarks(painter, frame.world, enlarged);
     drawPathLabels(painter, frame, layout.worldArea);
     drawPlans(painter, frame.cameras);

@@ -17,7 +17,7 @@ FrameLayout layoutFor(const Frame& frame, int width, int height);
 void drawStill(cairo_t* cr, const Frame& frame, const FrameLayout& layout);
 void drawMoving(cairo_t* cr, const Frame& frame, const FrameLayout& layout, FrameUse use);
 // Everything drawMoving() may touch: outside these a frame is its still part.
-std::vector<PixelRect> movingAreas(const FrameLayout& layout);
+std::vector<PixelRect> movingAreas(const FrameLayout& layout, const Caption& caption);
 // The whole frame, still and moving part, antialiased: SVGs and single PNGs.
 void drawFrame(cairo_t* cr, const Frame& frame, int width, int height);
 // std::runtime_error if Cairo reports an error on `cr`.

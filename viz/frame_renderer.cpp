@@ -43,18 +43,24 @@ struct StillKey {
   std::string title;
   std::string subtitle;
   bool weighted = false;  // the legend explains the edges' widths
+  bool resolved = false;  // the legend explains the amber pieces
 
   bool matches(const Frame& frame) const {
     return boundary == frame.world.boundary && paths == frame.paths && markings == frame.markings &&
            title == frame.caption.title && subtitle == frame.caption.subtitle &&
-           weighted == frame.caption.weightedCoverage.has_value();
+           weighted == frame.caption.weightedCoverage.has_value() &&
+           resolved == frame.caption.resolutionCoverage.has_value();
   }
 };
 
 StillKey stillKeyOf(const Frame& frame) {
-  return {frame.world.boundary,   frame.paths,
-          frame.markings,         frame.caption.title,
-          frame.caption.subtitle, frame.caption.weightedCoverage.has_value()};
+  return {frame.world.boundary,
+          frame.paths,
+          frame.markings,
+          frame.caption.title,
+          frame.caption.subtitle,
+          frame.caption.weightedCoverage.has_value(),
+          frame.caption.resolutionCoverage.has_value()};
 }
 
 Surface imageSurface(int width, int height) {
@@ -137,7 +143,7 @@ RasterImage FrameRenderer::rasterize(const Frame& frame) {
     cairo_paint(cr);
     r.changed.push_back({0, 0, width_, height_});
   } else {
-    for (const PixelRect& area : movingAreas(layout)) {
+    for (const PixelRect& area : movingAreas(layout, frame.caption)) {
       cairo_rectangle(cr, area.x, area.y, area.width, area.height);
       r.changed.push_back(boxAround(area));
     }

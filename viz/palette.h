@@ -22,6 +22,8 @@ inline constexpr Rgb kObstacle{0.22, 0.24, 0.28};
 inline constexpr Rgb kTarget{0.78, 0.79, 0.81};
 inline constexpr Rgb kSeen{0.09, 0.60, 0.26};
 inline constexpr Rgb kUnseen{0.87, 0.18, 0.16};
+// Seen by too few pixels (the scene's resolution): amber, between seen and unseen.
+inline constexpr Rgb kUnresolved{0.96, 0.62, 0.07};
 inline constexpr Rgb kView{0.96, 0.65, 0.14};
 inline constexpr Rgb kCamera{0.13, 0.15, 0.19};
 inline constexpr Rgb kPlan{0.15, 0.42, 0.82};
@@ -45,8 +47,19 @@ std::string cssColour(Rgb c);
 std::optional<Rgb> rgbFromHex(std::string_view hex);
 
 // The legend's entries, in the order the frames list them.
-// Importance: a weighted scene's frames only (the width of a target's edges).
-enum class Legend { Seen, Unseen, Target, Obstacle, Camera, Plan, ObjectPath, Importance };
+// Importance: a weighted scene's frames only (the width of a target's edges); Unresolved: the
+// frames of a scene that asks a resolution only.
+enum class Legend {
+  Seen,
+  Unseen,
+  Target,
+  Obstacle,
+  Camera,
+  Plan,
+  ObjectPath,
+  Importance,
+  Unresolved
+};
 inline constexpr Legend kLegendEntries[] = {Legend::Seen,      Legend::Unseen, Legend::Target,
                                             Legend::Obstacle,  Legend::Camera, Legend::Plan,
                                             Legend::ObjectPath};
@@ -76,6 +89,8 @@ constexpr const char* legendText(Legend entry) {
       return "object path and speed";
     case Legend::Importance:
       return "wider edge: more important";
+    case Legend::Unresolved:
+      return "seen, not resolved";
   }
   return "";
 }

@@ -95,6 +95,7 @@ double Kinematics::obstacleSpeedBound(std::size_t i) const {
 
 void Kinematics::worldAt(double t, World& out) const {
   out.time = t;
+  out.resolution = scene_.resolution;
   out.boundary.assign(scene_.boundary.begin(), scene_.boundary.end());
   // Rings are reused in place: a ring keeps its buffer when its slot keeps its object.
   const auto fill = [t](const std::vector<scene::MovingObject>& objects,

@@ -2,9 +2,11 @@
 // The world at one instant t: every polygon in world coordinates, as the controller sees it.
 // This is the paper's X(t) = (T(t), O(t)) plus the time-invariant boundary B (section II).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry/ring.h"
+#include "scene/camera.h"
 
 namespace camcov::kinematics {
 
@@ -21,6 +23,10 @@ struct World {
   // targets[i], each in [0, 1], divided by the largest at t. Empty in a scene without weights:
   // every edge weighs 1.
   std::vector<std::vector<double>> targetEdgeWeights;
+  // What a covered point asks of a camera's image (the scene's "resolution", ρ_min): the
+  // reward counts only resolved boundary where its parameters say so (RewardParams::resolution).
+  // None: any sight counts.
+  std::optional<scene::ResolutionRequirement> resolution;
 };
 
 // The scene's index of world target i (world obstacle i): a World made by hand has no ids.

@@ -61,6 +61,12 @@ constexpr std::array kTable{
         "our extension: coverage in the reward weighs each metre of target boundary by the "
         "scene's importance weights (edgeWeights, frontWeight); false: every metre the same",
         0, 1),
+    row<&P::reward, &RewardParams::resolution>(
+        "reward.resolution", "", "",
+        "our extension: coverage in the reward counts each metre of target boundary by how well "
+        "it is resolved, min(1, density / the scene's minimum pixel density); unweighted; no "
+        "effect on a scene without resolution and imageWidth",
+        0, 1),
     row<&P::global, &GlobalParams::K>(
         "global.K", "K", "", "samples per camera in Algorithm 2; run time grows linearly", 1, 1e7),
     row<&P::global, &GlobalParams::T1>(

@@ -17,6 +17,11 @@ struct RewardParams {
   // (the scene's edgeWeights and frontWeight); off, every metre the same. No effect on a scene
   // without weights.
   bool weighted = true;
+  // Our extension (the paper's future work on resolution): coverage eq. (3) counts each point
+  // of boundary by its credit min(1, ρ/ρ_min) at the scene's ρ_min (resolution_coverage.h), so
+  // that the optimizers place cameras near enough and face-on. Unweighted; no effect on a scene
+  // without a resolution requirement.
+  bool resolution = false;
 };
 
 // Global optimization, Algorithm 2 and its trigger (section V-A).

@@ -40,11 +40,15 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
     // shares of the models take the next sample of that order in turn and share the best
     // score: which samples go unswept then depends on their timing, the first best does not
     // (neither it nor any sample scoring as much can be skipped).
+    // Where the reward counts resolution, a sample may resolve what the team only sees: no
+    // bound holds, and every sample is scored.
     using Precision = reward::AddedCameraBound::Precision;
-    bound.prepare(model, result.poses, placed);
+    const bool bounded = !model.countsResolution();
+    if (bounded) bound.prepare(model, result.poses, placed);
     bounds.resize(samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k)
-      bounds[k] = bound.of(samples[k], Precision::Coarse, terms);
+      bounds[k] = bounded ? bound.of(samples[k], Precision::Coarse, terms)
+                          : std::numeric_limits<double>::infinity();
     order.resize(samples.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(),
@@ -62,8 +66,8 @@ std::optional<GlobalResult> optimizeGlobally(reward::RewardModel& model,
         const std::size_t k = order[i];
         double best = bestScore.load(std::memory_order_relaxed);
         if (reward::AddedCameraBound::cannotBeat(bounds[k], best)) break;
-        if (reward::AddedCameraBound::cannotBeat(bound.of(samples[k], Precision::Fine, shareTerms),
-                                                 best))
+        if (bounded && reward::AddedCameraBound::cannotBeat(
+                           bound.of(samples[k], Precision::Fine, shareTerms), best))
           continue;
         team.back() = samples[k];
         scores[k] = scorer.reward(team);

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "reward/fixed_point_sum.h"
+#include "reward/resolution_coverage.h"
 #include "visibility/sweep.h"
 
 namespace camcov::reward {
@@ -98,6 +99,8 @@ RewardTerms termsAlone(const kinematics::World& world,
   t.coverage = coverage(own, targetPerimeter(world));
   t.weightedCoverage = weightedCoverage(own, world);
   t.utilization = utilization(own, std::span(&pose, 1), lenses.subspan(j, 1));
+  t.resolutionCoverage = rewardedResolutionCoverage(params, world, own, std::span(&pose, 1),
+                                                    lenses.subspan(j, 1), targetPerimeter(world));
   t.repulsion = repulsion(world, std::span(&pose, 1), params.d2);
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     if (i != j) t.repulsion += pairTerm(pose.position(), cameras[i].position(), params.d2);

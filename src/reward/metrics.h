@@ -1,6 +1,7 @@
 #pragma once
 // The terms of the reward (paper section IV-A) as pure functions of one instant:
 // vis(S) eq. (2), coverage eq. (3), utilization eq. (5), repulsion eq. (6)-(7), reward eq. (8).
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -21,12 +22,17 @@ struct RewardTerms {
   double repulsion = 0.0;    // eq. (6), >= 0
   double reward = 0.0;       // eq. (8): λ1·coverage + λ2·utilization − λ3·repulsion, with
                              // the coverage coverageTerm() picks
+  // Resolution-aware coverage (resolution_coverage.h), where the reward counts it
+  // (RewardModel::countsResolution); else none.
+  std::optional<double> resolutionCoverage;
 };
 
-// The coverage the reward eq. (8) takes: weighted unless the parameters say plain. Utilization
+// The coverage the reward eq. (8) takes: resolved where the reward counts resolution, else
+// weighted unless the parameters say plain. Utilization
 // and repulsion are not weighted: one measures how much of a camera's view holds targets at
 // all, the other keeps cameras off objects, and neither is about what of a target is seen.
 inline double coverageTerm(const params::RewardParams& p, const RewardTerms& t) {
+  if (t.resolutionCoverage) return *t.resolutionCoverage;
   return p.weighted ? t.weightedCoverage : t.coverage;
 }
 

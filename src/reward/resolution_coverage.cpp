@@ -53,8 +53,11 @@ void rootsInside(double A, double B, double C, std::vector<double>& out) {
 
 // Threshold: the union of the intervals of t where some viewer's density reaches ρ_min, the
 // disc of radius √(k·h/ρ_min) about it.
-double resolvedFraction(std::span<const Viewer> viewers, geometry::Vec2 a, geometry::Vec2 b,
-                        double minDensity) {
+// Where some viewer reaches ρ_min: the union of each one's interval (ρ_j ≥ ρ_min is a disc about
+// the camera), as disjoint intervals of t along the segment from a to b, in order.
+std::vector<std::pair<double, double>> resolvedIntervals(std::span<const Viewer> viewers,
+                                                         geometry::Vec2 a, geometry::Vec2 b,
+                                                         double minDensity) {
   std::vector<std::pair<double, double>> intervals;
   for (const Viewer& v : viewers) {
     double t0 = 0.0, t1 = 0.0;
@@ -62,12 +65,23 @@ double resolvedFraction(std::span<const Viewer> viewers, geometry::Vec2 a, geome
       intervals.emplace_back(t0, t1);
   }
   std::sort(intervals.begin(), intervals.end());
-  double covered = 0.0, end = 0.0;
+  std::vector<std::pair<double, double>> merged;
   for (const auto& [lo, hi] : intervals) {
-    const double from = std::max(lo, end);
-    if (hi > from) covered += hi - from;
-    end = std::max(end, hi);
+    if (!(hi > lo)) continue;
+    if (!merged.empty() && lo <= merged.back().second) {
+      merged.back().second = std::max(merged.back().second, hi);
+    } else {
+      merged.emplace_back(lo, hi);
+    }
   }
+  return merged;
+}
+
+double resolvedFraction(std::span<const Viewer> viewers, geometry::Vec2 a, geometry::Vec2 b,
+                        double minDensity) {
+  double covered = 0.0;
+  for (const auto& [lo, hi] : resolvedIntervals(viewers, a, b, minDensity))
+    covered += hi - lo;
   return covered;
 }
 
@@ -109,6 +123,20 @@ double proportionalLength(std::span<const Viewer> viewers, geometry::Vec2 a, geo
   return total;
 }
 
+// The cameras that see `segment` (its visibleBy), as viewers of it.
+struct Viewers {
+  Viewer viewers[scene::kMaxCameras];
+  std::size_t count = 0;
+  Viewers(const visibility::Segment& segment, std::span<const geometry::Pose> cameras,
+          std::span<const scene::Lens> lenses) {
+    for (std::uint64_t bits = segment.visibleBy; bits != 0; bits &= bits - 1) {
+      const auto j = static_cast<std::size_t>(std::countr_zero(bits));
+      viewers[count++] = viewer(cameras[j].position(), lenses[j], segment.a, segment.b);
+    }
+  }
+  std::span<const Viewer> all() const { return {viewers, count}; }
+};
+
 }  // namespace
 
 double pixelDensity(geometry::Vec2 camera, const scene::Lens& lens, geometry::Vec2 a,
@@ -122,13 +150,8 @@ double resolvedLength(const visibility::Segment& segment, std::span<const geomet
                       std::span<const scene::Lens> lenses,
                       const scene::ResolutionRequirement& requirement) {
   if (segment.visibleBy == 0 || segment.a == segment.b) return 0.0;
-  Viewer viewers[scene::kMaxCameras];
-  std::size_t count = 0;
-  for (std::uint64_t bits = segment.visibleBy; bits != 0; bits &= bits - 1) {
-    const auto j = static_cast<std::size_t>(std::countr_zero(bits));
-    viewers[count++] = viewer(cameras[j].position(), lenses[j], segment.a, segment.b);
-  }
-  const std::span<const Viewer> seenBy(viewers, count);
+  const Viewers seeing(segment, cameras, lenses);
+  const std::span<const Viewer> seenBy = seeing.all();
   if (requirement.proportional)
     return std::min(proportionalLength(seenBy, segment.a, segment.b, requirement.minDensity),
                     length(segment));
@@ -143,6 +166,43 @@ double resolutionCoverage(std::span<const visibility::Segment> segments,
   for (const visibility::Segment& s : segments)
     resolved += resolvedLength(s, cameras, lenses, requirement);
   return coverageOf(resolved, perimeter);
+}
+
+void addUnresolvedPieces(const visibility::Segment& segment,
+                         std::span<const geometry::Pose> cameras,
+                         std::span<const scene::Lens> lenses, double minDensity,
+                         std::vector<visibility::Segment>& out) {
+  if (segment.visibleBy == 0 || segment.a == segment.b) return;
+  const Viewers seeing(segment, cameras, lenses);
+  const auto piece = [&](double from, double to) {
+    if (!(to > from)) return;
+    visibility::Segment s = segment;
+    s.a = visibility::pointAt(segment.a, segment.b, from);
+    s.b = visibility::pointAt(segment.a, segment.b, to);
+    out.push_back(s);
+  };
+  double from = 0.0;
+  for (const auto& [lo, hi] : resolvedIntervals(seeing.all(), segment.a, segment.b, minDensity)) {
+    piece(from, lo);
+    from = std::max(from, hi);
+  }
+  piece(from, 1.0);
+}
+
+std::optional<double> rewardedResolutionCoverage(const params::RewardParams& params,
+                                                 const kinematics::World& world,
+                                                 std::span<const visibility::Segment> segments,
+                                                 std::span<const geometry::Pose> cameras,
+                                                 std::span<const scene::Lens> lenses,
+                                                 double perimeter) {
+  if (!params.resolution || !world.resolution) return std::nullopt;
+  // Each point's credit min(1, ρ/ρ_min), whichever form the scene measures: a camera a little
+  // too far still earns most of what it would earn nearer, so the optimizers' steps and samples
+  // see where resolution grows instead of a cliff at ρ_min. On recorded pedestrian windows apart
+  // from scenes/real (docs/scene-format.md) it resolved more than the threshold itself did.
+  scene::ResolutionRequirement credit = *world.resolution;
+  credit.proportional = true;
+  return resolutionCoverage(segments, cameras, lenses, credit, perimeter);
 }
 
 }  // namespace camcov::reward

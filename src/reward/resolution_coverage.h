@@ -23,9 +23,13 @@
 //  - proportional: ∫ min(1, ρ_j/ρ_min) ds, where ∫ ρ_j ds = k_j · (the angle the piece subtends);
 //    the best camera at each point changes only where two densities are equal, k_i h_i d_j² =
 //    k_j h_j d_i², a quadratic along the edge, or where one reaches ρ_min.
+#include <optional>
 #include <span>
+#include <vector>
 
 #include "geometry/vec2.h"
+#include "kinematics/world.h"
+#include "params/parameters.h"
 #include "scene/camera.h"
 #include "visibility/segment.h"
 
@@ -50,5 +54,24 @@ double resolutionCoverage(std::span<const visibility::Segment> segments,
                           std::span<const geometry::Pose> cameras,
                           std::span<const scene::Lens> lenses,
                           const scene::ResolutionRequirement& requirement, double perimeter);
+
+// The pieces of `segment` that its cameras see but none resolves at ρ_min (`minDensity`),
+// appended to `out` with the segment's target, edge and visibleBy: what a frame draws as seen
+// but not resolved. Nothing for an unseen segment. In proportional form too, these are the
+// pieces that earn less than full credit.
+void addUnresolvedPieces(const visibility::Segment& segment,
+                         std::span<const geometry::Pose> cameras,
+                         std::span<const scene::Lens> lenses, double minDensity,
+                         std::vector<visibility::Segment>& out);
+
+// The coverage the reward counts where it counts resolution (RewardParams::resolution, in a
+// world with a requirement, World::resolution): resolutionCoverage() in proportional form, at
+// the world's ρ_min; none otherwise. RewardTerms::resolutionCoverage.
+std::optional<double> rewardedResolutionCoverage(const params::RewardParams& params,
+                                                 const kinematics::World& world,
+                                                 std::span<const visibility::Segment> segments,
+                                                 std::span<const geometry::Pose> cameras,
+                                                 std::span<const scene::Lens> lenses,
+                                                 double perimeter);
 
 }  // namespace camcov::reward

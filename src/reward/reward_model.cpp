@@ -1,5 +1,7 @@
 #include "reward/reward_model.h"
 
+#include "reward/resolution_coverage.h"
+
 #include <utility>
 
 namespace camcov::reward {
@@ -38,19 +40,33 @@ void RewardModel::setInstant(const RewardModel& measured) {
 
 RewardTerms RewardModel::evaluate(std::span<const geometry::Pose> cameras) {
   sweep_.segments(*occluders_, cameras, lenses_, segments_);
+  return termsOf(segments_, cameras);
+}
+
+RewardTerms RewardModel::termsOf(std::span<const visibility::Segment> segments,
+                                 std::span<const geometry::Pose> cameras) {
   RewardTerms t;
-  t.coverage = coverage(segments_, perimeter_);
+  t.coverage = coverage(segments, perimeter_);
   t.weightedCoverage = weights_.empty()
                            ? t.coverage
-                           : coverageOf(weightedVisibleLength(segments_, world_.targetEdgeWeights),
+                           : coverageOf(weightedVisibleLength(segments, world_.targetEdgeWeights),
                                         weightedPerimeter_);
-  t.utilization = utilization(segments_, cameras, lenses_);
+  t.resolutionCoverage =
+      rewardedResolutionCoverage(params_, world_, segments, cameras, lenses_, perimeter_);
+  t.utilization = utilization(segments, cameras, lenses_);
   t.repulsion = repulsion(world_, objectBoxes_, cameras, params_.d2);
   t.reward = combine(params_, coverageTerm(params_, t), t.utilization, t.repulsion);
   return t;
 }
 
 RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
+  // Resolved coverage is no sum of what each camera adds (a camera resolves what another
+  // only sees): S is made and measured whole, in a buffer of its own so that segments() still
+  // holds the last evaluate()'s.
+  if (countsResolution()) {
+    sweep_.segments(*occluders_, cameras, lenses_, probeSegments_);
+    return termsOf(probeSegments_, cameras);
+  }
   const auto kept = incremental_.evaluate(*occluders_, sweep_, cameras, lenses_,
                                           {perimeter_, weights_, weightedPerimeter_});
   RewardTerms t;

@@ -57,6 +57,10 @@ class RewardModel {
   RewardTerms terms(std::span<const geometry::Pose> cameras);
   double reward(std::span<const geometry::Pose> cameras) { return terms(cameras).reward; }
   std::span<const visibility::Segment> segments() const { return segments_; }
+  // The reward's coverage is resolution-aware (RewardParams::resolution, in a world with a
+  // requirement): terms() then measures S whole, and a camera's added coverage is no longer
+  // bounded by what the team leaves unseen (AddedCameraBound does not apply).
+  bool countsResolution() const { return params_.resolution && world_.resolution.has_value(); }
 
   // Omnidirectional visibility polygon of a point at this instant (Algorithm 2, line 6).
   void visibilityPolygon(geometry::Vec2 point, geometry::Ring& out);
@@ -64,6 +68,9 @@ class RewardModel {
  private:
   // The reward weighs the edges: RewardParams::weighted, in a world with weights.
   bool rewardWeighted() const { return params_.weighted && !weights_.empty(); }
+  // Every term of eq. (8) from S.
+  RewardTerms termsOf(std::span<const visibility::Segment> segments,
+                      std::span<const geometry::Pose> cameras);
 
   params::RewardParams params_;
   std::vector<scene::Lens> lenses_;
@@ -74,9 +81,10 @@ class RewardModel {
   std::vector<geometry::Box> objectBoxes_;            // for repulsion()
   std::shared_ptr<visibility::Occluders> occluders_;  // shared by setInstant()
   visibility::Sweep sweep_;
-  std::vector<visibility::Segment> segments_;  // S of the last evaluate()
-  IncrementalTerms incremental_;               // for reward()
-  IncrementalRepulsion repulsion_;             // for reward()
+  std::vector<visibility::Segment> segments_;       // S of the last evaluate()
+  std::vector<visibility::Segment> probeSegments_;  // S of the last terms() counting resolution
+  IncrementalTerms incremental_;                    // for reward()
+  IncrementalRepulsion repulsion_;                  // for reward()
 };
 
 }  // namespace camcov::reward

@@ -53,11 +53,12 @@ Knowledge unionOf(std::span<const Knowledge> team) {
   return all;
 }
 
-kinematics::World knownWorld(const Knowledge& knowledge, const geometry::Ring& boundary,
-                             double time, bool weighted) {
+kinematics::World knownWorld(const Knowledge& knowledge, const kinematics::World& now,
+                             bool weighted) {
   kinematics::World world;
-  world.time = time;
-  world.boundary = boundary;
+  world.time = now.time;
+  world.boundary = now.boundary;
+  world.resolution = now.resolution;
   for (const KnownObject& object : knowledge.objects()) {
     if (object.kind == ObjectKind::target) {
       world.targets.push_back(object.shape);

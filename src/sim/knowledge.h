@@ -51,10 +51,11 @@ class Knowledge {
 // Of each object, the entry seen last among `team`'s.
 Knowledge unionOf(std::span<const Knowledge> team);
 
-// The world a method reads at `time`: every known object where and as it was last seen (not
+// The world a method reads at the instant `now` (the true world: its time, boundary and what
+// coverage asks, nothing of its objects): every known object where and as it was last seen (not
 // carried on: docs/method.md says why), those never seen absent. Edge weights are carried
 // where `weighted` (the true world has them).
-kinematics::World knownWorld(const Knowledge& knowledge, const geometry::Ring& boundary,
-                             double time, bool weighted);
+kinematics::World knownWorld(const Knowledge& knowledge, const kinematics::World& now,
+                             bool weighted);
 
 }  // namespace camcov::sim

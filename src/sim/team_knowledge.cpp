@@ -60,7 +60,7 @@ void TeamKnowledge::update(const kinematics::World& world, std::span<const geome
   see(world, poses);
   communication_.send(world.time, poses, cameras_);
   heard_ = communication_.deliver(world.time, cameras_);
-  known_ = knownWorld(unionOf(cameras_), world.boundary, world.time, weighted_);
+  known_ = knownWorld(unionOf(cameras_), world, weighted_);
 }
 
 }  // namespace camcov::sim

@@ -1,6 +1,7 @@
 // Resolution-aware coverage (reward/resolution_coverage.h): a case worked out on paper, and the
 // exact per-segment lengths against an independent computation on random configurations: the
-// density from distance and incidence angle, integrated numerically along the segment.
+// density from distance and incidence angle, integrated numerically along the segment; the
+// pieces drawn as seen but not resolved are the rest, where no camera reaches ρ_min.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -166,6 +167,23 @@ TEST(ResolutionCoverage, ExactLengthsAgreeWithNumericalIntegrationOnRandomConfig
     EXPECT_NEAR(exact, reference, 1e-9) << "trial " << trial;
     worst = std::max(worst, std::abs(exact - reference));
     if (exact > 1e-6 && exact < visibility::length(s) - 1e-6) ++partlyResolved;
+    // What a frame draws as seen but not resolved: where every camera images with less than
+    // ρ_min, the rest of the segment.
+    std::vector<visibility::Segment> unresolved;
+    addUnresolvedPieces(s, cameras, lenses, requirement.minDensity, unresolved);
+    double unresolvedLength = 0.0;
+    for (const visibility::Segment& piece : unresolved) {
+      unresolvedLength += visibility::length(piece);
+      const Vec2 middle = geometry::lerp(piece.a, piece.b, 0.5);
+      for (std::size_t j = 0; j < m; ++j) {
+        EXPECT_LT(densityFromIncidence(positions[j], lenses[j], a, b, middle),
+                  requirement.minDensity * (1 + 1e-9))
+            << "trial " << trial;
+      }
+    }
+    if (!requirement.proportional) {
+      EXPECT_NEAR(unresolvedLength, visibility::length(s) - exact, 1e-9) << "trial " << trial;
+    }
   }
   EXPECT_GT(partlyResolved, 150);  // 196 of the 400 with this seed
   RecordProperty("worstDifference", std::to_string(worst));

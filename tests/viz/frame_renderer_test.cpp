@@ -158,6 +158,30 @@ TEST_F(TinyFrame, AWeightedWorldsEdgesAreAsWideAsImportant) {
   EXPECT_EQ(renderer_.layoutOf(frame_).rows.legend, 7);
 }
 
+// In a scene that asks a resolution, the seen pieces no camera resolves are amber, the rest
+// green; the panel has a row for resolved coverage and a legend row for the amber. The camera
+// 4 m from the seen edge x = 1 images it with k·h/d² pixels per metre (k = W / 2θ): with
+// W = 431 and ρ_min = 100 the resolved disc has a radius √(k·4/100) = 4.06 m, so the middle of
+// the edge (|y| < 0.7) is resolved and its ends are not.
+TEST_F(TinyFrame, InASceneThatAsksAResolutionTheUnresolvedSeenPiecesAreAmber) {
+  scene_.cameras[0].lens.imageWidth = 431.0;
+  scene_.resolution = scene::ResolutionRequirement{100.0, false};
+  FrameBuilder(scene_).build(0.0, std::vector<geometry::Pose>{scene_.cameras[0].initial}, frame_);
+  ASSERT_TRUE(frame_.caption.resolutionCoverage.has_value());
+  EXPECT_LT(*frame_.caption.resolutionCoverage, frame_.caption.coverage);
+  ASSERT_EQ(frame_.unresolved.size(), 2u) << "both ends of the seen edge";
+  ScratchDir dir;
+  writeAndLoad(dir / "resolution.png");
+  const auto amber = [](Colour c) { return c.r > 0.8 && c.g > 0.45 && c.g < 0.8 && c.b < 0.3; };
+  const auto green = [](Colour c) { return c.g > c.r + 0.3 && c.g > c.b + 0.3; };
+  EXPECT_TRUE(green(at({1.0, 0.0}))) << "the resolved middle";
+  EXPECT_TRUE(amber(at({1.0, 0.9}))) << "an unresolved end";
+  EXPECT_TRUE(amber(at({1.0, -0.9}))) << "the other";
+  const FrameLayout layout = renderer_.layoutOf(frame_);
+  EXPECT_EQ(layout.rows.caption, 6) << "time, coverage, resolved, utilization";
+  EXPECT_EQ(layout.rows.legend, 8) << "and what amber means";
+}
+
 // A title wider than the panel is made smaller, then cut with an ellipsis: the panel's right
 // margin stays the page's colour, never the title's clipped glyphs.
 TEST_F(TinyFrame, ATitleWiderThanThePanelIsFittedNotClipped) {
