@@ -1,0 +1,32 @@
+#include "control/learned_controller.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "util/input_error.h"
+
+namespace camcov::control {
+
+LearnedController::LearnedController(const scene::Scene& scene, const params::Parameters& params,
+                                     const LearnedPolicy& policy)
+    : scene_(scene), params_(params), policy_(policy), encoded_(policy.sizes().size()) {
+  try {
+    requireFits(scene, policy.sizes(), policy.view());
+  } catch (const std::invalid_argument& error) {
+    throw InputError(std::string("method learned: ") + error.what() +
+                     " the policy was trained on (docs/method.md, \"Learned method\")");
+  }
+}
+
+void LearnedController::control(const Observation& observation,
+                                std::span<scene::CameraCommand> commands) {
+  for (std::size_t j = 0; j < commands.size(); ++j) {
+    encodeObservation(scene_, params_, observation, policy_.sizes(), policy_.view(), j, encoded_);
+    const auto [vx, vy, turn] = policy_.act(encoded_);
+    const scene::CameraSpec& camera = scene_.cameras[j];
+    commands[j] = {{vx * camera.maxVelocity, vy * camera.maxVelocity},
+                   turn * camera.maxAngularVelocity};
+  }
+}
+
+}  // namespace camcov::control
