@@ -1,7 +1,8 @@
 #include "control/learned_controller.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
-#include <string>
 
 #include "util/input_error.h"
 
@@ -13,8 +14,10 @@ LearnedController::LearnedController(const scene::Scene& scene, const params::Pa
   try {
     requireFits(scene, policy.sizes(), policy.view());
   } catch (const std::invalid_argument& error) {
-    throw InputError(std::string("method learned: ") + error.what() +
-                     " the policy was trained on (docs/method.md, \"Learned method\")");
+    throw InputError(fmt::format(
+        "method learned: {} (the policy observes at most {} cameras and target rings of {} "
+        "vertices; docs/method.md, \"Learned method\")",
+        error.what(), policy.sizes().cameras, policy.sizes().vertices));
   }
 }
 
