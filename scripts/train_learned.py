@@ -280,7 +280,7 @@ def plot(curve, path, title):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--steps", type=int, default=1_000_000, help="team steps of training")
+    parser.add_argument("--steps", type=int, default=800_000, help="team steps of training")
     parser.add_argument("--per-family", type=int, default=50,
                         help="tune scenes of each family to train on")
     parser.add_argument("--seed", type=int, default=1)
