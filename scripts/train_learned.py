@@ -114,9 +114,9 @@ class Policy(nn.Module):
             self.actor[-1].bias.zero_()
 
 
-def scene_pool(per_family, split="tune"):
-    """The first `per_family` scenes of every generated family's tune (or test) seeds."""
-    return [s for name in camcov.families() for s in camcov.env.family(name, split, per_family)]
+def scene_pool(per_family):
+    """The first `per_family` scenes of every generated family's tune seeds."""
+    return [s for name in camcov.families() for s in camcov.env.family(name, "tune", per_family)]
 
 
 def observations(episode, cameras):
@@ -188,7 +188,8 @@ def train(scenes, steps, seed=1, envs=16, horizon=128, log=print):
                     s["act"].append(action[at + j])
                     s["logp"].append(logp[at + j])
                     s["val"].append(float(value[at + j]))
-                    s["rew"].append(float(seen[j, TEAM_COVERAGE] + OWN_WEIGHT * seen[j, OWN_COVERAGE]))
+                    s["rew"].append(
+                        float(seen[j, TEAM_COVERAGE] + OWN_WEIGHT * seen[j, OWN_COVERAGE]))
                 at += m
                 if episode.finished:
                     episode.close()

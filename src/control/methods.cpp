@@ -29,7 +29,7 @@ std::vector<Method>& table() {
           std::uint64_t seed) -> std::unique_ptr<Controller> {
          return std::make_unique<PaperController>(s, p, seed, PaperController::Variant::Camcov);
        }},
-      {"learned", "learned (one shared policy, trained by scripts/train_learned.py)", "#8c564b",
+      {"learned", "learned (one shared policy, trained by scripts/train_learned.py)", "#7f7f7f",
        Role::example,
        [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
            -> std::unique_ptr<Controller> { return std::make_unique<LearnedController>(s, p); }},

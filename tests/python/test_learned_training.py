@@ -11,7 +11,6 @@ import pathlib
 import sys
 
 import numpy as np
-import pytest
 import torch
 
 import camcov
