@@ -165,6 +165,10 @@ def train(scenes, steps, seed=1, envs=16, horizon=128, log=print):
     running = [start() for _ in range(envs)]
     done, curve, finished = 0, [], []
     while done < steps:
+        # The step size falls linearly to zero over the training: large steps first, fine
+        # adjustments of the mean (the action the method takes) at the end.
+        for g in optimizer.param_groups:
+            g["lr"] = 3e-4 * (1.0 - done / steps)
         live = [segments(limits) for _, limits, _ in running]
         ended = []  # the series of episodes that finished during this rollout: terminal
         for _ in range(horizon):
