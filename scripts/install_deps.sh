@@ -25,6 +25,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest  # the camcov Python module and its tests
   python3-venv python3-build        # pip install . into a venv, and the wheel (test_pip_install)
   emscripten nodejs                 # the engine as WebAssembly (src/wasm) and its test under node
+  python3-torch python3-matplotlib  # scripts/train_learned.py and its test (the learned method)
   python3-cloudpickle python3-typing-extensions python3-pil  # Gymnasium's and PettingZoo's
                                     # checkers (sources in ../shared/vendor/python), frames
   slurmctld slurmd slurm-client munge  # a one-node Slurm cluster for tests/cluster

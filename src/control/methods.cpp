@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/learned_controller.h"
 #include "control/local_controller.h"
 #include "control/paper_controller.h"
 #include "util/input_error.h"
@@ -28,6 +29,10 @@ std::vector<Method>& table() {
           std::uint64_t seed) -> std::unique_ptr<Controller> {
          return std::make_unique<PaperController>(s, p, seed, PaperController::Variant::Camcov);
        }},
+      {"learned", "learned (one shared policy, trained by scripts/train_learned.py)", "#7f7f7f",
+       Role::example,
+       [](const scene::Scene& s, const params::Parameters& p, std::uint64_t)
+           -> std::unique_ptr<Controller> { return std::make_unique<LearnedController>(s, p); }},
   };
   return all;
 }

@@ -1,83 +1,25 @@
 #pragma once
-// An episode's present instant as a fixed-size array of floats, for learning libraries whose
-// observations have one shape whatever the scene. The layout (docs/python.md repeats it):
-//
-//   [0, 4)              t / duration, and the team's coverage, utilization and reward at t
-//                       (eq. (3), (5), (8))
-//   per camera slot     10 floats: present, x, y, cos γ, sin γ, v_max / L, γ̇_max, θ, r / L
-//                       (0: no sensing range), the share of the target boundary this camera
-//                       sees (its own coverage term)
-//   per target slot     5 + 2·V floats: present, the share of its boundary that is seen, its
-//                       centroid x, y, its vertex count / V, then V vertices x, y (zeros past
-//                       its count)
-//   per obstacle slot   2 + 2·V floats: present, its vertex count / V, V vertices x, y
-//
-// Positions are in the room's frame: (p − c) / L, c the centre of the boundary's bounding
-// box and L half its longer side, so the room spans [−1, 1] along its longer side. With
-// TargetSlots::byIndex, slot i of targets is the scene's target i: a recorded person absent
-// at t leaves the slot's present flag 0 and the rest zero. With TargetSlots::nearest, the
-// slots hold the targets present at t, nearest first (the distance from a target's centroid
-// to the nearest camera of the view), as many as fit: a crowd whose people come and go is
-// observed in a size of the caller's choosing. Obstacle slot i is the scene's obstacle i.
-// Slots beyond what is there are zero. A camera's own view (View::own) keeps its own slot
-// first and its teammates after it in their order, shows no obstacle, and only the targets
-// it sees some of, with the share it sees.
-//
-// Every float lies within observationBounds(): a value past its field's bound (an object
-// more than a half-side outside the room's box, a sensing range longer than the room, a
-// repulsion beyond kRewardBound) is clamped to it, so that learning libraries get the finite
-// box they expect.
+// An episode's present instant as the fixed-size array of floats the learning environments
+// observe. The layout, sizes and bounds are control/observation_encoding.h's (a method may
+// observe the same floats); here the episode supplies the instant.
 #include <cstddef>
 #include <span>
-#include <vector>
 
+#include "control/observation_encoding.h"
 #include "environment/episode.h"
 #include "reward/metrics.h"
 
 namespace camcov::environment {
 
-enum class TargetSlots { byIndex, nearest };
-
-// What an encoding pads to: at least the counts of every scene it will encode (targets: any
-// number with TargetSlots::nearest, which keeps the nearest that fit).
-struct EncodingSizes {
-  std::size_t cameras = 0;
-  std::size_t targets = 0;
-  std::size_t obstacles = 0;
-  std::size_t vertices = 0;  // V: of the largest target or obstacle ring
-  TargetSlots targetSlots = TargetSlots::byIndex;
-
-  static constexpr std::size_t kGlobal = 4;
-  static constexpr std::size_t kPerCamera = 10;
-  std::size_t perTarget() const { return 5 + 2 * vertices; }
-  std::size_t perObstacle() const { return 2 + 2 * vertices; }
-  std::size_t size() const {
-    return kGlobal + cameras * kPerCamera + targets * perTarget() + obstacles * perObstacle();
-  }
-  // At most scene::kMaxCameras cameras and kMaxCount of each other count, so that size()
-  // cannot overflow: std::invalid_argument naming the count otherwise.
-  static constexpr std::size_t kMaxCount = 1000000;
-  void check() const;
-  // The smallest sizes that hold `scene` at every instant (deformations keep their vertex
-  // counts; a recorded person's disc is its shape).
-  static EncodingSizes of(const scene::Scene& scene);
-};
-
-// std::invalid_argument naming the scene's counts unless `sizes` hold `scene`.
-void requireFits(const scene::Scene& scene, const EncodingSizes& sizes);
-
-enum class View { team, own };
-
-// The fields' bounds: positions (room frame) within ±kPositionBound, lengths over L (v_max,
-// sensing range) within [0, kLengthBound], yaw rates within [0, kRateBound] rad/s, the reward
-// within ±kRewardBound; shares, flags, cos and sin, t / duration within their natural ranges.
-inline constexpr float kPositionBound = 2.0f;
-inline constexpr float kLengthBound = 4.0f;
-inline constexpr float kRateBound = 10.0f;
-inline constexpr float kRewardBound = 10.0f;
-
-// Writes every float's lowest and highest value into `low` and `high` (each sizes.size()).
-void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high);
+using control::EncodingSizes;
+using control::kLengthBound;
+using control::kPositionBound;
+using control::kRateBound;
+using control::kRewardBound;
+using control::observationBounds;
+using control::requireFits;
+using control::TargetSlots;
+using control::View;
 
 // Writes the episode's present instant into `out` (size sizes.size()); `camera` is the
 // camera whose view it is for View::own. std::invalid_argument if the scene does not fit.

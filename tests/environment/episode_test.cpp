@@ -106,6 +106,19 @@ TEST(Episode, TheObservationIsTheDocumentedLayout) {
   EXPECT_THROW(encodeObservation(episode, small, View::team, 0, tooSmall), std::invalid_argument);
 }
 
+TEST(Episode, TheOwnViewNeedsNoObstacleSlotsAsItShowsNone) {
+  const auto scene = oneTargetScene();  // one obstacle
+  Episode episode(scene, shortRun(1.0));
+  const EncodingSizes withObstacle{2, 1, 1, 4}, without{2, 1, 0, 4};
+  std::vector<float> full(withObstacle.size()), cut(without.size());
+  encodeObservation(episode, withObstacle, View::own, 1, full);
+  encodeObservation(episode, without, View::own, 1, cut);
+  EXPECT_EQ(std::vector<float>(full.begin(), full.begin() + cut.size()), cut)
+      << "the same floats, without the obstacle slot the own view leaves zero";
+  EXPECT_THROW(encodeObservation(episode, without, View::team, 0, cut), std::invalid_argument)
+      << "the team view shows the obstacle";
+}
+
 // Two targets: a square about (0, 0), 8.5 m from the nearest camera, and one about (3, 3),
 // 4.2 m from the camera at (6, 6); that camera senses 100 m, five times the room's side.
 constexpr const char* kTwoTargetsScene = R"js({

@@ -1,0 +1,238 @@
+#include "control/observation_encoding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "geometry/ring.h"
+#include "kinematics/world.h"
+#include "scene/camera.h"
+
+namespace camcov::control {
+namespace {
+
+std::size_t largestRing(const std::vector<scene::MovingObject>& objects) {
+  std::size_t n = 0;
+  for (const scene::MovingObject& object : objects) {
+    n = std::max(n, object.shape.size());
+    if (object.deformation) {
+      for (const auto& keyframe : object.deformation->keyframes)
+        n = std::max(n, keyframe.shape.size());
+    }
+  }
+  return n;
+}
+
+float bounded(double value, float low, float high) {
+  return std::clamp(static_cast<float>(value), low, high);
+}
+
+// The room's frame: (p − c) / L, clamped to the fields' bounds.
+struct RoomFrame {
+  explicit RoomFrame(const geometry::Ring& boundary) {
+    const geometry::Box box = geometry::boundingBox(boundary);
+    centre = (box.min + box.max) * 0.5;
+    halfSide = 0.5 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+  }
+  geometry::Vec2 centre;
+  double halfSide = 1.0;
+  float x(geometry::Vec2 p) const { return position((p.x - centre.x) / halfSide); }
+  float y(geometry::Vec2 p) const { return position((p.y - centre.y) / halfSide); }
+  float length(double metres) const { return bounded(metres / halfSide, 0.0f, kLengthBound); }
+
+ private:
+  static float position(double v) { return bounded(v, -kPositionBound, kPositionBound); }
+};
+
+// Writes a ring's vertex count / V and its vertices from `at`; returns where it ended.
+float* writeRing(const geometry::Ring& ring, std::size_t vertices, const RoomFrame& frame,
+                 float* at) {
+  *at++ = static_cast<float>(ring.size()) / static_cast<float>(vertices);
+  for (const geometry::Vec2& v : ring) {
+    *at++ = frame.x(v);
+    *at++ = frame.y(v);
+  }
+  return at + 2 * (vertices - ring.size());
+}
+
+geometry::Vec2 centroid(const geometry::Ring& ring) {
+  geometry::Vec2 mean{};
+  for (const geometry::Vec2& v : ring)
+    mean = mean + v;
+  return mean * (1.0 / static_cast<double>(ring.size()));
+}
+
+// The world's targets in the order their slots take them: the scene's with
+// TargetSlots::byIndex; with TargetSlots::nearest, by the distance from their centroid to
+// the nearest of `viewers` (ties: the scene's order).
+std::vector<std::size_t> targetOrder(const kinematics::World& world,
+                                     const std::vector<geometry::Vec2>& centroids,
+                                     std::span<const geometry::Pose> viewers, TargetSlots slots) {
+  std::vector<std::size_t> order(world.targets.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  if (slots == TargetSlots::byIndex) return order;
+  std::vector<double> distance(order.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (const geometry::Pose& p : viewers)
+      distance[i] = std::min(distance[i], geometry::distance(centroids[i], p.position()));
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+  return order;
+}
+
+}  // namespace
+
+void requireFits(const scene::Scene& scene, const EncodingSizes& sizes, View view) {
+  EncodingSizes needed = EncodingSizes::of(scene);
+  if (view == View::own) {
+    needed.obstacles = 0;
+    needed.vertices = largestRing(scene.targets);
+  }
+  const bool targetsFit =
+      sizes.targetSlots == TargetSlots::nearest || needed.targets <= sizes.targets;
+  if (needed.cameras > sizes.cameras || !targetsFit || needed.obstacles > sizes.obstacles ||
+      needed.vertices > sizes.vertices) {
+    throw std::invalid_argument("scene " + scene.name + " needs " + std::to_string(needed.cameras) +
+                                " cameras, " + std::to_string(needed.targets) + " targets, " +
+                                std::to_string(needed.obstacles) + " obstacles and " +
+                                std::to_string(needed.vertices) +
+                                " vertices a ring: more than the encoding holds");
+  }
+}
+
+void EncodingSizes::check() const {
+  const auto require = [](std::size_t value, std::size_t limit, const char* what) {
+    if (value > limit) {
+      throw std::invalid_argument("sizes: " + std::to_string(value) + " " + what + ", at most " +
+                                  std::to_string(limit));
+    }
+  };
+  require(cameras, scene::kMaxCameras, "cameras");
+  require(targets, kMaxCount, "targets");
+  require(obstacles, kMaxCount, "obstacles");
+  require(vertices, kMaxCount, "vertices");
+}
+
+EncodingSizes EncodingSizes::of(const scene::Scene& scene) {
+  return {scene.cameras.size(), scene.targets.size(), scene.obstacles.size(),
+          std::max(largestRing(scene.targets), largestRing(scene.obstacles))};
+}
+
+void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high) {
+  sizes.check();
+  if (low.size() != sizes.size() || high.size() != sizes.size())
+    throw std::invalid_argument("observationBounds: the output has the wrong size");
+  // Everything not named below is a share, a flag or a count over V: [0, 1].
+  std::fill(low.begin(), low.end(), 0.0f);
+  std::fill(high.begin(), high.end(), 1.0f);
+  const auto set = [&](std::size_t from, std::size_t count, float lo, float hi) {
+    std::fill_n(low.begin() + static_cast<std::ptrdiff_t>(from), count, lo);
+    std::fill_n(high.begin() + static_cast<std::ptrdiff_t>(from), count, hi);
+  };
+  set(3, 1, -kRewardBound, kRewardBound);
+  std::size_t at = EncodingSizes::kGlobal;
+  for (std::size_t slot = 0; slot < sizes.cameras; ++slot, at += EncodingSizes::kPerCamera) {
+    set(at + 1, 2, -kPositionBound, kPositionBound);
+    set(at + 3, 2, -1.0f, 1.0f);  // cos γ, sin γ
+    set(at + 5, 1, 0.0f, kLengthBound);
+    set(at + 6, 1, 0.0f, kRateBound);
+    set(at + 7, 1, 0.0f, std::numbers::pi_v<float>);  // θ
+    set(at + 8, 1, 0.0f, kLengthBound);
+  }
+  for (std::size_t slot = 0; slot < sizes.targets; ++slot, at += sizes.perTarget()) {
+    set(at + 2, 2, -kPositionBound, kPositionBound);
+    set(at + 5, 2 * sizes.vertices, -kPositionBound, kPositionBound);
+  }
+  for (std::size_t slot = 0; slot < sizes.obstacles; ++slot, at += sizes.perObstacle())
+    set(at + 2, 2 * sizes.vertices, -kPositionBound, kPositionBound);
+}
+
+void encodeObservation(const scene::Scene& scene, const params::Parameters& params,
+                       const Observation& o, const EncodingSizes& sizes, View view,
+                       std::size_t camera, std::span<float> out) {
+  sizes.check();
+  requireFits(scene, sizes, view);
+  if (out.size() != sizes.size())
+    throw std::invalid_argument("encodeObservation: the output has the wrong size");
+  if (view == View::own && camera >= scene.cameras.size())
+    throw std::invalid_argument("encodeObservation: no camera " + std::to_string(camera));
+  std::fill(out.begin(), out.end(), 0.0f);
+  const kinematics::World& world = o.world;
+  const RoomFrame frame(world.boundary);
+  const double perimeter = reward::targetPerimeter(world);
+  // Who counts as seeing: the team, or the camera alone.
+  const std::uint64_t seers = view == View::own ? std::uint64_t{1} << camera : ~std::uint64_t{0};
+
+  float* at = out.data();
+  // The run's length: its instants after t = 0 (sim::Simulation::steps) times dt.
+  const double duration =
+      static_cast<double>(std::llround(params.sim.duration / params.sim.dt)) * params.sim.dt;
+  *at++ = static_cast<float>(duration > 0.0 ? std::min(1.0, o.time / duration) : 1.0);
+  *at++ = static_cast<float>(reward::coverageTerm(params.reward, o.terms));
+  *at++ = static_cast<float>(o.terms.utilization);
+  *at++ = bounded(o.terms.reward, -kRewardBound, kRewardBound);
+
+  // Cameras: for the own view the camera itself first, then its teammates in their order.
+  const std::size_t cameras = scene.cameras.size();
+  for (std::size_t slot = 0; slot < std::min(sizes.cameras, cameras); ++slot) {
+    float* c = at + slot * EncodingSizes::kPerCamera;
+    std::size_t j = slot;
+    if (view == View::own) j = slot == 0 ? camera : (slot <= camera ? slot - 1 : slot);
+    const scene::CameraSpec& spec = scene.cameras[j];
+    const geometry::Pose& p = o.cameras[j];
+    c[0] = 1.0f;
+    c[1] = frame.x(p.position());
+    c[2] = frame.y(p.position());
+    c[3] = static_cast<float>(std::cos(p.yaw));
+    c[4] = static_cast<float>(std::sin(p.yaw));
+    c[5] = frame.length(spec.maxVelocity);
+    c[6] = bounded(spec.maxAngularVelocity, 0.0f, kRateBound);
+    c[7] = static_cast<float>(spec.lens.halfFov);
+    c[8] = spec.lens.limited() ? frame.length(spec.lens.range) : 0.0f;
+    c[9] = static_cast<float>(
+        reward::coverageOf(reward::visibleLengthOf(o.seen, static_cast<unsigned>(j)), perimeter));
+  }
+  at += sizes.cameras * EncodingSizes::kPerCamera;
+
+  // Targets: each one's boundary length and the part seen, in the order of their slots.
+  std::vector<double> boundary(world.targets.size(), 0.0), seen(world.targets.size(), 0.0);
+  for (const visibility::Segment& s : o.seen) {
+    const double l = visibility::length(s);
+    boundary[s.target] += l;
+    if ((s.visibleBy & seers) != 0) seen[s.target] += l;
+  }
+  std::vector<geometry::Vec2> centroids;
+  centroids.reserve(world.targets.size());
+  for (const geometry::Ring& ring : world.targets)
+    centroids.push_back(centroid(ring));
+  const std::span<const geometry::Pose> viewers =
+      view == View::own ? std::span(o.cameras).subspan(camera, 1) : std::span(o.cameras);
+  std::size_t filled = 0;
+  for (const std::size_t i : targetOrder(world, centroids, viewers, sizes.targetSlots)) {
+    if (view == View::own && seen[i] == 0.0) continue;
+    const std::size_t slot =
+        sizes.targetSlots == TargetSlots::nearest ? filled++ : kinematics::targetId(world, i);
+    if (slot >= sizes.targets) break;
+    float* t = at + slot * sizes.perTarget();
+    t[0] = 1.0f;
+    t[1] = static_cast<float>(boundary[i] > 0.0 ? seen[i] / boundary[i] : 0.0);
+    t[2] = frame.x(centroids[i]);
+    t[3] = frame.y(centroids[i]);
+    writeRing(world.targets[i], sizes.vertices, frame, t + 4);
+  }
+  at += sizes.targets * sizes.perTarget();
+
+  if (view == View::own) return;
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+    float* b = at + kinematics::obstacleId(world, i) * sizes.perObstacle();
+    b[0] = 1.0f;
+    writeRing(world.obstacles[i], sizes.vertices, frame, b + 1);
+  }
+}
+
+}  // namespace camcov::control
