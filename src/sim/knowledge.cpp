@@ -46,6 +46,12 @@ std::vector<KnownObject> Knowledge::newestFirst(std::size_t limit) const {
   return entries;
 }
 
+void Knowledge::hearTeammate(std::size_t from, const control::HeardTeammate& news) {
+  if (teammates_.size() <= from) teammates_.resize(from + 1);
+  std::optional<control::HeardTeammate>& known = teammates_[from];
+  if (!known || news.sentAt > known->sentAt) known = news;
+}
+
 Knowledge unionOf(std::span<const Knowledge> team) {
   Knowledge all;
   for (const Knowledge& camera : team)
