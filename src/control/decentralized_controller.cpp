@@ -42,6 +42,12 @@ void DecentralizedController::control(const Observation& observation,
       loops_[j]->control(observation, planned_);
     } else {
       const OwnKnowledge& own = observation.own[j];
+      if (own.world.targets.empty()) {
+        // Nothing to cover that it knows of, so nothing its loop could plan for: it turns on
+        // the spot, looking round for a target, and plans from the instant it knows one.
+        commands[j] = {{0.0, 0.0}, scene_.cameras[j].maxAngularVelocity};
+        continue;
+      }
       believeTeam(own, j, observation.cameras[j]);
       // Nothing measured for this camera's world: its loop sweeps it itself.
       const Observation mine{observation.time, own.world, believed_};

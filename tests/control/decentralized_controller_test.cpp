@@ -23,7 +23,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Two rooms: a wall along x = 0 (gaps of 5 cm at the ends, too narrow for a camera or a line
 // of sight that reaches anything) keeps camera 0 and target 0 in the west, camera 1 and
 // target 1 in the east, along `eastPath`.
-std::string twoRooms(const std::string& eastPath) {
+std::string twoRooms(const std::string& eastPath, int westYaw = -34) {
   return R"js({
   "boundary": "POLYGON((-10 -5,10 -5,10 5,-10 5))",
   "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-5 0))"},
@@ -31,7 +31,8 @@ std::string twoRooms(const std::string& eastPath) {
          eastPath + R"js("}],
   "obstacles": [{"shape": "POLYGON((-0.25 -4.95,0.25 -4.95,0.25 4.95,-0.25 4.95))", "path": "POLYGON((0 0))"}],
   "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(-8 2)", "angle": -34, "maxVelocity": 1, "maxAngularVelocity": 1},
+  "cameras": [{"pos": "POINT(-8 2)", "angle": )js" +
+         std::to_string(westYaw) + R"js(, "maxVelocity": 1, "maxAngularVelocity": 1},
               {"pos": "POINT(8 -2)", "angle": 146, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
 }
 
@@ -130,6 +131,19 @@ TEST(DecentralizedController, ACameraIgnoresWhatItNeitherSawNorHeard) {
   // With messages camera 0 hears where target 1 is, and does differ (the check can fail).
   const auto heardA = run(along, limited(kInf), 1), heardB = run(across, limited(kInf), 1);
   EXPECT_NE(heardA->recorded.of(0), heardB->recorded.of(0));
+}
+
+TEST(DecentralizedController, ACameraThatKnowsNoTargetLooksRoundForOne) {
+  // Camera 0 starts facing the north wall and hears nothing: it turns at its full rate until
+  // target 0 comes into view, then plans for it and comes to cover it.
+  const scene::Scene scene = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))", 90));
+  const auto r = run(scene, limited(0.0), 1);
+  const auto commands = r->recorded.of(0);
+  EXPECT_EQ(commands.front(), (std::vector<double>{0.0, 0.0, 1.0}));
+  const auto turning = std::count(commands.begin(), commands.end(), commands.front());
+  EXPECT_GT(turning, 1);
+  EXPECT_LT(turning, static_cast<long>(commands.size()));
+  EXPECT_GT(r->summary.finalCoverage, 0.0);
 }
 
 // The published scenes with messages that reach everyone (`range` inf), or few of them.
