@@ -31,7 +31,7 @@ std::vector<Method>& table() {
        }},
       // Run when asked for by name: in the default batch it would change every published
       // batch's report and verdicts.
-      {"camcov-dec", "camcov decentralized (each camera on its own knowledge)", "#8c564b",
+      {"camcov-dec", "camcov decentralized (each camera on its own knowledge)", "#637939",
        Role::example,
        [](const scene::Scene& s, const params::Parameters& p,
           std::uint64_t seed) -> std::unique_ptr<Controller> {

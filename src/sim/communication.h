@@ -2,9 +2,9 @@
 // How cameras tell each other what they know under limited knowledge (docs/method.md, "What a
 // camera knows"), in one place: every `period` seconds a camera sends what it knows, the most
 // recently seen entries first and at most `sizeLimit` of them, with its own pose and goal (which
-// the size limit does not count); every other camera within
-// `range` of it at that instant hears it at the first step `latency` seconds later, unless the
-// message is lost for that receiver, with probability `loss`. The losses are drawn from a
+// the size limit does not count); every other camera within `range` of it at that instant hears
+// it at the first step `latency` seconds later, unless the message is lost for that receiver,
+// with probability `loss`. The losses are drawn from a
 // stream of their own seeded from the run's seed, so a run is deterministic and the methods'
 // random draws do not shift with them.
 #include <cstdint>
