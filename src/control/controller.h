@@ -16,8 +16,9 @@
 
 namespace camcov::control {
 
-// What a camera knows of a teammate under limited knowledge: its last message heard, which says
-// where the teammate was when it sent it and the goal it was heading for then, if any.
+// What a camera knows of a teammate under limited knowledge: the latest news of it, from its own
+// message or passed on by another camera: where it was at `sentAt` and the goal it was heading
+// for then, if any.
 struct HeardTeammate {
   double sentAt = 0.0;  // s
   geometry::Pose pose;

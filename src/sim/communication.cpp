@@ -33,8 +33,14 @@ void Communication::send(double time, std::span<const geometry::Pose> poses,
     lastSent_[from] = time;
     const auto entries = std::make_shared<const std::vector<KnownObject>>(
         knowledge[from].newestFirst(static_cast<std::size_t>(params_.sizeLimit)));
-    const control::HeardTeammate sender{time, poses[from],
-                                        from < goals.size() ? goals[from] : std::nullopt};
+    const auto heard = knowledge[from].teammates();
+    auto told = std::make_shared<std::vector<std::optional<control::HeardTeammate>>>(heard.begin(),
+                                                                                     heard.end());
+    told->resize(poses.size());
+    (*told)[from] =
+        control::HeardTeammate{time, poses[from], from < goals.size() ? goals[from] : std::nullopt};
+    const std::shared_ptr<const std::vector<std::optional<control::HeardTeammate>>> team =
+        std::move(told);
     for (std::size_t to = 0; to < poses.size(); ++to) {
       if (to == from) continue;
       if (!(geometry::distance(poses[from].position(), poses[to].position()) <= range)) continue;
@@ -47,7 +53,7 @@ void Communication::send(double time, std::span<const geometry::Pose> poses,
       inFlight_.push_back({{static_cast<int>(from), static_cast<int>(to), time},
                            time + params_.latency,
                            entries,
-                           sender});
+                           team});
     }
   }
 }
@@ -62,7 +68,11 @@ std::vector<Hearing> Communication::deliver(double time, std::span<Knowledge> kn
     }
     Knowledge& receiver = knowledge[message.hearing.to];
     receiver.hear(*message.entries);
-    receiver.hearTeammate(static_cast<std::size_t>(message.hearing.from), message.sender);
+    const auto& team = *message.team;
+    for (std::size_t i = 0; i < team.size(); ++i) {
+      if (team[i] && i != static_cast<std::size_t>(message.hearing.to))
+        receiver.hearTeammate(i, *team[i]);
+    }
     heard.push_back(message.hearing);
     ++counts_.delivered;
   }

@@ -1,8 +1,10 @@
 #pragma once
 // How cameras tell each other what they know under limited knowledge (docs/method.md, "What a
 // camera knows"), in one place: every `period` seconds a camera sends what it knows, the most
-// recently seen entries first and at most `sizeLimit` of them, with its own pose and goal (which
-// the size limit does not count); every other camera within `range` of it at that instant hears
+// recently seen entries first and at most `sizeLimit` of them, with its own pose and goal and
+// its teammates' as it last heard them (which the size limit does not count: a pose is small,
+// and relayed poses let cameras out of each other's range know where the other is); every
+// other camera within `range` of it at that instant hears
 // it at the first step `latency` seconds later, unless the message is lost for that receiver,
 // with probability `loss`. The losses are drawn from a
 // stream of their own seeded from the run's seed, so a run is deterministic and the methods'
@@ -41,7 +43,7 @@ class Communication {
                 std::uint64_t seed);
   // At instant `time`, with the cameras at `poses` heading for `goals` (none: no goal; empty:
   // nobody has one): every camera whose period has come round sends what `knowledge[j]` holds
-  // now, its pose and its goal.
+  // now, its pose and its goal, and its teammates' as it last heard them.
   void send(double time, std::span<const geometry::Pose> poses,
             std::span<const Knowledge> knowledge,
             std::span<const std::optional<geometry::Pose>> goals = {});
@@ -54,7 +56,8 @@ class Communication {
     Hearing hearing;
     double due = 0.0;
     std::shared_ptr<const std::vector<KnownObject>> entries;  // one message, shared by receivers
-    control::HeardTeammate sender;
+    // What the sender told of the team: itself now, the others as it last heard them.
+    std::shared_ptr<const std::vector<std::optional<control::HeardTeammate>>> team;
   };
   const params::CommsParams params_;
   const double dt_;

@@ -41,9 +41,9 @@ class Knowledge {
   // What a message carries: the entries seen most recently first (ties: in objects() order),
   // at most `limit` of them (0: all).
   std::vector<KnownObject> newestFirst(std::size_t limit) const;
-  // What a message tells of its sender, camera `from` (its pose and goal when it sent it):
-  // kept where it was sent later than the last heard from `from`.
-  void hearTeammate(std::size_t from, const control::HeardTeammate& news);
+  // What a message tells of camera `teammate` (its pose and goal at `news.sentAt`, from itself
+  // or passed on): kept where it is later than the latest known of it.
+  void hearTeammate(std::size_t teammate, const control::HeardTeammate& news);
   // Teammates as last heard, by camera index (none: never heard); may be shorter than the team.
   std::span<const std::optional<control::HeardTeammate>> teammates() const { return teammates_; }
 

@@ -190,6 +190,28 @@ TEST(Communication, AMessageTellsWhereItsSenderWasAndWhereItWasHeading) {
   EXPECT_EQ(pair.knowledge[1].teammates()[0]->sentAt, 0.1);
 }
 
+TEST(Communication, APoseIsPassedOnToCamerasOutOfItsSendersRange) {
+  // Cameras at 0, 8 and 16 m with a range of 10 m: 0 and 2 hear only 1, which passes on what
+  // it heard of each, so both learn where the other was one step before.
+  std::vector<geometry::Pose> poses{{0, 0, 0}, {8, 0, 0}, {16, 0, 0}};
+  std::vector<Knowledge> knowledge(3);
+  Communication c(comms(10.0), 0.1, 3, 1);
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+  EXPECT_EQ(knowledge[0].teammates().size(), 2U);  // camera 1 only: nothing passed on yet
+  poses[0] = {0, 1, 0};
+  c.send(0.1, poses, knowledge);
+  c.deliver(0.1, knowledge);
+  ASSERT_EQ(knowledge[0].teammates().size(), 3U);
+  ASSERT_TRUE(knowledge[0].teammates()[2].has_value());
+  EXPECT_EQ(knowledge[0].teammates()[2]->sentAt, 0.0);
+  EXPECT_EQ(knowledge[0].teammates()[2]->pose, (geometry::Pose{16, 0, 0}));
+  EXPECT_EQ(knowledge[2].teammates()[0]->pose, (geometry::Pose{0, 0, 0}));
+  EXPECT_EQ(knowledge[1].teammates()[0]->pose, (geometry::Pose{0, 1, 0}));  // heard directly
+  // Nobody is told of itself.
+  EXPECT_FALSE(knowledge[0].teammates()[0].has_value());
+}
+
 TEST(Communication, AReceiverOutOfRangeHearsNothing) {
   Pair far(10.0);
   Communication c(comms(9.99), 0.1, 2, 1);
