@@ -5,9 +5,10 @@
 // knowledge only — the world as it saw it or was told (Observation::own), its teammates where
 // they last said they were — and follows its own part of the plan it computes. The cameras
 // share the run's seed, so where they know the same they compute the same plan: with full
-// knowledge, or messages that reach everyone at every step, each camera's part is the one the
-// centralized method gives it, and the team's run is camcov's. A camera that knows no target
-// (under limited knowledge) turns on the spot at its full rate, looking round for one.
+// knowledge (or, once a target is known, messages that reach everyone at every step) each
+// camera's part is the one the centralized method gives it, and with full knowledge the team's
+// run is camcov's. A camera that knows no target (under limited knowledge) turns on the spot at
+// its full rate, looking round for one.
 //
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
