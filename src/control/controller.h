@@ -16,6 +16,23 @@
 
 namespace camcov::control {
 
+// What a camera knows of a teammate under limited knowledge: the latest news of it, from its own
+// message or passed on by another camera: where it was at `sentAt` and the goal it was heading
+// for then, if any.
+struct HeardTeammate {
+  double sentAt = 0.0;  // s
+  geometry::Pose pose;
+  std::optional<geometry::Pose> goal;
+};
+
+// What one camera knows on its own under limited knowledge (docs/method.md, "What a camera
+// knows"): the world as it saw it or was told, and its teammates as last heard.
+struct OwnKnowledge {
+  kinematics::World world;
+  // By camera index; none for itself and for teammates it never heard.
+  std::vector<std::optional<HeardTeammate>> teammates;
+};
+
 // What a method sees at step t. Its cameras' limits and fields of view are the scene's
 // (scene::CameraSpec), given when the controller is made (methods.h), with the parameters and
 // the seed of its own random generator.
@@ -32,6 +49,10 @@ struct Observation {
   // instant from it (RewardModel::setInstant) instead of building the occluders again, and
   // keeps its sweeps. Null where nobody measured.
   const reward::RewardModel* measured = nullptr;
+  // Under limited knowledge, what each camera knows on its own, by camera index, for a
+  // decentralized method (`world` is the union of these worlds). Empty with full knowledge:
+  // there every camera's own world is `world` and it knows its teammates' poses as they are.
+  std::span<const OwnKnowledge> own = {};
 };
 
 // Sets `model` to the observation's instant: the simulator's, shared, where it measured; else

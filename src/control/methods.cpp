@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/decentralized_controller.h"
 #include "control/learned_controller.h"
 #include "control/local_controller.h"
 #include "control/paper_controller.h"
@@ -28,6 +29,14 @@ std::vector<Method>& table() {
        [](const scene::Scene& s, const params::Parameters& p,
           std::uint64_t seed) -> std::unique_ptr<Controller> {
          return std::make_unique<PaperController>(s, p, seed, PaperController::Variant::Camcov);
+       }},
+      // Run when asked for by name: in the default batch it would change every published
+      // batch's report and verdicts.
+      {"camcov-dec", "camcov decentralized (each camera on its own knowledge)", "#637939",
+       Role::example,
+       [](const scene::Scene& s, const params::Parameters& p,
+          std::uint64_t seed) -> std::unique_ptr<Controller> {
+         return std::make_unique<DecentralizedController>(s, p, seed);
        }},
       {"learned", "learned (one shared policy, trained by scripts/train_learned.py)", "#7f7f7f",
        Role::example,

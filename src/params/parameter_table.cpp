@@ -174,7 +174,8 @@ constexpr std::array kTable{
     row<&P::knowledge, &KnowledgeParams::limited>(
         "knowledge.limited", "", "",
         "our extension: a camera knows a target or obstacle only as it last saw it or was told "
-        "(comms.*), and the methods read the union of what the team knows; false: every method "
+        "(comms.*), and the methods read the union of what the team knows (camcov-dec: each "
+        "camera its own); false: every method "
         "reads the true world (the paper). Scoring is the same either way",
         0, 1, false, knowledgeIsLimited),
     row<&P::comms, &CommsParams::range>(

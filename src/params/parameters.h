@@ -108,7 +108,8 @@ struct CamcovParams {
 // What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every
 // method reads the true world at each instant, as the paper assumes. Limited: a camera knows a
 // target or obstacle only as it last saw it itself or was told (sim/knowledge.h), and the
-// methods read the union of what the team knows; the world the simulator scores is the same.
+// centralized methods read the union of what the team knows (camcov-dec: each camera its own);
+// the world the simulator scores is the same.
 struct KnowledgeParams {
   bool limited = false;
 };

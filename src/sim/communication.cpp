@@ -25,13 +25,22 @@ Communication::Communication(const params::CommsParams& params, double dt, std::
       random_(seed ^ kLossStream) {}
 
 void Communication::send(double time, std::span<const geometry::Pose> poses,
-                         std::span<const Knowledge> knowledge) {
+                         std::span<const Knowledge> knowledge,
+                         std::span<const std::optional<geometry::Pose>> goals) {
   const double range = params_.range;
   for (std::size_t from = 0; from < poses.size(); ++from) {
     if (!reached(time, lastSent_[from] + params_.period, dt_)) continue;
     lastSent_[from] = time;
     const auto entries = std::make_shared<const std::vector<KnownObject>>(
         knowledge[from].newestFirst(static_cast<std::size_t>(params_.sizeLimit)));
+    const auto heard = knowledge[from].teammates();
+    auto told = std::make_shared<std::vector<std::optional<control::HeardTeammate>>>(heard.begin(),
+                                                                                     heard.end());
+    told->resize(poses.size());
+    (*told)[from] =
+        control::HeardTeammate{time, poses[from], from < goals.size() ? goals[from] : std::nullopt};
+    const std::shared_ptr<const std::vector<std::optional<control::HeardTeammate>>> team =
+        std::move(told);
     for (std::size_t to = 0; to < poses.size(); ++to) {
       if (to == from) continue;
       if (!(geometry::distance(poses[from].position(), poses[to].position()) <= range)) continue;
@@ -41,8 +50,10 @@ void Communication::send(double time, std::span<const geometry::Pose> poses,
         ++counts_.lost;
         continue;
       }
-      inFlight_.push_back(
-          {{static_cast<int>(from), static_cast<int>(to), time}, time + params_.latency, entries});
+      inFlight_.push_back({{static_cast<int>(from), static_cast<int>(to), time},
+                           time + params_.latency,
+                           entries,
+                           team});
     }
   }
 }
@@ -55,7 +66,13 @@ std::vector<Hearing> Communication::deliver(double time, std::span<Knowledge> kn
       waiting.push_back(std::move(message));
       continue;
     }
-    knowledge[message.hearing.to].hear(*message.entries);
+    Knowledge& receiver = knowledge[message.hearing.to];
+    receiver.hear(*message.entries);
+    const auto& team = *message.team;
+    for (std::size_t i = 0; i < team.size(); ++i) {
+      if (team[i] && i != static_cast<std::size_t>(message.hearing.to))
+        receiver.hearTeammate(i, *team[i]);
+    }
     heard.push_back(message.hearing);
     ++counts_.delivered;
   }

@@ -1,13 +1,17 @@
 #pragma once
 // How cameras tell each other what they know under limited knowledge (docs/method.md, "What a
 // camera knows"), in one place: every `period` seconds a camera sends what it knows, the most
-// recently seen entries first and at most `sizeLimit` of them; every other camera within
-// `range` of it at that instant hears it at the first step `latency` seconds later, unless the
-// message is lost for that receiver, with probability `loss`. The losses are drawn from a
+// recently seen entries first and at most `sizeLimit` of them, with its own pose and goal and
+// its teammates' as it last heard them (which the size limit does not count: a pose is small,
+// and relayed poses let cameras out of each other's range know where the other is); every
+// other camera within `range` of it at that instant hears
+// it at the first step `latency` seconds later, unless the message is lost for that receiver,
+// with probability `loss`. The losses are drawn from a
 // stream of their own seeded from the run's seed, so a run is deterministic and the methods'
 // random draws do not shift with them.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -37,10 +41,12 @@ class Communication {
  public:
   Communication(const params::CommsParams& params, double dt, std::size_t cameras,
                 std::uint64_t seed);
-  // At instant `time`, with the cameras at `poses`: every camera whose period has come round
-  // sends what `knowledge[j]` holds now.
+  // At instant `time`, with the cameras at `poses` heading for `goals` (none: no goal; empty:
+  // nobody has one): every camera whose period has come round sends what `knowledge[j]` holds
+  // now, its pose and its goal, and its teammates' as it last heard them.
   void send(double time, std::span<const geometry::Pose> poses,
-            std::span<const Knowledge> knowledge);
+            std::span<const Knowledge> knowledge,
+            std::span<const std::optional<geometry::Pose>> goals = {});
   // Hands every message due by `time` to its receiver, in the order sent; who heard whom.
   std::vector<Hearing> deliver(double time, std::span<Knowledge> knowledge);
   const MessageCounts& counts() const { return counts_; }
@@ -50,6 +56,8 @@ class Communication {
     Hearing hearing;
     double due = 0.0;
     std::shared_ptr<const std::vector<KnownObject>> entries;  // one message, shared by receivers
+    // What the sender told of the team: itself now, the others as it last heard them.
+    std::shared_ptr<const std::vector<std::optional<control::HeardTeammate>>> team;
   };
   const params::CommsParams params_;
   const double dt_;

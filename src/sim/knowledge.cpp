@@ -46,6 +46,12 @@ std::vector<KnownObject> Knowledge::newestFirst(std::size_t limit) const {
   return entries;
 }
 
+void Knowledge::hearTeammate(std::size_t teammate, const control::HeardTeammate& news) {
+  if (teammates_.size() <= teammate) teammates_.resize(teammate + 1);
+  std::optional<control::HeardTeammate>& known = teammates_[teammate];
+  if (!known || news.sentAt > known->sentAt) known = news;
+}
+
 Knowledge unionOf(std::span<const Knowledge> team) {
   Knowledge all;
   for (const Knowledge& camera : team)

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "control/controller.h"
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
@@ -40,12 +41,18 @@ class Knowledge {
   // What a message carries: the entries seen most recently first (ties: in objects() order),
   // at most `limit` of them (0: all).
   std::vector<KnownObject> newestFirst(std::size_t limit) const;
+  // What a message tells of camera `teammate` (its pose and goal at `news.sentAt`, from itself
+  // or passed on): kept where it is later than the latest known of it.
+  void hearTeammate(std::size_t teammate, const control::HeardTeammate& news);
+  // Teammates as last heard, by camera index (none: never heard); may be shorter than the team.
+  std::span<const std::optional<control::HeardTeammate>> teammates() const { return teammates_; }
 
  private:
   // Replaces or inserts at the place of its kind and id; `onlyIfNewer`: keeps an entry seen
   // at the same time or later.
   void put(KnownObject object, bool onlyIfNewer);
   std::vector<KnownObject> objects_;  // targets then obstacles, by id
+  std::vector<std::optional<control::HeardTeammate>> teammates_;
 };
 
 // Of each object, the entry seen last among `team`'s.

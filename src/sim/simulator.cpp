@@ -139,6 +139,8 @@ struct Simulation::State {
   std::optional<TeamKnowledge> team;
   std::optional<reward::RewardModel> knownMeasure;
   reward::RewardTerms knownTerms;
+  // The goals the method gave at the last instant recorded, which the cameras' messages carry.
+  std::vector<std::optional<geometry::Pose>> goals;
 };
 
 Simulation::Simulation(const scene::Scene& scene, const params::Parameters& params,
@@ -168,8 +170,8 @@ double Simulation::time() const {
 control::Observation Simulation::observation() const {
   const State& s = *state_;
   if (!s.team) return scored();
-  return {time(),       s.team->known(), cameras_, s.knownMeasure->segments(),
-          s.knownTerms, &*s.knownMeasure};
+  return {time(),       s.team->known(),  cameras_,     s.knownMeasure->segments(),
+          s.knownTerms, &*s.knownMeasure, s.team->own()};
 }
 
 control::Observation Simulation::scored() const {
@@ -196,7 +198,7 @@ void Simulation::measure() {
         s.measure.segments(), cameras_, s.lenses, *s.scene.resolution, s.measure.perimeter());
   }
   if (s.team) {
-    s.team->update(s.world, cameras_);
+    s.team->update(s.world, cameras_, s.goals);
     s.knownMeasure->setWorld(s.team->known());
     s.knownTerms = s.knownMeasure->evaluate(cameras_);
   }
@@ -295,7 +297,10 @@ void Simulation::advance(std::span<const std::optional<geometry::Pose>> goals, R
   record.cameras = cameras_;
   record.goals = goals;
   record.events = events_;
-  if (s.team) record.heard = s.team->heard();
+  if (s.team) {
+    record.heard = s.team->heard();
+    s.goals.assign(goals.begin(), goals.end());
+  }
   recorder.step(record);
   if (k_ == steps_) {
     ++k_;

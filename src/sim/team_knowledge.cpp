@@ -56,11 +56,19 @@ void TeamKnowledge::see(const kinematics::World& world, std::span<const geometry
   before_ = world;
 }
 
-void TeamKnowledge::update(const kinematics::World& world, std::span<const geometry::Pose> poses) {
+void TeamKnowledge::update(const kinematics::World& world, std::span<const geometry::Pose> poses,
+                           std::span<const std::optional<geometry::Pose>> goals) {
   see(world, poses);
-  communication_.send(world.time, poses, cameras_);
+  communication_.send(world.time, poses, cameras_, goals);
   heard_ = communication_.deliver(world.time, cameras_);
   known_ = knownWorld(unionOf(cameras_), world, weighted_);
+  own_.resize(cameras_.size());
+  for (std::size_t j = 0; j < cameras_.size(); ++j) {
+    own_[j].world = knownWorld(cameras_[j], world, weighted_);
+    const auto heard = cameras_[j].teammates();
+    own_[j].teammates.assign(heard.begin(), heard.end());
+    own_[j].teammates.resize(cameras_.size());
+  }
 }
 
 }  // namespace camcov::sim

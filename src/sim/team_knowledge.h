@@ -22,13 +22,17 @@ class TeamKnowledge {
  public:
   // `seed`: the run's, from which the message losses are drawn.
   TeamKnowledge(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed);
-  // The instant of `world`, the true one, with the cameras at `poses`: each camera sees, then
-  // whoever is due sends, then every message due is heard; known() follows.
-  void update(const kinematics::World& world, std::span<const geometry::Pose> poses);
+  // The instant of `world`, the true one, with the cameras at `poses` heading for `goals` (as
+  // the method last gave them; empty: none): each camera sees, then whoever is due sends, then
+  // every message due is heard; known() and own() follow.
+  void update(const kinematics::World& world, std::span<const geometry::Pose> poses,
+              std::span<const std::optional<geometry::Pose>> goals = {});
   // What each camera knows, in camera order.
   std::span<const Knowledge> cameras() const { return cameras_; }
   // What the team knows (unionOf of cameras()), as the world the centralized methods read.
   const kinematics::World& known() const { return known_; }
+  // What each camera knows on its own, as the world it reads and its teammates as last heard.
+  std::span<const control::OwnKnowledge> own() const { return own_; }
   const MessageCounts& messages() const { return communication_.counts(); }
   // Who heard whom at the last update.
   std::span<const Hearing> heard() const { return heard_; }
@@ -41,6 +45,7 @@ class TeamKnowledge {
   kinematics::World before_;  // the true world one step before, for the objects' velocities
   bool weighted_ = false;
   kinematics::World known_;
+  std::vector<control::OwnKnowledge> own_;
   std::vector<Hearing> heard_;
 };
 

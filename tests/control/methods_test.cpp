@@ -28,7 +28,7 @@ TEST(Methods, AnUnknownNameIsAnInputErrorListingTheKnownOnes) {
     requireMethod("nope");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "unknown method 'nope' (known: paper, local, camcov, learned)");
+    EXPECT_STREQ(e.what(), "unknown method 'nope' (known: paper, local, camcov, camcov-dec, learned)");
   }
 }
 

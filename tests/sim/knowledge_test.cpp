@@ -160,6 +160,58 @@ params::CommsParams comms(double range, double latency = 0.0, double loss = 0.0)
   return p;
 }
 
+TEST(Communication, AMessageTellsWhereItsSenderWasAndWhereItWasHeading) {
+  Pair pair(5.0);
+  Communication c(comms(10.0, 0.2), 0.1, 2, 1);
+  const std::vector<std::optional<geometry::Pose>> goals{geometry::Pose{3, 4, 1}, std::nullopt};
+  c.send(0.0, pair.poses, pair.knowledge, goals);
+  EXPECT_TRUE(c.deliver(0.1, pair.knowledge).empty());  // on its way
+  EXPECT_TRUE(pair.knowledge[1].teammates().empty());
+  pair.poses[0] = {1, 0, 0};
+  c.send(0.1, pair.poses, pair.knowledge, goals);  // not heard before t = 0.3
+  EXPECT_EQ(c.deliver(0.2, pair.knowledge).size(), 2U);
+  // Camera 1 heard camera 0 as it was at t = 0, heading for its goal; camera 0 heard camera 1,
+  // which had none. Neither knows of itself.
+  const auto heard = pair.knowledge[1].teammates();
+  ASSERT_EQ(heard.size(), 1U);
+  ASSERT_TRUE(heard[0].has_value());
+  EXPECT_EQ(heard[0]->sentAt, 0.0);
+  EXPECT_EQ(heard[0]->pose, (geometry::Pose{0, 0, 0}));
+  EXPECT_EQ(heard[0]->goal, (geometry::Pose{3, 4, 1}));
+  const auto back = pair.knowledge[0].teammates();
+  ASSERT_EQ(back.size(), 2U);
+  EXPECT_FALSE(back[0].has_value());
+  EXPECT_EQ(back[1]->pose, (geometry::Pose{5, 0, 0}));
+  EXPECT_FALSE(back[1]->goal.has_value());
+  // The later message replaces the earlier; an older one heard late would not.
+  c.deliver(0.3, pair.knowledge);
+  EXPECT_EQ(pair.knowledge[1].teammates()[0]->pose, (geometry::Pose{1, 0, 0}));
+  pair.knowledge[1].hearTeammate(0, {0.05, {9, 9, 0}, std::nullopt});
+  EXPECT_EQ(pair.knowledge[1].teammates()[0]->sentAt, 0.1);
+}
+
+TEST(Communication, APoseIsPassedOnToCamerasOutOfItsSendersRange) {
+  // Cameras at 0, 8 and 16 m with a range of 10 m: 0 and 2 hear only 1, which passes on what
+  // it heard of each, so both learn where the other was one step before.
+  std::vector<geometry::Pose> poses{{0, 0, 0}, {8, 0, 0}, {16, 0, 0}};
+  std::vector<Knowledge> knowledge(3);
+  Communication c(comms(10.0), 0.1, 3, 1);
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+  EXPECT_EQ(knowledge[0].teammates().size(), 2U);  // camera 1 only: nothing passed on yet
+  poses[0] = {0, 1, 0};
+  c.send(0.1, poses, knowledge);
+  c.deliver(0.1, knowledge);
+  ASSERT_EQ(knowledge[0].teammates().size(), 3U);
+  ASSERT_TRUE(knowledge[0].teammates()[2].has_value());
+  EXPECT_EQ(knowledge[0].teammates()[2]->sentAt, 0.0);
+  EXPECT_EQ(knowledge[0].teammates()[2]->pose, (geometry::Pose{16, 0, 0}));
+  EXPECT_EQ(knowledge[2].teammates()[0]->pose, (geometry::Pose{0, 0, 0}));
+  EXPECT_EQ(knowledge[1].teammates()[0]->pose, (geometry::Pose{0, 1, 0}));  // heard directly
+  // Nobody is told of itself.
+  EXPECT_FALSE(knowledge[0].teammates()[0].has_value());
+}
+
 TEST(Communication, AReceiverOutOfRangeHearsNothing) {
   Pair far(10.0);
   Communication c(comms(9.99), 0.1, 2, 1);
