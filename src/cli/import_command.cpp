@@ -120,12 +120,14 @@ void addSceneOptions(CLI::App& cmd, ImportOptions& o) {
                  "instead of --from/--to: the window of this many seconds with the most people "
                  "present on average")
       ->check(within(0.0, 1e6, false));
-  cmd.add_option("--cameras", o.scene.cameras, "cameras, spread along the boundary facing in")
-      ->check(within(1, static_cast<int>(scene::kMaxCameras)))
-      ->capture_default_str();
+  auto* spread =
+      cmd.add_option("--cameras", o.scene.cameras, "cameras, spread along the boundary facing in")
+          ->check(within(1, static_cast<int>(scene::kMaxCameras)))
+          ->capture_default_str();
   cmd.add_option("--cameras-from", o.camerasFrom,
                  "camera poses instead: JSON list [{\"x\":..,\"y\":..,\"yaw_deg\":..}]")
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingFile)
+      ->excludes(spread);
   cmd.add_option("--camera-speed", o.scene.cameraSpeed, "v_max of every camera, m/s")
       ->check(within(0.0, 1e3, false))
       ->capture_default_str();

@@ -198,7 +198,8 @@ Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const 
   double first = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const auto f = splitWhitespace(lines[i]);
-    if (f.empty()) continue;
+    // Blank lines, and comments as a header naming the columns is often written.
+    if (f.empty() || f.front().front() == '#') continue;
     const Where where{file, i + 1};
     if (f.size() != 8) {
       throw InputError(fmt::format("{}{} numbers, a row has 8 (frame id x z y vx vz vy)",

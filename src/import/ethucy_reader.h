@@ -1,6 +1,7 @@
 #pragma once
 // The ETH and UCY pedestrian recordings (../shared/tracks/README.md): a folder with obsmat.txt
-// (rows "frame id x z y vx vz vy", metres, whitespace-separated) and, when present, map.xml
+// (rows "frame id x z y vx vz vy", metres, whitespace-separated; lines starting with '#' are
+// comments) and, when present, map.xml
 // (<Line x1 y1 x2 y2 .../> walls, <Circle x y radius/> pillars). Time is frame / fps, from the
 // first frame of the file. Without an fps, it follows from the file itself: each row holds a
 // person's velocity beside the position, so over a step of Δframe frames |Δp| / |v| is the

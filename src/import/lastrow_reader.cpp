@@ -41,7 +41,7 @@ Recording parseLastRow(std::string text, const std::string& file, const Pitch& p
                                  printable(lines.front(), kQuotedField)));
   }
   const auto player = column("player"), frame = column("frame"), x = column("x"), y = column("y"),
-             team = column("team"), colour = column("bgcolor");
+             colour = column("bgcolor");
   Recording recording;
   recording.source = file;
   recording.onPitch = true;
@@ -68,7 +68,8 @@ Recording parseLastRow(std::string text, const std::string& file, const Pitch& p
             100.0,
         parseNumber(f[static_cast<std::size_t>(y)], where, "column y", kPosition) * pitch.width /
             100.0};
-    const bool ball = team < 0 || f[static_cast<std::size_t>(team)].empty();
+    // The ball is player 0 (the data's own convention); a player without a team is a player.
+    const bool ball = *parseCount(id) == 0;
     std::string hex;
     if (!ball && colour >= 0) hex = colours.hex(f[static_cast<std::size_t>(colour)]);
     tracks.add(ball ? "ball" : id, t, p, where, ball ? "ball" : "person", hex);

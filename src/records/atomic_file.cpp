@@ -28,6 +28,9 @@ constexpr std::string_view kTemporaryMarker = ".tmp-";
 }  // namespace
 
 void prepareOutputFile(const std::filesystem::path& file) {
+  // "out.json/" names a folder: refused before any folder of its path is made.
+  if (!file.has_filename())
+    throw InputError(file.string() + ": ends with '/', a folder; name a file to write");
   struct stat s {};
   if (::stat(file.c_str(), &s) == 0) {
     if (S_ISDIR(s.st_mode)) throw InputError(file.string() + ": is a folder; name a file to write");

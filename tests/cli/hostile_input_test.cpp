@@ -143,6 +143,15 @@ TEST(HostileInput, OutputsNeverReplaceFifosDevicesFoldersOrTheCommandsInput) {
   const CommandResult folder = runCamcov("generate -o " + dir.path().string());
   EXPECT_EQ(folder.exitCode, 2) << folder.err;
   EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
+  // A file's name ending in '/' names a folder that does not exist yet: refused, none made.
+  for (const std::string& line :
+       {"import lastrow " + csv + " -o " + (dir / "new" / "scene.json/").string(),
+        "generate -o " + (dir / "new" / "large.json/").string()}) {
+    const CommandResult slash = runCamcov(line);
+    EXPECT_EQ(slash.exitCode, 2) << line << "\n" << slash.err;
+    EXPECT_NE(slash.err.find("ends with '/', a folder"), std::string::npos) << slash.err;
+    EXPECT_FALSE(fs::exists(dir / "new")) << line;
+  }
   // The input named again as the output, also by another spelling of its path.
   for (const std::string& output : {csv, (dir / "." / "tracks.csv").string()}) {
     const CommandResult self = runCamcov("import lastrow " + csv + " -o " + output);

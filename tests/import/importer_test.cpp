@@ -299,6 +299,36 @@ TEST(ImportEthUcy, WithoutFpsAndWithoutWalkersItAsksForTheRateAndWritesNothing) 
   EXPECT_FALSE(fs::exists(dir / "wild.json"));
 }
 
+// The ball is player 0; a player whose team is empty is a player, not a second ball.
+TEST(ImportLastRow, APlayerWithoutATeamIsAPlayerNotTheBall) {
+  const ScratchDir dir;
+  std::ofstream(dir / "t.csv") << "player,frame,x,y,team,bgcolor\n0,0,50,50,,\n5,0,10,10,,\n"
+                                  "5,1,11,10,,\n0,1,51,50,,\n";
+  const nlohmann::json scene =
+      importScene("lastrow " + (dir / "t.csv").string() + " --ball target", dir / "t.json");
+  ASSERT_EQ(scene["targets"].size(), 2u) << "player 5 and the ball";
+  const int fronts = static_cast<int>(scene["targets"][0].contains("frontWeight")) +
+                     static_cast<int>(scene["targets"][1].contains("frontWeight"));
+  EXPECT_EQ(fronts, 1) << "the player has a front, the ball none";
+}
+
+// A header line, as some copies of obsmat.txt carry, is a comment; --cameras and
+// --cameras-from together are refused (one would be ignored).
+TEST(ImportEthUcy, ACommentLineIsSkippedAndTwoCameraOptionsAreRefused) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "people");
+  std::ofstream(dir / "people" / "obsmat.txt")
+      << "# frame id x z y vx vz vy\n1 1 0 0 1 0 0 0\n11 1 0 0 1.1 0 0 0\n";
+  importScene("ethucy " + (dir / "people").string() + " --fps 25", dir / "p.json");
+  std::ofstream(dir / "poses.json") << R"([{"x": 0, "y": 0, "yaw_deg": 0}])";
+  const auto r = runCamcov("import ethucy " + (dir / "people").string() +
+                           " --fps 25 --cameras 3 --cameras-from " + (dir / "poses.json").string() +
+                           " -o " + (dir / "q.json").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--cameras excludes --cameras-from"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "q.json"));
+}
+
 TEST(ImportLastRow, APlayerBeyondTheRunOffGrowsTheBoundaryAndSaysSo) {
   // Player 3 stands at 150 % of the pitch's length (157.5 m) and -10 % of its width (-6.8 m):
   // the boundary is the pitch with its run-off (5 m for Last Row) grown to hold them with their
