@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 
@@ -267,6 +269,70 @@ std::string differencePlot(const SettingsData& data, const Verdicts& verdicts) {
       chart.svg());
 }
 
+// The settings in the order of the one parameter they differ in: by its value where every
+// value is a number ("inf" last, as a communication range without limit), else as given.
+std::vector<std::size_t> byParameterValue(const SettingsData& data) {
+  std::vector<std::size_t> order(data.settings.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  const std::vector<std::string>& values = data.parameters.front().values;
+  std::vector<double> numbers;
+  for (const std::string& v : values) {
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size() || std::isnan(x)) return order;
+    numbers.push_back(x);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return numbers[a] < numbers[b]; });
+  return order;
+}
+
+// A study of one parameter (a communication range, a sample count): each method's mean
+// coverage over the scenes against its value, one line per method, so that a method that
+// needs the parameter and one that does not (a centralized reference) read side by side.
+std::string trendPlot(const SettingsData& data, const Verdicts& verdicts) {
+  if (data.parameters.size() != 1 || data.settings.size() < 2) return {};
+  const DifferingParameter& parameter = data.parameters.front();
+  const std::vector<std::size_t> order = byParameterValue(data);
+  ChartSpec spec;
+  spec.width = std::clamp(260.0 + 90.0 * static_cast<double>(order.size()), 520.0, 1000.0);
+  spec.height = 320.0;
+  spec.ariaLabel = "mean coverage over the scenes against " + parameter.key + ", per method";
+  spec.x.label = parameter.key;
+  for (const std::size_t i : order)
+    spec.categories.push_back(parameter.values[i]);
+  double lo = 1.0, hi = 0.0;
+  std::vector<std::vector<double>> xs(data.methods.size()), ys(data.methods.size());
+  for (std::size_t m = 0; m < data.methods.size(); ++m) {
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const Overall o = overall(data, verdicts, order[k], data.methods[m]);
+      if (o.scenes == 0) continue;
+      xs[m].push_back(static_cast<double>(k));
+      ys[m].push_back(o.meanCoverage);
+      lo = std::min(lo, o.meanCoverage);
+      hi = std::max(hi, o.meanCoverage);
+    }
+  }
+  if (hi < lo) return {};
+  spec.y = {"mean average coverage", lo, hi, 6};
+  for (const auto& method : data.methods) {
+    spec.legend.push_back({std::string(methodStyle(method).label),
+                           std::string(methodStyle(method).color), Swatch::Line});
+  }
+  Chart chart(spec);
+  for (std::size_t m = 0; m < data.methods.size(); ++m)
+    chart.addLine(xs[m], ys[m], methodStyle(data.methods[m]).color, 2.0);
+  std::string orderText;
+  for (const std::size_t i : order)
+    orderText += (orderText.empty() ? "" : ",") + parameter.values[i];
+  return fmt::format(
+      "<figure class=\"panel\" data-figure=\"settings-trend\" data-order=\"{}\">\n{}"
+      "<figcaption>Each line is one method: its mean over the scenes of the mean average "
+      "coverage (eq. 4) in each setting, by the value of {}.</figcaption>\n</figure>\n",
+      escapeXml(orderText), chart.svg(), escapeXml(parameter.key));
+}
+
 std::string overallSection(const SettingsData& data, const Verdicts& verdicts) {
   std::string head = "<th scope=\"col\">Method</th>";
   for (std::size_t i = 0; i < data.settings.size(); ++i)
@@ -300,7 +366,7 @@ std::string overallSection(const SettingsData& data, const Verdicts& verdicts) {
       "setting wins / ties / loses against the reference setting.</p>\n<div "
       "class=\"table-wrap\"><table class=\"overall\">\n<thead><tr>{}</tr></thead>\n<tbody>\n{}"
       "</tbody></table></div>\n{}</section>\n",
-      head, rows, differencePlot(data, verdicts));
+      head, rows, trendPlot(data, verdicts) + differencePlot(data, verdicts));
 }
 
 std::string sceneCell(const SettingsData& data, const Verdicts& verdicts, std::size_t i,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "report_fixture.h"
 #include "reports/build_context.h"
@@ -168,6 +169,35 @@ TEST(SettingsReport, MarksWhatTheExactTestFindsSignificant) {
   EXPECT_NE(lowTag.find("data-wins=\"0\" data-ties=\"1\" data-losses=\"1\""), std::string::npos)
       << lowTag;
   EXPECT_NE(html.find("<b>high</b> has the highest mean coverage"), std::string::npos);
+}
+
+// A study of one parameter draws each method's mean coverage against the parameter's value,
+// in numeric order ("inf" last); a study of two parameters, or none, has no such figure.
+TEST(SettingsReport, OneParameterStudiedDrawsMeanCoverageAgainstItsValue) {
+  reports::SettingsData data = handMadeSettings();  // base, high, low
+  data.parameters = {{"comms.range", "comms.range", {"10", "inf", "5"}}};
+  const std::string html = reports::buildSettingsReportHtml(data, reports::BuildContext{});
+  const std::string overall = section(html, "overall");
+  const std::string figure =
+      tagWith(overall, "<figure class=\"panel\" data-figure=\"settings-trend\"");
+  EXPECT_EQ(attribute(figure, "data-order"), "5,10,inf");
+  // One line, paper's: low (0.165), base (0.3), high (0.55) from left to right, rising (SVG's y
+  // runs down).
+  const auto at = overall.find("<polyline", overall.find("data-figure=\"settings-trend\""));
+  ASSERT_NE(at, std::string::npos);
+  const std::string line = overall.substr(at, overall.find("/>", at) - at);
+  std::stringstream points(attribute(line, "points"));
+  std::vector<double> ys;
+  for (std::string pair; points >> pair;)
+    ys.push_back(std::stod(pair.substr(pair.find(',') + 1)));
+  ASSERT_EQ(ys.size(), 3u) << line;
+  EXPECT_GT(ys[0], ys[1]);
+  EXPECT_GT(ys[1], ys[2]);
+  EXPECT_NEAR((ys[0] - ys[1]) / (ys[1] - ys[2]), (0.3 - 0.165) / (0.55 - 0.3), 1e-3);
+
+  data.parameters.push_back({"global.K", "K", {"50", "100", "200"}});
+  EXPECT_EQ(reports::buildSettingsReportHtml(data, reports::BuildContext{}).find("settings-trend"),
+            std::string::npos);
 }
 
 TEST(SettingsReport, TheReferenceSettingCanBeChosen) {
