@@ -12,7 +12,9 @@ class ParameterOptions {
  public:
   void addTo(CLI::App& command);
   // Defaults, then the file, then each --set in order; validated. Throws InputError.
-  params::Parameters resolve() const;
+  params::Parameters resolve() const { return resolve(assignments_); }
+  // The same with `assignments` for the --set (one setting of a study, params/sweep.h).
+  params::Parameters resolve(const std::vector<std::string>& assignments) const;
   // The overrides as given, for the results metadata.
   const std::vector<std::string>& assignments() const { return assignments_; }
 

@@ -274,5 +274,30 @@ TEST(CliBench, OmplBenchmarkStatisticsReadsOurLogs) {
   EXPECT_EQ(count.out, "12 252 3\n") << count.err;
 }
 
+// A --set with a list of values makes a study: one batch per setting in OUT/<key=value>, and
+// the settings side by side in OUT/report.html with coverage against the value; a list that
+// cannot be meant writes nothing.
+TEST(CliBench, AListOfValuesRunsOneBatchPerSettingAndReportsThemSideBySide) {
+  const ScratchDir dir;
+  const fs::path out = dir / "study";
+  const auto r = runCamcov(benchArgs(out, 1) + " --methods local --set global.T1=1,2,5");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const std::string setting : {"global.T1=1", "global.T1=2", "global.T1=5"}) {
+    ASSERT_TRUE(fs::exists(out / setting / "summary.json")) << setting;
+    const auto batch = nlohmann::json::parse(readFile(out / setting / "batch.json"));
+    EXPECT_NE(batch.dump().find(setting.substr(setting.find('=') + 1)), std::string::npos);
+  }
+  const std::string report = readFile(out / "report.html");
+  EXPECT_NE(report.find("data-figure=\"settings-trend\" data-order=\"1,2,5\""), std::string::npos);
+  // Run again: every setting resumes with nothing left.
+  const auto again = runCamcov(benchArgs(out, 1) + " --methods local --set global.T1=1,2,5");
+  EXPECT_EQ(again.exitCode, 0) << again.err;
+  for (const std::string bad : {"global.T1=1,,5", "global.T1=1,x"}) {
+    const auto refused = runCamcov(benchArgs(dir / "bad", 1) + " --set " + bad);
+    EXPECT_EQ(refused.exitCode, 2) << bad << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "bad")) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace camcov::testing
