@@ -28,7 +28,8 @@ TEST(Methods, AnUnknownNameIsAnInputErrorListingTheKnownOnes) {
     requireMethod("nope");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "unknown method 'nope' (known: paper, local, camcov, camcov-dec, learned)");
+    EXPECT_STREQ(e.what(),
+                 "unknown method 'nope' (known: paper, local, camcov, camcov-dec, learned)");
   }
 }
 
