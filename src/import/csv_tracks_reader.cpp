@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 
 #include "import/colour_names.h"
 #include "import/text_fields.h"
@@ -40,12 +41,11 @@ struct ColumnIndex {
 
 ColumnIndex findColumns(const std::vector<std::string>& header, const std::string& headerLine,
                         const CsvTrackColumns& c, const std::string& file) {
-  for (std::size_t i = 0; i < header.size(); ++i) {
-    if (std::find(header.begin() + static_cast<std::ptrdiff_t>(i) + 1, header.end(), header[i]) !=
-            header.end() &&
-        !header[i].empty()) {
-      throw InputError(fmt::format("{}:1: column \"{}\" is named twice", file,
-                                   printable(header[i], kQuotedField)));
+  std::set<std::string> named;
+  for (const std::string& name : header) {
+    if (!name.empty() && !named.insert(name).second) {
+      throw InputError(
+          fmt::format("{}:1: column \"{}\" is named twice", file, printable(name, kQuotedField)));
     }
   }
   const auto find = [&](const std::string& name) -> std::optional<std::size_t> {

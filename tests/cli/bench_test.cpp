@@ -282,10 +282,12 @@ TEST(CliBench, AListOfValuesRunsOneBatchPerSettingAndReportsThemSideBySide) {
   const fs::path out = dir / "study";
   const auto r = runCamcov(benchArgs(out, 1) + " --methods local --set global.T1=1,2,5");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const std::string setting : {"global.T1=1", "global.T1=2", "global.T1=5"}) {
+  for (const auto& [setting, t1] : {std::pair{"global.T1=1", 1.0}, std::pair{"global.T1=2", 2.0},
+                                    std::pair{"global.T1=5", 5.0}}) {
     ASSERT_TRUE(fs::exists(out / setting / "summary.json")) << setting;
     const auto batch = nlohmann::json::parse(readFile(out / setting / "batch.json"));
-    EXPECT_NE(batch.dump().find(setting.substr(setting.find('=') + 1)), std::string::npos);
+    EXPECT_EQ(batch["parameters"]["global"]["T1"].get<double>(), t1) << setting;
+    EXPECT_EQ(batch["parameters"]["planner"]["T2"].get<double>(), 0.05) << "the single --set too";
   }
   const std::string report = readFile(out / "report.html");
   EXPECT_NE(report.find("data-figure=\"settings-trend\" data-order=\"1,2,5\""), std::string::npos);
