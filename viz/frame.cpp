@@ -65,7 +65,8 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.caption.title = sceneName_;
   out.caption.subtitle.clear();
   out.caption.time = time;
-  out.caption.coverage = reward::coverage(out.segments, reward::targetPerimeter(out.world));
+  const double perimeter = reward::targetPerimeter(out.world);
+  out.caption.coverage = reward::coverage(out.segments, perimeter);
   out.caption.weightedCoverage.reset();
   if (weighted_) {
     out.caption.weightedCoverage = reward::weightedCoverage(out.segments, out.world);
@@ -74,8 +75,8 @@ void FrameBuilder::build(double time, std::span<const geometry::Pose> cameras, F
   out.unresolved.clear();
   out.caption.resolutionCoverage.reset();
   if (const auto& asked = out.world.resolution) {
-    out.caption.resolutionCoverage = reward::resolutionCoverage(
-        out.segments, cameras, lenses_, *asked, reward::targetPerimeter(out.world));
+    out.caption.resolutionCoverage =
+        reward::resolutionCoverage(out.segments, cameras, lenses_, *asked, perimeter);
     for (const visibility::Segment& s : out.segments)
       reward::addUnresolvedPieces(s, cameras, lenses_, asked->minDensity, out.unresolved);
   }

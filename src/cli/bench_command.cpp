@@ -15,6 +15,7 @@
 #include "cli/parameter_options.h"
 #include "cli/terminal_observer.h"
 #include "params/sweep.h"
+#include "records/batch_folder.h"
 #include "reports/settings_report.h"
 #include "scene/scene.h"
 #include "util/input_error.h"
@@ -29,7 +30,7 @@ int runStudy(const bench::BenchRequest& base, const ParameterOptions& parameters
   namespace fs = std::filesystem;
   if (!base.shard.empty())
     throw InputError("--shard with a list of values: shard each setting's folder instead");
-  if (fs::exists(fs::path(base.out) / "batch.json")) {
+  if (records::BatchFolder::holdsBatch(base.out)) {
     throw InputError(base.out +
                      ": holds one batch; a study writes a folder of settings, one "
                      "batch each: give another --out");
