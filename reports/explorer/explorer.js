@@ -112,7 +112,15 @@
         const at = (t) => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
         segments.push({target, edge, ta, tb, a: at(ta), b: at(tb), visibleBy, reasons, weight});
       }
-      steps.push({targets: present[0], obstacles: present[1], cameras, segments});
+      // A scene with a resolution: the pieces of seen boundary no camera resolves.
+      const unresolved = [];
+      for (let i = 0, n = run.resolved ? r.u() : 0; i < n; ++i) {
+        const target = r.u(), edge = r.u(), ta = r.u() / U.alongEdge, tb = r.u() / U.alongEdge;
+        const ring = targetRing.get(target), a = ring[edge], b = ring[(edge + 1) % ring.length];
+        const at = (t) => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+        unresolved.push({target, edge, a: at(ta), b: at(tb)});
+      }
+      steps.push({targets: present[0], obstacles: present[1], cameras, segments, unresolved});
     }
     return steps;
   }
@@ -136,6 +144,9 @@
   };
   const pts = (ring) => ring.map(([x, y]) => `${x.toFixed(3)},${(-y).toFixed(3)}`).join(" ");
   const deg = (rad) => (rad * 180 / Math.PI).toFixed(1);
+  // A target edge's stroke: as wide as important, as frames draw them (viz/palette.h
+  // importanceWidthFactor); 5 px in a scene without weights.
+  const edgeWidth = (weight) => weight == null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * weight);
   const length = (s) => Math.hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
   const objectName = (code) => code === 0 ? "none"
       : code % 2 === 1 ? `target ${(code - 1) / 2}` : `obstacle ${(code - 2) / 2}`;
@@ -186,6 +197,11 @@
       html("span", {}, " · weighted coverage ", numbers);
       numbers.appendChild(weighted);
     }
+    const resolved = run.resolved ? html("b", {class: "resolution-coverage"}, "", null) : null;
+    if (resolved) {
+      html("span", {}, " · resolved coverage ", numbers);
+      numbers.appendChild(resolved);
+    }
     html("span", {}, " · utilization ", numbers);
     const utilization = html("b", {class: "utilization"}, "", numbers);
     html("span", {}, " · reward ", numbers);
@@ -197,8 +213,8 @@
                              "aria-label": `${data.scene.name}, ${run.label}`}, section);
     const info = html("div", {class: "info", "aria-live": "polite"}, null, section);
     html("p", {class: "hint"}, "Click an edge or a camera for its details.", info);
-    return {run, section, coverage, weighted, utilization, reward, playground, world, info,
-            selection: null};
+    return {run, section, coverage, weighted, resolved, utilization, reward, playground, world,
+            info, selection: null};
   });
 
   // The legend, from the palette the frames use (viz/palette.h).
@@ -220,6 +236,12 @@
     const item = html("span", {class: "item importance"}, null, legend);
     html("span", {class: "swatch"}, null, item).style.background = P.seenBy[1];
     item.appendChild(document.createTextNode(P.importance));
+  }
+  // A scene with a resolution draws seen boundary no camera resolves in its own colour.
+  if (runs.some((run) => run.resolved)) {
+    const item = html("span", {class: "item unresolved"}, null, legend);
+    html("span", {class: "swatch"}, null, item).style.background = P.unresolved;
+    item.appendChild(document.createTextNode(P.unresolvedText));
   }
   // The timeline's marks, as the report's plots mark the same events (control/event_kind.h).
   for (const [name, mark] of Object.entries(data.marks)) {
@@ -292,8 +314,7 @@
         class: "segment", "data-segment": String(i), "data-target": String(s.target),
         "data-edge": String(s.edge), x1: a[0], y1: -a[1], x2: b[0], y2: -b[1],
         stroke: P.seenBy[Math.min(s.visibleBy.length, 3)],
-        // As wide as important, as frames draw them (viz/palette.h importanceWidthFactor).
-        "stroke-width": s.weight === null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * s.weight),
+        "stroke-width": edgeWidth(s.weight),
         "stroke-linecap": "round", "vector-effect": "non-scaling-stroke"}, svg);
       if (panel.selection && panel.selection.segment === i) line.classList.add("selected");
       line.addEventListener("click", (e) => {
@@ -301,6 +322,16 @@
         select(panel, {segment: i, target: s.target, edge: s.edge, along: (s.ta + s.tb) / 2});
       });
     });
+    // Over the seen: what no camera resolves, as wide, letting clicks through to the edge.
+    for (const u of step.unresolved) {
+      const e = targetShape.get(u.target), a = e ? e.at(u.a) : u.a, b = e ? e.at(u.b) : u.b;
+      const weight = step.segments.find((s) => s.target === u.target && s.edge === u.edge)?.weight;
+      el("line", {class: "unresolved", "data-target": String(u.target), x1: a[0], y1: -a[1],
+                  x2: b[0], y2: -b[1], stroke: P.unresolved,
+                  "stroke-width": edgeWidth(weight),
+                  "stroke-linecap": "round", "pointer-events": "none",
+                  "vector-effect": "non-scaling-stroke"}, svg);
+    }
     step.cameras.forEach((c, j) => {
       if (c.plan.length > 1) {
         el("polyline", {points: pts(c.plan), fill: "none", stroke: P.plan, "stroke-width": 2,
@@ -472,6 +503,7 @@
       const series = panel.run.series, at = Math.min(k, series.time.length - 1);
       panel.coverage.textContent = series.coverage[at].toFixed(4);
       if (panel.weighted) panel.weighted.textContent = series.weightedCoverage[at].toFixed(4);
+      if (panel.resolved) panel.resolved.textContent = series.resolutionCoverage[at].toFixed(4);
       if (panel.playground) {
         const step = panel.run.decoded[Math.min(k, panel.run.decoded.length - 1)];
         const poses = step.cameras.map((c) => ({x: c.x, y: c.y, yaw_deg: c.yaw * 180 / Math.PI}));

@@ -49,13 +49,15 @@ class StepPacker {
         targetCount_(scene.targets.size()),
         objects_(scene.targets.size() + scene.obstacles.size()),
         poses_(scene.cameras.size(), {0, 0, 0}),
-        goals_(scene.cameras.size()) {}
+        goals_(scene.cameras.size()),
+        resolved_(scene.resolution.has_value()) {}
 
   void put(const viz::Frame& frame, PackedStream& out) {
     putObjects(frame.world, out);
     for (std::size_t j = 0; j < frame.cameras.size(); ++j)
       putCamera(frame, j, out);
     putSegments(frame, out);
+    if (resolved_) putPieces(frame.world, frame.unresolved, out);
   }
 
  private:
@@ -162,20 +164,35 @@ class StepPacker {
     out.putUnsigned(static_cast<std::uint64_t>(std::llround(own.utilization * kTermUnits)));
   }
 
+  // A piece of a target's edge: the target's scene index, the edge, and where the piece starts
+  // and ends along it.
+  static void putPiece(const kinematics::World& world, const visibility::Segment& s,
+                       PackedStream& out) {
+    const geometry::Ring& ring = world.targets[s.target];
+    const Vec2 a = ring[s.edge], b = ring[(s.edge + 1) % ring.size()];
+    const double edge = geometry::distance(a, b);
+    const auto along = [&](Vec2 point) {
+      return static_cast<std::uint64_t>(
+          std::llround(std::clamp(geometry::distance(a, point) / edge, 0.0, 1.0) * kAlongEdge));
+    };
+    out.putUnsigned(kinematics::targetId(world, s.target));
+    out.putUnsigned(s.edge);
+    out.putUnsigned(along(s.a));
+    out.putUnsigned(along(s.b));
+  }
+
+  // The seen boundary no camera resolves (viz::Frame::unresolved).
+  static void putPieces(const kinematics::World& world, std::span<const visibility::Segment> pieces,
+                        PackedStream& out) {
+    out.putUnsigned(pieces.size());
+    for (const visibility::Segment& s : pieces)
+      putPiece(world, s, out);
+  }
+
   void putSegments(const viz::Frame& frame, PackedStream& out) {
     out.putUnsigned(frame.segments.size());
     for (const visibility::Segment& s : frame.segments) {
-      const geometry::Ring& ring = frame.world.targets[s.target];
-      const Vec2 a = ring[s.edge], b = ring[(s.edge + 1) % ring.size()];
-      const double edge = geometry::distance(a, b);
-      const auto along = [&](Vec2 point) {
-        return static_cast<std::uint64_t>(
-            std::llround(std::clamp(geometry::distance(a, point) / edge, 0.0, 1.0) * kAlongEdge));
-      };
-      out.putUnsigned(kinematics::targetId(frame.world, s.target));
-      out.putUnsigned(s.edge);
-      out.putUnsigned(along(s.a));
-      out.putUnsigned(along(s.b));
+      putPiece(frame.world, s, out);
       out.putUnsigned(s.visibleBy);
       // A weighted scene's (run.weighted): the edge's importance, in thousandths.
       if (!frame.world.targetEdgeWeights.empty()) {
@@ -203,6 +220,7 @@ class StepPacker {
   std::vector<std::vector<std::int64_t>> objects_;  // by scene index: vertices the last time
   std::vector<std::array<std::int64_t, 3>> poses_;
   std::vector<std::optional<std::array<std::int64_t, 3>>> goals_;
+  bool resolved_ = false;  // the scene asks a resolution: each step ends with the unresolved
 };
 
 // Every mark an event may get: its glyph and its legend's words.
@@ -263,6 +281,8 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
                            {"reward", nlohmann::json::array()}};
   const bool weighted = scene.isWeighted();
   if (weighted) series["weightedCoverage"] = nlohmann::json::array();
+  const bool resolved = scene.resolution.has_value();
+  if (resolved) series["resolutionCoverage"] = nlohmann::json::array();
   // Under limited knowledge: who heard whom at each step, [from, to] pairs.
   if (run.summary.messages) series["heard"] = nlohmann::json::array();
   for (const auto& step : run.steps) {
@@ -275,6 +295,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
     series["time"].push_back(step.time);
     series["coverage"].push_back(step.terms.coverage);
     if (weighted) series["weightedCoverage"].push_back(step.terms.weightedCoverage);
+    if (resolved) series["resolutionCoverage"].push_back(step.resolutionCoverage);
     series["utilization"].push_back(step.terms.utilization);
     series["reward"].push_back(step.terms.reward);
   }
@@ -309,6 +330,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
           {"cameras", cameras},
           {"viewAlpha", viz::viewAlphaFor(scene.cameras.size())},
           {"weighted", weighted},
+          {"resolved", resolved},
           {"targets", scene.targets.size()},
           {"obstacles", scene.obstacles.size()},
           {"events", events},
@@ -349,6 +371,8 @@ nlohmann::json paletteJson() {
           {"widthAtZero", viz::importanceWidthFactor(0.0)},
           {"widthPerWeight", viz::importanceWidthFactor(1.0) - viz::importanceWidthFactor(0.0)},
           {"importance", viz::legendText(viz::Legend::Importance)},
+          {"unresolved", viz::cssColour(viz::kUnresolved)},
+          {"unresolvedText", viz::legendText(viz::Legend::Unresolved)},
           {"unseen", unseenPhrases()},
           {"camera", viz::cssColour(viz::kCamera)},
           {"plan", viz::cssColour(viz::kPlan)},

@@ -9,7 +9,8 @@
 // The document (JSON, format "camcov-explorer/1"): the scene's name, boundary and the loops
 // its objects travel (with their speeds), the
 // palette and legend (viz/palette.h), and per run its method, seed, colour, the recorded
-// series (time, coverage, utilization, reward), the cameras' limits, the events, and the
+// series (time, coverage, utilization, reward; weighted and resolution coverage where the
+// scene asks them), the cameras' limits, the events, and the
 // steps as one packed stream (packed_stream.h, base64). Per step, in order:
 //   objects    targets, then obstacles: how many are present (recorded tracks come and go),
 //              then each one's scene index, vertex count n and n (x, y) in mm — differences
@@ -25,6 +26,8 @@
 //              along the edge (fractions × 10^6), visibleBy, and for each camera not in it the
 //              reason: kind + 8 · (blocker kind + 4 · blocker's scene index)
 //              (visibility::UnseenKind, ObjectRef)
+//   unresolved a scene with a resolution only: count, then per piece of seen boundary no
+//              camera resolves (viz::Frame::unresolved) target, edge, start and end as above
 // Millimetres keep the drawing and the numbers exact to what a user can see; views, which are
 // only filled, are kept to centimetres. A 30 s run of dynamic9 packs into about 0.3 MB.
 #include <span>

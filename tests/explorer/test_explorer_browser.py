@@ -730,6 +730,63 @@ def test_a_weighted_scene_shows_weighted_coverage_and_edges_as_wide_as_important
     assert_no_console_errors(explorer)
 
 
+def resolution_scene(tmp_path, min_density):
+    """tiny_dynamic with 640-pixel images and a required density (docs/scene-format.md,
+    "Resolution")."""
+    scene = json.loads(SCENE.read_text())
+    scene["imageWidth"] = 640
+    scene["resolution"] = {"minDensity": min_density}
+    path = tmp_path / f"resolution-{min_density:g}.json"
+    path.write_text(json.dumps(scene))
+    return path
+
+
+def drawn_lines(world, selector):
+    """The end points of the lines `selector` draws, rounded to a millimetre, as a set."""
+    lines = set()
+    for line in world.find_elements(By.CSS_SELECTOR, selector):
+        ends = [round(float(line.get_attribute(k)), 3) for k in ("x1", "y1", "x2", "y2")]
+        lines.add(tuple(ends))
+    return lines
+
+
+def test_a_scene_with_a_resolution_shows_resolved_coverage_and_draws_what_no_camera_resolves(
+        explorer, camcov, tmp_path):
+    """Beside the plain coverage, the panel shows the run's resolved coverage at the step; the
+    world draws, over the seen edges, the seen boundary no camera resolves. Checked at the two
+    ends where the answer is known without camcov: a density no camera reaches (every seen
+    edge is drawn unresolved, resolved coverage 0) and one every camera exceeds (nothing is)."""
+    for min_density, everything_unresolved in ((1e9, True), (1e-6, False)):
+        scene_file = resolution_scene(tmp_path, min_density)
+        run_file, run = record_run(camcov, tmp_path / f"runs{min_density:g}", "paper",
+                                   scene_file, 3)
+        series = run["series"]
+        page = write_explorer(camcov, [run_file], tmp_path / f"resolution{min_density:g}.html")
+        explorer.open(page)
+        k = step_nearest(run, 3.0)  # the cameras have turned to the targets by then
+        explorer.seek(k)
+        shown = explorer.text(".resolution-coverage", within=explorer.run(0))
+        assert_shows_fraction(shown, series["resolutionCoverage"][k], "resolved coverage")
+        assert_shows_fraction(explorer.text(".coverage", within=explorer.run(0)),
+                              series["coverage"][k], "plain coverage")
+        world = explorer.world(0)
+        reference = inspect_step(camcov, run, k, tmp_path, scene_file)
+        seen = set().union(*(drawn_lines(world, f'.segment[data-segment="{i}"]')
+                             for i, segment in enumerate(reference["segments"])
+                             if segment["visibleBy"]))
+        assert seen, "nothing is seen at the step: the check would be empty"
+        unresolved = drawn_lines(world, "line.unresolved")
+        if everything_unresolved:
+            assert float(shown) == 0.0
+            assert unresolved == seen
+        else:
+            assert float(shown) == pytest.approx(series["coverage"][k], abs=5e-5)
+            assert unresolved == set()
+        legend = explorer.driver.find_element(By.ID, "legend").text
+        assert "seen, not resolved" in legend
+    assert_no_console_errors(explorer)
+
+
 def test_under_limited_knowledge_the_world_draws_who_heard_whom_and_a_camera_says_whom_it_heard(
         explorer, camcov, tmp_path):
     # tiny_static's two cameras each send every 0.5 s (every fifth step) and are heard at once.
