@@ -1,5 +1,7 @@
 #include "control/decentralized_controller.h"
 
+#include "control/team_belief.h"
+
 namespace camcov::control {
 
 DecentralizedController::DecentralizedController(const scene::Scene& scene,
@@ -24,15 +26,6 @@ void DecentralizedController::takeEvents(std::vector<ControlEvent>& out) {
   events_.clear();
 }
 
-void DecentralizedController::believeTeam(const OwnKnowledge& own, std::size_t j,
-                                          geometry::Pose self) {
-  believed_.resize(scene_.cameras.size());
-  for (std::size_t i = 0; i < believed_.size(); ++i) {
-    const auto& heard = i < own.teammates.size() ? own.teammates[i] : std::nullopt;
-    believed_[i] = i == j ? self : heard ? heard->pose : scene_.cameras[i].initial;
-  }
-}
-
 void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
   std::vector<ControlEvent> loopEvents;
@@ -48,7 +41,7 @@ void DecentralizedController::control(const Observation& observation,
         commands[j] = {{0.0, 0.0}, scene_.cameras[j].maxAngularVelocity};
         continue;
       }
-      believeTeam(own, j, observation.cameras[j]);
+      believedTeam(scene_, own, j, observation.cameras[j], believed_);
       // Nothing measured for this camera's world: its loop sweeps it itself.
       const Observation mine{observation.time, own.world, believed_};
       loops_[j]->control(mine, planned_);

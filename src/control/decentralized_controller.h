@@ -33,13 +33,9 @@ class DecentralizedController final : public Controller {
   void takeEvents(std::vector<ControlEvent>& out) override;
 
  private:
-  // The team as camera j believes it: itself where it is, a teammate where its last message
-  // said (where the scene starts it, before any message).
-  void believeTeam(const OwnKnowledge& own, std::size_t j, geometry::Pose self);
-
   const scene::Scene& scene_;
   std::vector<std::unique_ptr<PaperController>> loops_;  // camera j's own loop
-  std::vector<geometry::Pose> believed_;                 // scratch: believeTeam's team
+  std::vector<geometry::Pose> believed_;                 // scratch: a camera's believedTeam
   std::vector<scene::CameraCommand> planned_;            // scratch: one loop's commands
   std::vector<ControlEvent> events_;
 };

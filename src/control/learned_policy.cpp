@@ -32,7 +32,7 @@ LearnedPolicy::LearnedPolicy(std::string_view text) {
   sizes_ = {s[0], s[1], s[2], s[3],
             targets == "nearest" ? TargetSlots::nearest : TargetSlots::byIndex};
   sizes_.check();
-  view_ = o.at("view").get<std::string>() == "own" ? View::own : View::team;
+  view_ = viewNamed(o.at("view").get<std::string>());
   mean_ = numbers(o.at("mean"), sizes_.size(), "observation.mean");
   deviation_ = numbers(o.at("std"), sizes_.size(), "observation.std");
   clip_ = o.at("clip").get<double>();

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "control/team_belief.h"
 #include "geometry/ring.h"
 #include "kinematics/world.h"
 #include "scene/camera.h"
@@ -87,6 +88,14 @@ std::vector<std::size_t> targetOrder(const kinematics::World& world,
 
 }  // namespace
 
+View viewNamed(std::string_view name) {
+  if (name == "team") return View::team;
+  if (name == "own") return View::own;
+  if (name == "known") return View::known;
+  throw std::invalid_argument("view: expected \"team\", \"own\" or \"known\", got \"" +
+                              std::string(name) + "\"");
+}
+
 void requireFits(const scene::Scene& scene, const EncodingSizes& sizes, View view) {
   EncodingSizes needed = EncodingSizes::of(scene);
   if (view == View::own) {
@@ -152,21 +161,21 @@ void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::sp
     set(at + 2, 2 * sizes.vertices, -kPositionBound, kPositionBound);
 }
 
-void encodeObservation(const scene::Scene& scene, const params::Parameters& params,
-                       const Observation& o, const EncodingSizes& sizes, View view,
-                       std::size_t camera, std::span<float> out) {
-  sizes.check();
-  requireFits(scene, sizes, view);
-  if (out.size() != sizes.size())
-    throw std::invalid_argument("encodeObservation: the output has the wrong size");
-  if (view == View::own && camera >= scene.cameras.size())
-    throw std::invalid_argument("encodeObservation: no camera " + std::to_string(camera));
+namespace {
+
+// The encoding of an instant `o` that the view reads as it is (for View::known, the camera's
+// belief: belief() below).
+void encodeInstant(const scene::Scene& scene, const params::Parameters& params,
+                   const Observation& o, const EncodingSizes& sizes, View view, std::size_t camera,
+                   std::span<float> out) {
   std::fill(out.begin(), out.end(), 0.0f);
   const kinematics::World& world = o.world;
   const RoomFrame frame(world.boundary);
   const double perimeter = reward::targetPerimeter(world);
   // Who counts as seeing: the team, or the camera alone.
   const std::uint64_t seers = view == View::own ? std::uint64_t{1} << camera : ~std::uint64_t{0};
+  // The own and known views put the camera's own slot first.
+  const bool egocentric = view != View::team;
 
   float* at = out.data();
   // The run's length: its instants after t = 0 (sim::Simulation::steps) times dt.
@@ -182,7 +191,7 @@ void encodeObservation(const scene::Scene& scene, const params::Parameters& para
   for (std::size_t slot = 0; slot < std::min(sizes.cameras, cameras); ++slot) {
     float* c = at + slot * EncodingSizes::kPerCamera;
     std::size_t j = slot;
-    if (view == View::own) j = slot == 0 ? camera : (slot <= camera ? slot - 1 : slot);
+    if (egocentric) j = slot == 0 ? camera : (slot <= camera ? slot - 1 : slot);
     const scene::CameraSpec& spec = scene.cameras[j];
     const geometry::Pose& p = o.cameras[j];
     c[0] = 1.0f;
@@ -211,7 +220,7 @@ void encodeObservation(const scene::Scene& scene, const params::Parameters& para
   for (const geometry::Ring& ring : world.targets)
     centroids.push_back(centroid(ring));
   const std::span<const geometry::Pose> viewers =
-      view == View::own ? std::span(o.cameras).subspan(camera, 1) : std::span(o.cameras);
+      egocentric ? std::span(o.cameras).subspan(camera, 1) : std::span(o.cameras);
   std::size_t filled = 0;
   for (const std::size_t i : targetOrder(world, centroids, viewers, sizes.targetSlots)) {
     if (view == View::own && seen[i] == 0.0) continue;
@@ -233,6 +242,35 @@ void encodeObservation(const scene::Scene& scene, const params::Parameters& para
     b[0] = 1.0f;
     writeRing(world.obstacles[i], sizes.vertices, frame, b + 1);
   }
+}
+
+}  // namespace
+
+void encodeObservation(const scene::Scene& scene, const params::Parameters& params,
+                       const Observation& o, const EncodingSizes& sizes, View view,
+                       std::size_t camera, std::span<float> out) {
+  sizes.check();
+  requireFits(scene, sizes, view);
+  if (out.size() != sizes.size())
+    throw std::invalid_argument("encodeObservation: the output has the wrong size");
+  if (view != View::team && camera >= scene.cameras.size())
+    throw std::invalid_argument("encodeObservation: no camera " + std::to_string(camera));
+  if (view != View::known || o.own.empty()) {
+    // With full knowledge a camera knows the world and its team as they are.
+    encodeInstant(scene, params, o, sizes, view, camera, out);
+    return;
+  }
+  // Under limited knowledge the camera's belief: the world it saw or was told, the team where
+  // it last heard of each (believedTeam), and S and the terms measured in that world, as its
+  // own loop would measure them (the decentralized method's).
+  const OwnKnowledge& own = o.own[camera];
+  std::vector<geometry::Pose> team;
+  believedTeam(scene, own, camera, o.cameras[camera], team);
+  reward::RewardModel model(params.reward, scene::lenses(scene));
+  model.setWorld(own.world);
+  const reward::RewardTerms terms = model.evaluate(team);
+  const Observation belief{o.time, own.world, team, model.segments(), terms};
+  encodeInstant(scene, params, belief, sizes, view, camera, out);
 }
 
 }  // namespace camcov::control

@@ -22,7 +22,8 @@
 // observed in a size of the caller's choosing. Obstacle slot i is the scene's obstacle i.
 // Slots beyond what is there are zero. A camera's own view (View::own) keeps its own slot
 // first and its teammates after it in their order, shows no obstacle, and only the targets
-// it sees some of, with the share it sees.
+// it sees some of, with the share it sees; a camera's known view (View::known) keeps the team
+// view's layout with its own slot first, of the world as it believes it (View below).
 //
 // Every float lies within observationBounds(): a value past its field's bound (an object
 // more than a half-side outside the room's box, a sensing range longer than the room, a
@@ -30,6 +31,7 @@
 // box they expect.
 #include <cstddef>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "control/controller.h"
@@ -66,7 +68,17 @@ struct EncodingSizes {
   static EncodingSizes of(const scene::Scene& scene);
 };
 
-enum class View { team, own };
+// Whose instant the floats describe. team: the world the methods read (under limited
+// knowledge, what the team knows together) and every camera in its order. own: what one camera
+// sees now — its slot first, its teammates after it, no obstacle, only the targets it sees some
+// of, with the share it sees. known: what one camera knows — with full knowledge the team view
+// with its slot first; under limited knowledge its belief (docs/method.md, "What a camera
+// knows"): the world as it saw it or was told, its teammates where it last heard of them
+// (team_belief.h), and S and the terms measured in that world, laid out as the team view with
+// its slot first.
+enum class View { team, own, known };
+// The view of a name: "team", "own" or "known"; std::invalid_argument naming them otherwise.
+View viewNamed(std::string_view name);
 
 // std::invalid_argument naming the scene's counts unless `sizes` hold `scene` in `view` (the
 // own view shows no obstacle, so it needs no obstacle slots and no room for their rings).
@@ -84,9 +96,10 @@ inline constexpr float kRewardBound = 10.0f;
 void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high);
 
 // Writes the instant `observation` of a run of `scene` under `params` into `out` (size
-// sizes.size()); `camera` is the camera whose view it is for View::own. One encoding for the
-// learning environments (environment::encodeObservation, the episode's instant) and for a
-// method that reads it (the learned controller), so both observe the same floats.
+// sizes.size()); `camera` is the camera whose view it is for View::own and View::known. One
+// encoding for the learning environments (environment::encodeObservation, the episode's
+// instant) and for a method that reads it (the learned controller), so both observe the same
+// floats.
 // std::invalid_argument if the scene does not fit.
 void encodeObservation(const scene::Scene& scene, const params::Parameters& params,
                        const Observation& observation, const EncodingSizes& sizes, View view,

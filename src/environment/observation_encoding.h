@@ -22,7 +22,8 @@ using control::TargetSlots;
 using control::View;
 
 // Writes the episode's present instant into `out` (size sizes.size()); `camera` is the
-// camera whose view it is for View::own. std::invalid_argument if the scene does not fit.
+// camera whose view it is for View::own and View::known. std::invalid_argument if the scene
+// does not fit.
 void encodeObservation(const Episode& episode, const EncodingSizes& sizes, View view,
                        std::size_t camera, std::span<float> out);
 

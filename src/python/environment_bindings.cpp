@@ -215,8 +215,8 @@ void bindEnvironment(py::module_& m) {
       .def_property_readonly(
           "terms",
           [](PythonEpisode& e) {
-            return locked(
-                e, [](const auto& episode) { return termsToDict(episode.scored().terms); });
+            return locked(e,
+                          [](const auto& episode) { return termsToDict(episode.scored().terms); });
           },
           "The team's reward terms now: coverage (eq. 3), weightedCoverage (eq. 3 with the "
           "scene's importance weights; coverage where it has none), utilization (5), "
@@ -253,15 +253,19 @@ void bindEnvironment(py::module_& m) {
           "observation",
           [](PythonEpisode& e, const std::vector<std::size_t>& sizes, const std::string& view,
              std::size_t camera, const std::string& targets) {
-            if (view != "team" && view != "own")
-              throw py::value_error("view: expected \"team\" or \"own\", got \"" + view + "\"");
+            const environment::View v = [&] {
+              try {
+                return control::viewNamed(view);
+              } catch (const std::invalid_argument& error) {
+                throw py::value_error(error.what());
+              }
+            }();
             const EncodingSizes s = sizesFrom(sizes, targets);
             FloatArray out(static_cast<py::ssize_t>(s.size()));
             const auto lock = lockWithoutGil(e.mutex);
             try {
-              environment::encodeObservation(
-                  e.episode, s, view == "own" ? environment::View::own : environment::View::team,
-                  camera, std::span(out.mutable_data(), s.size()));
+              environment::encodeObservation(e.episode, s, v, camera,
+                                             std::span(out.mutable_data(), s.size()));
             } catch (const std::invalid_argument& error) {
               throw py::value_error(error.what());
             }
@@ -271,8 +275,10 @@ void bindEnvironment(py::module_& m) {
           py::arg("targets") = "index",
           "The present instant encoded as float32 (the layout of docs/python.md), padded to "
           "sizes = (cameras, targets, obstacles, vertices); view \"own\": what `camera` sees, "
-          "its teammates after it; targets \"nearest\": the target slots hold the targets "
-          "present, nearest first, as many as fit.")
+          "its teammates after it; view \"known\": what `camera` knows (under limited "
+          "knowledge the world as it saw it or was told and its teammates as last heard), laid "
+          "out as the team view with its slot first; targets \"nearest\": the target slots "
+          "hold the targets present, nearest first, as many as fit.")
       .def(
           "frame",
           [](PythonEpisode& e, int width, int height, const std::string& subtitle) {

@@ -32,6 +32,7 @@ void PythonController::control(const control::Observation& o,
     observation->cameras.assign(o.cameras.begin(), o.cameras.end());
     observation->seen.assign(o.seen.begin(), o.seen.end());
     observation->terms = o.terms;
+    observation->own.assign(o.own.begin(), o.own.end());
     const py::object result = callable_(py::cast(std::move(observation)));
     // velocities, or a tuple (velocities, goals) or (velocities, goals, events)
     const std::size_t parts =

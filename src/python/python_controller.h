@@ -26,6 +26,8 @@ struct PythonObservation {
   std::vector<geometry::Pose> cameras;
   std::vector<visibility::Segment> seen;
   reward::RewardTerms terms;
+  // Under limited knowledge, what each camera knows on its own (control::Observation::own).
+  std::vector<control::OwnKnowledge> own;
 };
 
 class PythonController final : public control::Controller {

@@ -66,6 +66,32 @@ class PythonObserver final : public bench::BenchObserver {
   std::optional<bench::ProgressCount> count_;
 };
 
+// Observation.own: each camera's knowledge as Python objects.
+py::list ownKnowledgeToList(const PythonObservation& o) {
+  py::list cameras;
+  for (const control::OwnKnowledge& own : o.own) {
+    py::list teammates;
+    for (const auto& heard : own.teammates) {
+      if (!heard) {
+        teammates.append(py::none());
+        continue;
+      }
+      py::dict news;
+      news["sent_at"] = heard->sentAt;
+      news["pose"] = posesToArray(std::span(&heard->pose, 1))[py::int_(0)];
+      news["goal"] = heard->goal
+                         ? py::object(posesToArray(std::span(&*heard->goal, 1))[py::int_(0)])
+                         : py::none();
+      teammates.append(std::move(news));
+    }
+    py::dict knowledge;
+    knowledge["world"] = own.world;
+    knowledge["teammates"] = std::move(teammates);
+    cameras.append(std::move(knowledge));
+  }
+  return cameras;
+}
+
 void bindObservation(py::module_& m) {
   py::class_<PythonObservation>(m, "Observation",
                                 "What a controller sees at step t: the present only. "
@@ -83,7 +109,15 @@ void bindObservation(py::module_& m) {
           "S(t) for the cameras, as the simulator measured it (see Visibility.segments).")
       .def_property_readonly(
           "terms", [](const PythonObservation& o) { return termsToDict(o.terms); },
-          "coverage, utilization, repulsion and reward now (eq. (3)–(8)), a dict of floats.");
+          "coverage, utilization, repulsion and reward now (eq. (3)–(8)), a dict of floats.")
+      .def_property_readonly("own", &ownKnowledgeToList,
+                             "Under limited knowledge (params knowledge.limited), what each "
+                             "camera knows on its own, by camera: a dict with 'world' (a "
+                             "camcov.World: what it saw or was told) and 'teammates' (by camera: "
+                             "None for itself and for one it never heard, else a dict with "
+                             "'sent_at' (s), 'pose' (3,) and 'goal' (3,) or None, its latest "
+                             "news). With full knowledge an empty list: every camera knows "
+                             "`world` and `cameras`.");
 }
 
 void bindRun(py::module_& m) {

@@ -119,6 +119,80 @@ TEST(Episode, TheOwnViewNeedsNoObstacleSlotsAsItShowsNone) {
       << "the team view shows the obstacle";
 }
 
+// The floats of camera slot `slot` of an encoding.
+std::vector<float> cameraSlot(const std::vector<float>& out, std::size_t slot) {
+  const auto first = out.begin() + static_cast<std::ptrdiff_t>(EncodingSizes::kGlobal +
+                                                               slot * EncodingSizes::kPerCamera);
+  return {first, first + EncodingSizes::kPerCamera};
+}
+
+TEST(Episode, WithFullKnowledgeACamerasKnownViewIsTheTeamViewWithItsSlotFirst) {
+  const auto scene = oneTargetScene();
+  Episode episode(scene, shortRun(1.0));
+  const EncodingSizes sizes{2, 1, 1, 4};
+  std::vector<float> team(sizes.size()), known(sizes.size());
+  for (int k = 0; k < 3; ++k) {
+    encodeObservation(episode, sizes, View::team, 0, team);
+    encodeObservation(episode, sizes, View::known, 1, known);
+    EXPECT_EQ(cameraSlot(known, 0), cameraSlot(team, 1));
+    EXPECT_EQ(cameraSlot(known, 1), cameraSlot(team, 0));
+    const std::size_t rest = EncodingSizes::kGlobal + 2 * EncodingSizes::kPerCamera;
+    EXPECT_TRUE(std::equal(team.begin(), team.begin() + EncodingSizes::kGlobal, known.begin()));
+    EXPECT_TRUE(std::equal(team.begin() + rest, team.end(), known.begin() + rest))
+        << "the same targets and obstacles";
+    const std::vector<scene::CameraCommand> turn(2, {{0.5, 0.0}, 0.5});
+    episode.step(turn);
+  }
+}
+
+// Camera 1 faces the target from (6, 6), camera 0 looks away from it; neither sees the obstacle.
+constexpr const char* kOneCameraFacingScene = R"js({
+  "boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))",
+  "targets": [{"shape": "POLYGON((-1 -1,1 -1,1 1,-1 1))", "path": "POLYGON((0 0))"}],
+  "obstacles": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((7 0))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-6 -6)", "angle": 225, "maxVelocity": 2, "maxAngularVelocity": 1},
+              {"pos": "POINT(6 6)", "angle": 225, "maxVelocity": 2, "maxAngularVelocity": 1}]})js";
+
+TEST(Episode, UnderLimitedKnowledgeAKnownViewHoldsWhatTheCameraSawAndItsTeamAsLastHeard) {
+  const auto scene =
+      std::make_shared<const scene::Scene>(testing::sceneFromJson(kOneCameraFacingScene));
+  params::Parameters params = shortRun(1.0);
+  params.knowledge.limited = true;
+  params.comms.range = 0.0;  // the cameras are 17 m apart: nobody hears anybody
+  Episode episode(scene, params);
+  const EncodingSizes sizes{2, 1, 1, 4};
+  const std::size_t targetAt = EncodingSizes::kGlobal + 2 * EncodingSizes::kPerCamera;
+  const std::size_t obstacleAt = targetAt + sizes.perTarget();
+  std::vector<float> out(sizes.size());
+  // The reference: who sees some of the target in the true world at t = 0.
+  std::vector<bool> seesTarget(2, false);
+  for (const visibility::Segment& s : episode.scored().seen)
+    for (unsigned j = 0; j < 2; ++j)
+      seesTarget[j] = seesTarget[j] || (s.visibleBy >> j & 1u) != 0;
+  ASSERT_FALSE(seesTarget[0]);
+  ASSERT_TRUE(seesTarget[1]);
+  for (std::size_t j = 0; j < 2; ++j) {
+    encodeObservation(episode, sizes, View::known, j, out);
+    EXPECT_EQ(out[targetAt], seesTarget[j] ? 1.0f : 0.0f) << "camera " << j;
+    EXPECT_EQ(out[obstacleAt], 0.0f) << "nobody has seen the obstacle";
+  }
+  // Camera 0 drives off; camera 1, never hearing, believes it where the scene starts it.
+  const std::vector<scene::CameraCommand> drive{{{1.0, 0.0}, 0.0}, {{0.0, 0.0}, 0.0}};
+  for (int k = 0; k < 5; ++k)
+    episode.step(drive);
+  std::vector<float> team(sizes.size());
+  encodeObservation(episode, sizes, View::team, 0, team);
+  encodeObservation(episode, sizes, View::known, 1, out);
+  EXPECT_GT(cameraSlot(team, 0)[1], -0.6f + 0.04f) << "camera 0 moved";
+  EXPECT_FLOAT_EQ(cameraSlot(out, 1)[1], -0.6f) << "as camera 1 believes it: POINT(-6 -6)";
+  EXPECT_EQ(cameraSlot(out, 0), cameraSlot(team, 1)) << "camera 1 knows itself";
+  EXPECT_EQ(out[targetAt], 1.0f) << "it still knows the target";
+  encodeObservation(episode, sizes, View::known, 0, out);
+  EXPECT_EQ(cameraSlot(out, 0), cameraSlot(team, 0));
+  EXPECT_EQ(out[targetAt], 0.0f) << "camera 0 was never told of the target";
+}
+
 // Two targets: a square about (0, 0), 8.5 m from the nearest camera, and one about (3, 3),
 // 4.2 m from the camera at (6, 6); that camera senses 100 m, five times the room's side.
 constexpr const char* kTwoTargetsScene = R"js({
@@ -163,7 +237,7 @@ TEST(Episode, EveryFloatLiesWithinTheDeclaredBoundsClampedWherePast) {
   const EncodingSizes sizes{3, 3, 1, 6};
   std::vector<float> out(sizes.size()), low(sizes.size()), high(sizes.size());
   observationBounds(sizes, low, high);
-  for (const View view : {View::team, View::own}) {
+  for (const View view : {View::team, View::own, View::known}) {
     encodeObservation(episode, sizes, view, 1, out);
     for (std::size_t k = 0; k < out.size(); ++k) {
       EXPECT_LE(low[k], out[k]) << k;

@@ -94,10 +94,12 @@ def test_gymnasiums_checker_passes_with_images_and_rendering(scenes):
 
 
 @pytest.mark.parametrize("name", CHECKED)
-@pytest.mark.parametrize("view,agent_reward", [("team", "team"), ("own", "own")])
-def test_pettingzoos_checkers_pass_without_a_warning(scenes, name, view, agent_reward):
+@pytest.mark.parametrize("view,agent_reward,params", [
+    ("team", "team", SHORT), ("own", "own", SHORT),
+    ("known", "own", {**SHORT, "knowledge.limited": True, "comms.range": 10.0})])
+def test_pettingzoos_checkers_pass_without_a_warning(scenes, name, view, agent_reward, params):
     def make():
-        return E.make("camcov/CoverageParallel-v0", scene=scene_of(scenes, name), params=SHORT,
+        return E.make("camcov/CoverageParallel-v0", scene=scene_of(scenes, name), params=params,
                       view=view, agent_reward=agent_reward)
 
     strictly(parallel_api_test, make(), num_cycles=100)
@@ -584,3 +586,38 @@ def test_under_limited_knowledge_the_agents_observe_the_known_world_and_are_rewa
     _, full_rewards, *_ = full_agents.step(still)
     _, limited_rewards, *_ = limited_agents.step(still)
     assert limited_rewards == full_rewards
+
+
+def test_a_known_view_is_what_its_camera_knows(published):
+    """view="known": with full knowledge the team's observation with the agent's slot first;
+    under limited knowledge with nobody heard (comms.range 0 on dynamic5, whose cameras stand
+    apart), a target's slot is present only for the agent whose camera has seen it, which the
+    true world's S (visibleBy) tells apart at the first instant."""
+    scene = published("dynamic5")
+    full = E.CoverageParallelEnv(scene, params=SHORT, view="known")
+    observations, _ = full.reset(seed=1)
+    team = full.state()
+    cameras = full.episodes.cameras()
+    for j, agent in enumerate(full.agents):
+        order = [j] + [k for k in range(cameras) if k != j]
+        slots = team[4:4 + 10 * cameras].reshape(cameras, 10)[order].ravel()
+        expected = np.concatenate([team[:4], slots, team[4 + 10 * cameras:]])
+        assert np.array_equal(observations[agent], expected)
+
+    limited = E.CoverageParallelEnv(
+        scene, params={**SHORT, "knowledge.limited": True, "comms.range": 0.0}, view="known")
+    observations, _ = limited.reset(seed=1)
+    loaded = camcov.load_scene(scene)
+    truth = camcov.Visibility(loaded.world_at(0.0), loaded).segments(
+        limited.episodes.episode.cameras)
+    sizes = limited.episodes.sizes
+    first_target = 4 + 10 * sizes[0]
+    per_target = 5 + 2 * sizes[3]
+    knows_some = False
+    for j, agent in enumerate(limited.agents):
+        saw = {int(t) for t, by in zip(truth["target"], truth["visible_by"]) if int(by) >> j & 1}
+        present = {i for i in range(sizes[1])
+                   if observations[agent][first_target + i * per_target] == 1.0}
+        assert present == saw, f"camera {j}"
+        knows_some |= bool(saw)
+    assert knows_some, "nobody sees a target at t = 0: the check would be empty"

@@ -140,6 +140,42 @@ def test_a_limited_knowledge_run_is_the_clis_to_the_byte_and_counts_its_messages
         camcov.run(scene_file, method="paper", params={"comms.loss": 2})
 
 
+def test_a_controller_under_limited_knowledge_receives_what_each_camera_knows(tiny):
+    """observation.own: per camera its own world and its teammates as last heard. With
+    comms.range 0 nobody hears anybody, so every teammate entry stays None and each camera's
+    world holds no more targets than the team's; with unlimited range every camera hears the
+    other at once (no latency), with the pose it sent at that instant."""
+    scene_file = tiny("tiny_static")  # two cameras
+    seen = []
+
+    def still(observation):
+        seen.append((observation.time, observation.cameras.copy(), observation.own,
+                     len(observation.world.targets)))
+        return np.zeros((len(observation.cameras), 3))
+
+    camcov.simulate(scene_file, still, method="still", seed=1,
+                    params={**SHORT, "knowledge.limited": True, "comms.range": 0.0})
+    for _, cameras, own, team_targets in seen:
+        assert len(own) == len(cameras)
+        for j, knowledge in enumerate(own):
+            assert knowledge["teammates"] == [None] * len(cameras)
+            assert len(knowledge["world"].targets) <= team_targets
+    seen.clear()
+    camcov.simulate(scene_file, still, method="still", seed=1,
+                    params={**SHORT, "knowledge.limited": True, "comms.range": float("inf")})
+    time, cameras, own, _ = seen[0]
+    for j, knowledge in enumerate(own):
+        for k, news in enumerate(knowledge["teammates"]):
+            if k == j:
+                assert news is None
+            else:
+                assert news["sent_at"] == time
+                assert news["pose"] == pytest.approx(cameras[k])
+    seen.clear()
+    camcov.simulate(scene_file, still, method="still", seed=1, params=SHORT)
+    assert all(own == [] for _, _, own, _ in seen), "full knowledge: nothing per camera"
+
+
 def test_the_gil_is_let_go_while_cpp_runs(published):
     # While a run works in another thread, this thread keeps running Python: with the GIL
     # held for the whole run it could not count at all until the run returned.

@@ -17,7 +17,10 @@ class CoverageParallelEnv(ParallelEnv):
     - view: "team" (each agent observes the team's observation, the layout of docs/python.md,
       followed by its id: one float per camera slot, 1 at its own) or "own" (egocentric: its
       own camera's slot first, its teammates after it, no obstacle, only the targets it sees
-      some of), for decentralized policies.
+      some of), for decentralized policies, or "known" (what its camera knows, laid out as the
+      team's observation with its own slot first: with params {"knowledge.limited": True} the
+      world as it saw it or was told and its teammates where it last heard of them, the
+      observation of a decentralized team; with full knowledge the team's).
     - agent_reward: "team" (each agent gets the team's reward) or "own" (its camera's own
       terms, as if it were alone: camcov.Episode.own_terms).
     - action per agent: (3,) vx, vy, yaw rate: normalized float32 in [-1, 1] (1: its camera's
@@ -37,8 +40,8 @@ class CoverageParallelEnv(ParallelEnv):
                  targets=None, pad_to=None):
         """The environment of the scenes, with the options of the class's docstring."""
         self.episodes = Episodes(scene, params, reward, action_units, targets, pad_to)
-        if view not in ("team", "own"):
-            raise ValueError(f"view: expected 'team' or 'own', got {view!r}")
+        if view not in ("team", "own", "known"):
+            raise ValueError(f"view: expected 'team', 'own' or 'known', got {view!r}")
         if agent_reward not in ("team", "own"):
             raise ValueError(f"agent_reward: expected 'team' or 'own', got {agent_reward!r}")
         if render_mode not in (None, "rgb_array"):
@@ -80,7 +83,7 @@ class CoverageParallelEnv(ParallelEnv):
             elif self.view == "team":
                 observations[agent] = np.concatenate([episodes.observation(), self._ids[j]])
             else:
-                observations[agent] = episodes.observation("own", j)
+                observations[agent] = episodes.observation(self.view, j)
         return observations
 
     def _rewards(self, terms):
