@@ -1,5 +1,5 @@
-// `camcov generate -o scene.json [--targets N --cameras M ...]`: a seeded large scene (issue
-// 23; scene/scene_generator.h). The scene is validated by the loader before it is written,
+// `camcov generate -o scene.json [--targets N --cameras M ...]`: a seeded large scene
+// (scene/scene_generator.h). The scene is validated by the loader before it is written,
 // atomically: bad options leave no file behind.
 // `camcov generate --family NAME --count N --seed S -o DIR`: N scenes of a named family
 // (scene/scene_families.h), DIR/<family>-<seed>.json for seeds S to S+N-1, each validated by
