@@ -584,15 +584,7 @@
     action();
   });
 
-  // The worlds as tall as the window leaves below their top, so the whole scene is in view
-  // without scrolling (at least 240 px: a very short window scrolls).
-  function fitWorlds() {
-    const top = panels[0].world.getBoundingClientRect().top + window.scrollY;
-    document.documentElement.style.setProperty(
-        "--world-room", `${Math.max(240, Math.floor(window.innerHeight - top - 8))}px`);
-  }
-  window.addEventListener("resize", fitWorlds);
-  fitWorlds();
+  view.fit();  // again, now that the timeline and its legend above the worlds are drawn
   render();
   document.body.dataset.ready = "1";
 })();

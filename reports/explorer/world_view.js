@@ -80,6 +80,16 @@ window.camcovWorldView = (() => {
       svg.addEventListener("pointercancel", release);
     }
     if (reset) reset.addEventListener("click", () => view.reset());
+    // The svgs as tall as the window leaves below their top (CSS max-height:
+    // var(--world-room)), so the whole scene is in view without scrolling; at least 240 px, so
+    // a very short window scrolls instead.
+    const fit = view.fit = () => {
+      const top = svgs[0].getBoundingClientRect().top + window.scrollY;
+      document.documentElement.style.setProperty(
+          "--world-room", `${Math.max(240, Math.floor(window.innerHeight - top - 8))}px`);
+    };
+    window.addEventListener("resize", fit);
+    fit();
     apply();
     return view;
   }
