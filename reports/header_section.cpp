@@ -1,6 +1,8 @@
 // Section 1: what was run, where, how long it took, and the outcome in one sentence.
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -8,8 +10,11 @@
 namespace camcov::reports {
 namespace {
 
-// argv as a POSIX shell would need it typed, so the command can be pasted to rerun.
-std::string shellCommand(const std::vector<std::string>& argv) {
+// argv as a POSIX shell would need it typed, so the command can be pasted to rerun; the binary
+// by its name, as a reader types it (its absolute path says where the author built it, and
+// pushes the command past the page's width).
+std::string shellCommand(std::vector<std::string> argv) {
+  if (!argv.empty()) argv.front() = std::filesystem::path(argv.front()).filename().string();
   std::string line;
   for (const auto& arg : argv) {
     if (!line.empty()) line += ' ';
@@ -90,15 +95,15 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
     for (const records::Tally& t : *tallies) {
       out += fmt::format(
           "<p class=\"verdict\">On average coverage over {} scenes, {} against {}: <b>wins "
-          "{}</b>, ties {}, <b>loses {}</b>{} (the rule of docs/statistics.md: {}).</p>\n",
+          "{}</b>, ties {}, <b>loses {}</b>{} (by <a href=\"#verdict-rule\">the rule</a> the "
+          "summary states).</p>\n",
           t.wins + t.ties + t.losses + t.undecided, escapeXml(methodStyle(t.method).label),
           escapeXml(methodStyle(t.against.empty() ? s.reference : t.against).label), t.wins, t.ties,
           t.losses,
           t.undecided > 0 ? fmt::format(", <b>undecided {}</b> (too few seeds to tell: {} per "
                                         "method at least)",
                                         t.undecided, records::seedsToReachSignificance())
-                          : std::string(),
-          escapeXml(records::verdictRuleText()));
+                          : std::string());
     }
   }
   if (!s.tallies.empty()) {

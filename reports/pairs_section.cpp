@@ -97,14 +97,14 @@ std::string pairsSection(const ReportData& data) {
       "<section id=\"pairs\">\n<h2>Methods against each other</h2>\n<p>Every pair of methods "
       "other than the reference ({}), tested as in the summary: Δ is the first method's mean "
       "average coverage minus the second's, p the two-sided Mann-Whitney U test of their runs "
-      "(the rule of docs/statistics.md: {}). Tallies are wins / ties / "
+      "(winners by <a href=\"#verdict-rule\">the rule</a> of the summary). Tallies are wins / ties "
+      "/ "
       "losses of the first method.</p>\n<div class=\"table-wrap\"><table class=\"pair-totals\">"
       "<thead><tr><th scope=\"col\">Pair</th>{}<th scope=\"col\">All scenes</th></tr></thead>\n"
       "<tbody>\n{}</tbody></table></div>\n<div class=\"table-wrap\"><table class=\"pairs\">"
       "<thead><tr><th scope=\"col\" rowspan=\"2\">Scene</th>{}</tr>\n<tr>{}</tr></thead>\n{}"
       "</table></div>\n</section>\n",
-      escapeXml(data.summary.reference), escapeXml(records::verdictRuleText()), tallyHead,
-      tallyRows, head, subhead, bodies);
+      escapeXml(data.summary.reference), tallyHead, tallyRows, head, subhead, bodies);
 }
 
 }  // namespace camcov::reports

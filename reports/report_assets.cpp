@@ -61,6 +61,10 @@ table.summary tbody th { font-weight: 600; }
    column titles wrap (the numbers below them do not); a scene's name may break after '_'. */
 table.summary th, table.summary td { padding: .3rem .45rem; }
 table.summary thead th:not([colspan]) { white-space: normal; }
+/* A weighted or resolved line under a mean wraps after its word rather than push the table's
+   last columns (the winner) out of sight. */
+table.summary td.num .extra { white-space: normal; }
+table.summary td.num .extra .value { white-space: nowrap; }
 th button { font: inherit; font-weight: 600; color: inherit; background: none; border: 0;
             padding: 0; cursor: pointer; }
 /* A no-break space: the arrow stays with the title's last word when the title wraps. */

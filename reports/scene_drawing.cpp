@@ -21,7 +21,10 @@ using geometry::Vec2;
 constexpr double kMargin = 18.0;  // px around the boundary: room for a row of labels
 constexpr double kFont = SceneDrawing::kFont;
 constexpr double kLabelGap = 2.0;  // px between a label and anything else: its white halo
-constexpr double kReach = 34.0;    // px, a wedge's radius: it shows a direction, not a range
+// px at most between a camera's body and its label: any farther, a label in the open reads as
+// nobody's (or as the nearest target's), so it is left off and listed under the picture.
+constexpr double kMaxCameraLabelGap = 24.0;
+constexpr double kReach = 34.0;  // px, a wedge's radius: it shows a direction, not a range
 
 class WorldToSvg {
  public:
@@ -94,14 +97,14 @@ void avoidDrawn(const SceneDrawing& d, labels::LabelPlacer& placer) {
 // Places a label of these lines at the first clear box of the candidates `boxesFor` makes
 // for its size.
 bool placeLabel(SceneDrawing& d, labels::LabelPlacer& placer, std::vector<std::string> lines,
-                std::string_view color, const auto& boxesFor) {
+                std::string_view color, Vec2 of, const auto& boxesFor) {
   double width = 0.0;
   for (const std::string& line : lines)
     width = std::max(width, textWidth(line, kFont));
   const std::vector<Box> candidates =
       boxesFor(Vec2{width, static_cast<double>(lines.size()) * SceneDrawing::lineHeight()});
   const std::optional<std::size_t> chosen = placer.place(candidates);
-  if (chosen) d.labels.push_back({std::move(lines), color, candidates[*chosen]});
+  if (chosen) d.labels.push_back({std::move(lines), color, candidates[*chosen], of});
   return chosen.has_value();
 }
 
@@ -146,16 +149,16 @@ void labelCameras(const scene::Scene& s, SceneDrawing& d, labels::LabelPlacer& p
     // (narrower).
     const auto placedAt = [&](double gap) {
       const auto boxes = [&](Vec2 size) { return cameraBoxes(d, j, size, {gap}); };
-      return placeLabel(d, placer, {name + " · " + values}, kCameraColor, boxes) ||
-             placeLabel(d, placer, {name, values}, kCameraColor, boxes);
+      return placeLabel(d, placer, {name + " · " + values}, kCameraColor, d.cameras[j].at, boxes) ||
+             placeLabel(d, placer, {name, values}, kCameraColor, d.cameras[j].at, boxes);
     };
-    if (!(placedAt(3.0) || placedAt(12.0) || placedAt(24.0) || placedAt(36.0)))
+    if (!(placedAt(3.0) || placedAt(12.0) || placedAt(kMaxCameraLabelGap)))
       withoutValues.push_back(j);
   }
   // Cameras whose values found no room still show their number; the caption has the rest.
   for (const std::size_t j : withoutValues) {
-    placeLabel(d, placer, {cameraName(j)}, kCameraColor, [&](Vec2 size) {
-      return cameraBoxes(d, j, size, {2.0, 5.0, 8.0, 12.0, 16.0, 24.0});
+    placeLabel(d, placer, {cameraName(j)}, kCameraColor, d.cameras[j].at, [&](Vec2 size) {
+      return cameraBoxes(d, j, size, {2.0, 5.0, 8.0, 12.0, 16.0, kMaxCameraLabelGap});
     });
     d.leftOut.push_back(cameraName(j) + " · " + cameraValues(s, j));
   }
@@ -172,8 +175,9 @@ void labelMotion(const std::vector<scene::MovingObject>& specs, std::string_view
     if (text.empty()) continue;
     const Box shape = geometry::boundingBox(map(placed[i]));
     const std::vector<Vec2> path = map(o.path);
-    const bool placedIt =
-        placeLabel(d, placer, {text}, o.path.size() > 1 ? kPathColor : fill, [&](Vec2 size) {
+    const bool placedIt = placeLabel(
+        d, placer, {text}, o.path.size() > 1 ? kPathColor : fill, (shape.min + shape.max) * 0.5,
+        [&](Vec2 size) {
           std::vector<Box> boxes = compassBoxes(shape, size, {0.0, -1.0}, {3.0, 10.0, 20.0});
           for (std::size_t k = 0; path.size() > 1 && k < path.size(); ++k) {
             const Vec2 a = path[k], b = path[(k + 1) % path.size()];

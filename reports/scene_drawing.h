@@ -6,7 +6,7 @@
 // Labels are placed by labels::LabelPlacer, clear of each other, the boundary, objects, paths
 // and cameras. Cameras come first (their labels carry the most), each by the longest of its
 // labels that finds room: "cam 2 · 1 m/s · 0.5 rad/s · 225°" on one line or on two, else
-// "cam 2"; moving objects
+// "cam 2", always within 24 px of its camera (farther, it reads as nobody's); moving objects
 // then get their speeds. What finds no room is listed in `leftOut` for the caption.
 #include <string>
 #include <string_view>
@@ -41,6 +41,9 @@ struct DrawnLabel {
   std::string_view color;
   geometry::Box box;  // px, what the text covers: line i's baseline sits kAscent font sizes
                       // below the top of its own row of lineHeight()
+  geometry::Vec2 of;  // px, the point it labels (a camera, an object's centre): the text is
+                      // anchored at the box's side nearest it, so a browser's font narrower
+                      // than the estimate leaves its spare room away from what it labels
 
   std::string text() const;  // the lines joined by " · "
 };

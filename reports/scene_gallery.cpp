@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 #include <numbers>
 
 #include "reports/markup.h"
@@ -53,19 +55,26 @@ std::string svgOf(const SceneDrawing& d, std::string_view name) {
   }
   for (const DrawnCamera& c : d.cameras) {
     out += fmt::format(
-        "<g class=\"camera\"><path d=\"M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"1.4\"/>"
+        "<g class=\"camera\" data-camera=\"{}\"><path d=\"M{} {}L{} {}\" stroke=\"{}\" "
+        "stroke-width=\"1.4\"/>"
         "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"/></g>\n",
-        px(c.at.x), px(c.at.y), px(c.head.x), px(c.head.y), kCameraColor, px(c.at.x), px(c.at.y),
-        DrawnCamera::kBodyRadius, kCameraColor);
+        &c - d.cameras.data(), px(c.at.x), px(c.at.y), px(c.head.x), px(c.head.y), kCameraColor,
+        px(c.at.x), px(c.at.y), DrawnCamera::kBodyRadius, kCameraColor);
   }
   // White halos keep the text legible where a label comes close to a line.
   for (const DrawnLabel& l : d.labels) {
     out += fmt::format(
         "<text class=\"label\" fill=\"{}\" stroke=\"#fff\" stroke-width=\"3\" "
-        "stroke-linejoin=\"round\" paint-order=\"stroke\">",
+        "stroke-linejoin=\"round\" paint-order=\"stroke\"",
         l.color);
+    // Anchored at the side nearest what it labels (DrawnLabel::of).
+    const auto [anchor, x] = l.of.x >= l.box.max.x ? std::pair{"end", l.box.max.x}
+                             : l.of.x <= l.box.min.x
+                                 ? std::pair{"start", l.box.min.x}
+                                 : std::pair{"middle", (l.box.min.x + l.box.max.x) / 2};
+    out += fmt::format(" text-anchor=\"{}\">", anchor);
     for (std::size_t i = 0; i < l.lines.size(); ++i) {
-      out += fmt::format("<tspan x=\"{}\" y=\"{}\">{}</tspan>", px(l.box.min.x),
+      out += fmt::format("<tspan x=\"{}\" y=\"{}\">{}</tspan>", px(x),
                          px(l.box.min.y + i * SceneDrawing::lineHeight() +
                             SceneDrawing::kAscent * SceneDrawing::kFont),
                          escapeXml(l.lines[i]));

@@ -33,13 +33,15 @@ std::string meanSd(const records::Description& d, bool best) {
 
 // The coverages some scenes record beside the plain one, which the verdicts compare: a weighted
 // scene's importance-weighted coverage, a scene with a resolution's resolution coverage; each a
-// line under the plain mean.
+// line under the plain mean, which wraps after its word rather than widen the table past the
+// page: the winner is its last column.
 std::string extraCoverageLines(const records::MethodSummary& m) {
   std::string lines;
   const auto line = [&](const records::Description& d, const char* title, const char* label) {
     if (d.count == 0) return;
-    lines += fmt::format("<br><span class=\"muted\" title=\"{}\">{} {}</span>", title, label,
-                         meanSd(d, false));
+    lines += fmt::format(
+        "<br><span class=\"muted extra\" title=\"{}\">{} <span class=\"value\">{}</span></span>",
+        title, label, meanSd(d, false));
   };
   line(m.weightedCoverage, "average importance-weighted coverage (edgeWeights, frontWeight)",
        "weighted");
@@ -195,8 +197,9 @@ std::string summarySection(const ReportData& data) {
       "verdict when the contact began (unavoidable: no admissible velocity kept δ), the runs "
       "with an avoidable contact, and the smallest distances in any run. Every method is "
       "compared with the reference, {}: Δ is its mean coverage minus the reference's; p is the "
-      "two-sided Mann-Whitney U test of the two samples (the rule of docs/statistics.md: {}). "
-      "Click a column title to sort (by the first method compared).</p>\n",
+      "two-sided Mann-Whitney U test of the two samples.</p>\n<p class=\"rule\" "
+      "id=\"verdict-rule\"><b>The rule for every verdict of this report</b> (docs/statistics.md): "
+      "{}.</p>\n<p>Click a column title to sort (by the first method compared).</p>\n",
       data.manifest.seeds, data.manifest.parameters.sim.delta, escapeXml(data.summary.reference),
       escapeXml(records::verdictRuleText()));
   for (const SceneGroup group : kSceneGroups) {

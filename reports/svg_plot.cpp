@@ -221,8 +221,10 @@ Chart::Chart(ChartSpec spec) : spec_(std::move(spec)) {
       tickLabelHeight = widest * std::sin(a) + kTickFont * std::cos(a);
     }
   }
-  bottom_ = spec_.height - kPad - (spec_.x.label.empty() ? 0.0 : kLabelFont + 6.0) -
-            tickLabelHeight - kTickLength - 6.0;
+  const double below =
+      kPad + (spec_.x.label.empty() ? 0.0 : kLabelFont + 6.0) + tickLabelHeight + kTickLength + 6.0;
+  spec_.height = std::max(spec_.height, top_ + spec_.minPlotHeight + below);
+  bottom_ = spec_.height - below;
   if (bottom_ - top_ < 20.0) {
     throw std::invalid_argument("Chart: too small for its labels (" + spec_.ariaLabel + ")");
   }
@@ -367,8 +369,8 @@ void Chart::drawXAxis(std::string& out) const {
   }
   out += fmt::format("<path stroke=\"{}\" d=\"{}\"/>\n", kInk, ticks);
   // Under the marks: data at the axis (a method stuck at zero coverage) must stay visible.
-  out += fmt::format("<path stroke=\"{}\" fill=\"none\" d=\"M{} {}V{}H{}\"/>\n", kInk, px(left_),
-                     px(top_), px(bottom_), px(right_));
+  out += fmt::format("<path class=\"axes\" stroke=\"{}\" fill=\"none\" d=\"M{} {}V{}H{}\"/>\n",
+                     kInk, px(left_), px(top_), px(bottom_), px(right_));
   if (!spec_.x.label.empty()) {
     out += fmt::format(
         "<text class=\"axis-label\" font-size=\"{}\" x=\"{}\" y=\"{}\" "

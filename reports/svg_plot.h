@@ -76,6 +76,9 @@ struct AxisSpec {
 struct ChartSpec {
   double width = 480.0;  // px of the whole figure, axes and legend included
   double height = 260.0;
+  // px the plot area keeps at least: the figure grows taller when slanted category names or
+  // legend rows would squeeze it below this (0: the height is the figure's, whatever is left).
+  double minPlotHeight = 0.0;
   std::string ariaLabel;                // what a screen reader announces for the figure
   AxisSpec x;                           // ignored when categories are given
   std::vector<std::string> categories;  // a categorical x axis, one slot per name, in order

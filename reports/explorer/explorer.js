@@ -163,24 +163,8 @@
   const xs = boundary.map((p) => p[0]), ys = boundary.map((p) => p[1]);
   const minX = Math.min(...xs), maxX = Math.max(...xs), minY = Math.min(...ys), maxY = Math.max(...ys);
   const pad = 0.04 * Math.max(maxX - minX, maxY - minY);
-  const viewBox = `${minX - pad} ${-maxY - pad} ${maxX - minX + 2 * pad} ${maxY - minY + 2 * pad}`;
-  const em = 0.025 * Math.max(maxX - minX, maxY - minY);  // camera marker size, world units
-  // As the frames draw them (viz/cairo_drawing.h): an object less than this across (a player on
-  // a pitch) is drawn enlarged about the mean of its vertices, its edges with it, and ringed
-  // with dots, which says it is drawn larger than life.
-  const minObject = 0.6 * em;
-  function enlargement(ring) {
-    let cx = 0, cy = 0, x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
-    for (const [x, y] of ring) {
-      cx += x; cy += y;
-      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
-    }
-    const across = Math.max(x1 - x0, y1 - y0);
-    const factor = across >= minObject ? 1 : minObject / Math.max(across, 1e-9);
-    const c = [cx / ring.length, cy / ring.length];
-    return {c, factor, at: (p) => factor === 1 ? p
-                              : [c[0] + (p[0] - c[0]) * factor, c[1] + (p[1] - c[1]) * factor]};
-  }
+  const home = {x: minX - pad, y: -maxY - pad, w: maxX - minX + 2 * pad, h: maxY - minY + 2 * pad};
+  const viewBox = `${home.x} ${home.y} ${home.w} ${home.h}`;
 
   const container = document.getElementById("runs");
   const panels = runs.map((run, i) => {
@@ -207,6 +191,7 @@
     html("span", {}, " · reward ", numbers);
     const reward = html("b", {class: "reward"}, "", numbers);
     // This step in the visibility playground (camcov explore --playground), if there is one.
+    if (data.playground) html("span", {}, " · ", numbers);
     const playground = data.playground
         ? html("a", {class: "playground"}, "open this step in the playground", numbers) : null;
     const world = el("svg", {class: "world", viewBox, role: "img",
@@ -216,6 +201,19 @@
     return {run, section, coverage, weighted, resolved, utilization, reward, playground, world,
             info, selection: null};
   });
+
+  // One zoom and pan for every run's world (world_view.js); a redraw per frame at most.
+  let redrawQueued = false;
+  const view = camcovWorldView.create({
+    home, svgs: panels.map((panel) => panel.world), reset: document.getElementById("zoom-reset"),
+    onChange: () => {
+      if (redrawQueued) return;
+      redrawQueued = true;
+      requestAnimationFrame(() => {
+        redrawQueued = false;
+        for (const panel of panels) drawWorld(panel, current);
+      });
+    }});
 
   // The legend, from the palette the frames use (viz/palette.h).
   const legend = document.getElementById("legend");
@@ -253,6 +251,9 @@
   function drawWorld(panel, k) {
     const step = panel.run.decoded[Math.min(k, panel.run.decoded.length - 1)];
     const svg = panel.world;
+    // Marker sizes follow what is in view; an object less than minObject across (a player on
+    // a pitch) is drawn enlarged and ringed with dots, which says it is drawn larger than life.
+    const em = view.em(), minObject = 0.6 * em;
     svg.textContent = "";
     el("rect", {x: minX - pad, y: -maxY - pad, width: maxX - minX + 2 * pad,
                 height: maxY - minY + 2 * pad, fill: P.page}, svg);
@@ -285,7 +286,7 @@
     }
     const enlarged = [];  // rings drawn larger than life, to ring with dots
     const drawn = (ring) => {
-      const e = enlargement(ring);
+      const e = camcovWorldView.enlargement(ring, minObject);
       if (e.factor !== 1) enlarged.push(e);
       return e;
     };
@@ -440,7 +441,10 @@
 
   // ---- timeline -----------------------------------------------------------------------------
   const timeline = document.getElementById("timeline");
-  const T = {width: 1000, height: 150, left: 44, right: 12, top: 10, bottom: 36};
+  // In the timeline's own px (as wide as the page shows it, so text is not scaled), and low:
+  // the scene below it stays in view.
+  const T = {width: Math.max(600, Math.round(timeline.getBoundingClientRect().width)), height: 112,
+             left: 44, right: 12, top: 8, bottom: 30};
   const times = runs.reduce((a, r) => (r.series.time.length > a.length ? r.series.time : a), []);
   const t0 = times[0], t1 = times[times.length - 1] > t0 ? times[times.length - 1] : t0 + 1;
   const tx = (t) => T.left + (t - t0) / (t1 - t0) * (T.width - T.left - T.right);
@@ -455,12 +459,31 @@
     el("text", {x: tx(t), y: T.height - T.bottom + 14, "text-anchor": "middle", class: "tick"},
        timeline).textContent = `${t} s`;
   }
+  const curves = [["coverage", "", "coverage"], ["utilization", "5 3", "utilization"]];
+  // Where nobody is present (recorded tracks) coverage and utilization are 0 by definition:
+  // the curve leaves a gap there rather than plunge, which would read as a collapse.
+  const curvePath = (run, key) => {
+    const present = run.series.targetsPresent;
+    let d = "", open = false;
+    run.series.time.forEach((t, k) => {
+      if (present && present[k] === 0) {
+        open = false;
+        return;
+      }
+      d += `${open ? "L" : "M"}${tx(t).toFixed(1)} ${ty(run.series[key][k]).toFixed(1)}`;
+      open = true;
+    });
+    return d;
+  };
+  // Runs drawn later lie on top and thinner: where two runs' curves coincide, each earlier one
+  // shows as a rim around the later, so no run hides behind another.
+  const curveWidth = (i) => 1.5 + 2 * Math.min(2, runs.length - 1 - i);
   runs.forEach((run, i) => {
-    for (const [key, dash] of [["coverage", ""], ["utilization", "5 3"]]) {
-      el("polyline", {points: run.series.time.map((t, k) => `${tx(t).toFixed(1)},` +
-                                                           `${ty(run.series[key][k]).toFixed(1)}`).join(" "),
-                      fill: "none", stroke: run.color, "stroke-width": 1.6,
-                      "stroke-dasharray": dash, class: `curve ${key}`, "data-run": String(i)}, timeline);
+    for (const [key, dash] of curves) {
+      el("path", {d: curvePath(run, key), fill: "none", stroke: run.color,
+                  "stroke-width": curveWidth(i), "stroke-dasharray": dash,
+                  "stroke-linejoin": "round", class: `curve ${key}`, "data-run": String(i)},
+         timeline);
     }
     for (const e of run.events) {
       const mark = data.marks[e.mark];  // which events get marks: control/event_kind.h
@@ -473,6 +496,19 @@
                           `${e.camera >= 0 ? ` (camera ${e.camera})` : ""} — ${e.detail}`;
     }
   });
+  // What the curves are: their dashes, and the gap where nobody is present.
+  const curveLegend = document.getElementById("curve-legend");
+  for (const [key, dash, text] of curves) {
+    const item = html("span", {class: `item ${key}`}, null, curveLegend);
+    const sample = el("svg", {width: 30, height: 10, class: "sample"}, item);
+    el("line", {x1: 1, x2: 29, y1: 5, y2: 5, stroke: P.text, "stroke-width": 1.6,
+                "stroke-dasharray": dash}, sample);
+    item.appendChild(document.createTextNode(text));
+  }
+  html("span", {class: "item colours"}, "one colour per run, as its panel's", curveLegend);
+  if (runs.some((run) => run.series.targetsPresent)) {
+    html("span", {class: "item gap"}, "a gap: nobody present", curveLegend);
+  }
   const cursor = el("line", {y1: T.top, y2: T.height - T.bottom, stroke: "#1f2328",
                              "stroke-width": 1.2, class: "cursor"}, timeline);
   timeline.addEventListener("click", (e) => {
@@ -548,6 +584,7 @@
     action();
   });
 
+  view.fit();  // again, now that the timeline and its legend above the worlds are drawn
   render();
   document.body.dataset.ready = "1";
 })();

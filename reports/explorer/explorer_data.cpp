@@ -283,6 +283,12 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
   if (weighted) series["weightedCoverage"] = nlohmann::json::array();
   const bool resolved = scene.resolution.has_value();
   if (resolved) series["resolutionCoverage"] = nlohmann::json::array();
+  // Recorded tracks: how many targets are present at each step; where nobody is, the coverage
+  // terms are 0 by definition, and the timeline leaves a gap rather than draw a plunge.
+  const bool presence =
+      std::any_of(run.steps.begin(), run.steps.end(),
+                  [](const records::StepRow& s) { return s.targetsPresent >= 0; });
+  if (presence) series["targetsPresent"] = nlohmann::json::array();
   // Under limited knowledge: who heard whom at each step, [from, to] pairs.
   if (run.summary.messages) series["heard"] = nlohmann::json::array();
   for (const auto& step : run.steps) {
@@ -293,6 +299,7 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
       series["heard"].push_back(std::move(pairs));
     }
     series["time"].push_back(step.time);
+    if (presence) series["targetsPresent"].push_back(step.targetsPresent);
     series["coverage"].push_back(step.terms.coverage);
     if (weighted) series["weightedCoverage"].push_back(step.terms.weightedCoverage);
     if (resolved) series["resolutionCoverage"].push_back(step.resolutionCoverage);

@@ -10,7 +10,7 @@
 // its objects travel (with their speeds), the
 // palette and legend (viz/palette.h), and per run its method, seed, colour, the recorded
 // series (time, coverage, utilization, reward; weighted and resolution coverage where the
-// scene asks them), the cameras' limits, the events, and the
+// scene asks them; targetsPresent on recorded tracks), the cameras' limits, the events, and the
 // steps as one packed stream (packed_stream.h, base64). Per step, in order:
 //   objects    targets, then obstacles: how many are present (recorded tracks come and go),
 //              then each one's scene index, vertex count n and n (x, y) in mm — differences

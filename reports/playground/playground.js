@@ -143,8 +143,17 @@
     const pad = 0.05 * Math.max(x1 - x0, y1 - y0);
     return {x0: x0 - pad, y0: y0 - pad, w: x1 - x0 + 2 * pad, h: y1 - y0 + 2 * pad};
   })();
-  world.setAttribute("viewBox", `${bounds.x0} ${-bounds.y0 - bounds.h} ${bounds.w} ${bounds.h}`);
-  const em = 0.025 * Math.max(bounds.w, bounds.h);  // handles and markers: a fortieth of the room
+  // Zoom and pan (world_view.js, shared with the run explorer): handles and markers are a
+  // fortieth of what is in view, and an object smaller than minObject() is drawn enlarged.
+  const view = camcovWorldView.create({
+    home: {x: bounds.x0, y: -bounds.y0 - bounds.h, w: bounds.w, h: bounds.h}, svgs: [world],
+    reset: document.getElementById("zoom-reset"),
+    onChange: () => {
+      em = view.em();
+      if (result) draw();
+    }});
+  let em = view.em();
+  const minObject = () => 0.6 * em;
 
   function drawPending() {
     // The invalid edit, outlined over the last valid picture.
@@ -173,9 +182,18 @@
                        class: "view", "data-camera": String(j)}, world);
       }
     });
+    // A small object (a pedestrian in a plaza) is drawn enlarged about its centre and ringed
+    // with dots, as the frames and the explorer draw it, unless it is the one being edited.
+    const chosen = selected.handle || selected.object;
+    const shapes = new Map();  // "kind id" -> its enlargement
+    const enlarged = [];
     const object = (kind, o, fill) => {
-      const shape = el("polygon", {points: pts(o.ring), fill, class: "object", "data-kind": kind,
-                                   "data-id": String(o.id)}, world);
+      const editing = chosen && chosen.kind === kind && chosen.id === o.id;
+      const e = camcovWorldView.enlargement(o.ring, editing ? 0 : minObject());
+      shapes.set(`${kind} ${o.id}`, e);
+      if (e.factor !== 1) enlarged.push(e);
+      const shape = el("polygon", {points: pts(o.ring.map(e.at)), fill, class: "object",
+                                   "data-kind": kind, "data-id": String(o.id)}, world);
       shape.addEventListener("click", () => {
         selected.object = {kind, id: o.id};
         draw();
@@ -183,6 +201,17 @@
     };
     for (const o of result.obstacles) object("obstacle", o, P.obstacle);
     for (const t of result.targets) object("target", t, data.colors[t.id] || P.target);
+    for (const e of enlarged) {
+      el("circle", {cx: e.c[0], cy: -e.c[1], r: 0.5 * minObject() + 0.2 * em, fill: "none",
+                    stroke: P.text, "stroke-width": 1.2, "stroke-dasharray": "0.5 3",
+                    "stroke-linecap": "round", "vector-effect": "non-scaling-stroke",
+                    class: "enlarged"}, world);
+    }
+    // Each segment where it is drawn (on its target, enlarged or not): clicks pick it there.
+    for (const s of result.segments) {
+      const e = shapes.get(`target ${s.target}`);
+      [s.drawnA, s.drawnB] = e ? [e.at(s.a), e.at(s.b)] : [s.a, s.b];
+    }
     // Every edge coloured by how many cameras see it; a weighted one as wide as important.
     const weightOf = (s) => {
       const t = result.targets.find((o) => o.id === s.target);
@@ -195,17 +224,18 @@
       const w = weightOf(s);
       const key = `${P.seenBy[Math.min(s.visibleBy.length, 3)]} ${
           w === null ? 5 : 5 * (P.widthAtZero + P.widthPerWeight * w)}`;
-      groups.set(key, (groups.get(key) || "") + `M${s.a[0]},${-s.a[1]}L${s.b[0]},${-s.b[1]}`);
+      const [a, b] = [s.drawnA, s.drawnB];
+      groups.set(key, (groups.get(key) || "") + `M${a[0]},${-a[1]}L${b[0]},${-b[1]}`);
     }
     for (const [key, d] of groups) {
       const [stroke, width] = key.split(" ");
       el("path", {d, stroke, "stroke-width": width, fill: "none", "stroke-linecap": "round",
                   "vector-effect": "non-scaling-stroke", class: "segments"}, world);
     }
-    const chosen = selected.edge === null ? null : result.segments[selected.edge];
-    if (chosen) {
-      el("line", {x1: chosen.a[0], y1: -chosen.a[1], x2: chosen.b[0], y2: -chosen.b[1],
-                  stroke: P.seenBy[Math.min(chosen.visibleBy.length, 3)], "stroke-width": 10,
+    const edge = selected.edge === null ? null : result.segments[selected.edge];
+    if (edge) {
+      el("line", {x1: edge.drawnA[0], y1: -edge.drawnA[1], x2: edge.drawnB[0], y2: -edge.drawnB[1],
+                  stroke: P.seenBy[Math.min(edge.visibleBy.length, 3)], "stroke-width": 10,
                   "stroke-linecap": "round", "vector-effect": "non-scaling-stroke",
                   class: "segment selected", "data-segment": String(selected.edge)}, world);
     }
@@ -244,18 +274,26 @@
   }
 
   const kHandlesShown = 200;
+  const handleRadius = () => 0.3 * em;
+  // Its vertices at least two handles apart in view: each handle then stands clear of the next
+  // rather than merge into a blob (a pedestrian's 12-gon at plaza scale; zoom in for them).
+  const handlesFit = (ring) => ring.every((p, k) => {
+    const q = ring[(k + 1) % ring.length];
+    return Math.hypot(q[0] - p[0], q[1] - p[1]) >= 4 * handleRadius();
+  });
   function drawHandles() {
     const rings = [{kind: "boundary", id: 0, ring: result.boundary}]
         .concat(result.targets.map((t) => ({kind: "target", id: t.id, ring: t.ring})))
         .concat(result.obstacles.map((o) => ({kind: "obstacle", id: o.id, ring: o.ring})));
-    // A ring of hundreds of vertices gets its handles when one of its vertices or its fill is
-    // selected: thousands of handles would hide it and slow every redraw.
+    // A ring gets its handles when one of its vertices or its fill is selected, else when they
+    // fit apart in view and are not hundreds: thousands of handles would hide the ring and slow
+    // every redraw.
     const chosen = selected.handle || selected.object;
-    const shown = (r) => r.ring.length <= kHandlesShown ||
-                         (chosen && chosen.kind === r.kind && chosen.id === r.id);
+    const shown = (r) => (chosen && chosen.kind === r.kind && chosen.id === r.id) ||
+                         (r.ring.length <= kHandlesShown && handlesFit(r.ring));
     for (const r of rings.filter(shown)) {
       r.ring.forEach((p, k) => {
-        const h = el("circle", {cx: p[0], cy: -p[1], r: 0.3 * em, class: "handle",
+        const h = el("circle", {cx: p[0], cy: -p[1], r: handleRadius(), class: "handle",
                                 "data-ring": `${r.kind} ${r.id}`, "data-vertex": String(k)}, world);
         const s = selected.handle;
         if (s && s.kind === r.kind && s.id === r.id && s.vertex === k) h.classList.add("selected");
@@ -418,7 +456,7 @@
   function pick(p) {
     let best = null, bestDistance = 0.5 * em;
     result.segments.forEach((s, i) => {
-      const d = distanceToSegment(p, s.a, s.b);
+      const d = distanceToSegment(p, s.drawnA, s.drawnB);
       if (d <= bestDistance) [best, bestDistance] = [i, d];
     });
     return best;

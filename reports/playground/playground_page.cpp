@@ -7,6 +7,7 @@
 #include "camcov/version.h"
 #include "params/parameters.h"
 #include "records/atomic_file.h"
+#include "reports/explorer/explorer_assets.h"
 #include "reports/explorer/explorer_data.h"
 #include "reports/markup.h"
 #include "reports/playground/playground_assets.h"
@@ -53,7 +54,8 @@ std::string buildPlaygroundHtml(std::string_view sceneText, const std::string& f
              "camcov {}, compiled to WebAssembly, recomputes everything at every change. Drag a "
              "camera, turn it with the wheel (Shift: finely); drag any vertex (click a large "
              "object for its vertices), double-click an edge to add one, select one and press "
-             "Delete to remove it; click an edge for who sees it.</p></header>\n"
+             "Delete to remove it; click an edge for who sees it. The wheel on the floor zooms, a "
+             "drag on it pans.</p></header>\n"
              "<div class=\"toolbar\"><label>time <input id=\"time\" type=\"range\" min=\"0\" "
              "step=\"0.1\"></label><span id=\"time-value\">t = {:.2f} s</span>"
              "<button id=\"add-target\" type=\"button\">+ target</button>"
@@ -61,7 +63,9 @@ std::string buildPlaygroundHtml(std::string_view sceneText, const std::string& f
              "<button id=\"remove-object\" type=\"button\">remove the selected object"
              "</button><button id=\"delete-vertex\" type=\"button\">delete vertex</button>"
              "<button id=\"add-camera\" type=\"button\">+ camera</button>"
-             "<button id=\"remove-camera\" type=\"button\">remove camera</button></div>\n"
+             "<button id=\"remove-camera\" type=\"button\">remove camera</button>"
+             "<button id=\"zoom-reset\" type=\"button\" title=\"show the whole scene "
+             "again\">whole scene</button></div>\n"
              "<main><svg id=\"world\" role=\"img\" aria-label=\"the scene\"></svg>\n<aside>"
              "<div id=\"message\" role=\"alert\" hidden></div>"
              "<section><h2>The team</h2><table id=\"terms\"><tbody>"
@@ -90,9 +94,10 @@ std::string buildPlaygroundHtml(std::string_view sceneText, const std::string& f
              "</aside></main>\n"
              "<footer>camcov {}: the numbers are camcov inspect's, from the same C++.</footer>\n"
              "<script type=\"application/json\" id=\"camcov-data\">{}</script>\n"
-             "<script>{}</script>\n<script>{}</script>\n</body>\n</html>\n",
+             "<script>{}</script>\n<script>{}</script>\n<script>{}</script>\n</body>\n</html>\n",
              escapeXml(scene.name), escapeXml(kVersion), time, escapeXml(kVersion),
-             scriptSafe(data.dump()), scriptSafe(std::string(engineScript)), playgroundScript());
+             scriptSafe(data.dump()), scriptSafe(std::string(engineScript)),
+             explorer::worldViewScript(), playgroundScript());
 }
 
 void writePlayground(const std::filesystem::path& sceneFile, double time,

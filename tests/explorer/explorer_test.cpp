@@ -180,6 +180,11 @@ TEST(BenchExplorers, OnePagePerSceneWithEachMethodsMedianRunLinkedFromTheReport)
     for (const auto& m : summary["methods"]) {
       if (m["scene"] == scene) median.emplace_back(m["method"], m["medianSeed"]);
     }
+    // Side by side in the order of every table (control/methods.h), not by name.
+    std::vector<std::string> order;
+    for (const auto& [method, seed] : shown)
+      order.push_back(method);
+    EXPECT_EQ(order, (std::vector<std::string>{"paper", "local", "camcov"})) << scene;
     std::sort(shown.begin(), shown.end());
     std::sort(median.begin(), median.end());
     EXPECT_EQ(shown, median) << scene;

@@ -22,6 +22,7 @@ It needs the Debian packages chromium, chromium-driver and python3-selenium
 (scripts/install_deps.sh installs them) and fails, rather than skips, without them.
 Screenshots go to $CAMCOV_EXPLORER_SCREENSHOTS (else the test's tmp_path).
 """
+import io
 import json
 import math
 import os
@@ -31,6 +32,7 @@ import subprocess
 import time
 
 import pytest
+from PIL import Image
 
 from browser import start_chromium  # tests/support/browser.py
 
@@ -42,6 +44,8 @@ try:
                                             StaleElementReferenceException,
                                             TimeoutException, WebDriverException)
     from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
     from selenium.webdriver.common.actions.action_builder import ActionBuilder
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
@@ -808,4 +812,192 @@ def test_under_limited_knowledge_the_world_draws_who_heard_whom_and_a_camera_say
     assert explorer.world(0).find_elements(By.CSS_SELECTOR, "line.heard") == []
     assert explorer.wait_for(lambda: explorer.field(0, "heard"), lambda text: text != "camera 1",
                              "whom camera 0 heard at step 1") == "nobody"
+    assert_no_console_errors(explorer)
+
+
+# ----------------------------------------------------------------------------- what a reader sees
+# At 1400 × 900, as a reader opens the page: measured, not grepped.
+
+# Every element whose box reaches past the window's right edge.
+WIDER_THAN_WINDOW_JS = """
+const room = document.documentElement.clientWidth;
+return Array.from(document.querySelectorAll("body *"))
+  .filter((e) => e.getBoundingClientRect().right > room + 0.5)
+  .map((e) => `${e.tagName.toLowerCase()}#${e.id}.${e.className.baseVal ?? e.className}`)
+  .slice(0, 10);
+"""
+
+
+def three_methods_page(camcov, tmp_path, playground=False):
+    """The page of tiny_dynamic's paper, local and camcov runs side by side (camcov's
+    description is the longest), optionally linked to a playground page."""
+    runs = [record_run(camcov, tmp_path / "runs", method)[0] for method in ("paper", "local", "camcov")]
+    extra = []
+    if playground:
+        play = tmp_path / "playground.html"
+        result = camcov("playground", SCENE, "-o", play)
+        assert result.returncode == 0, result.stderr
+        extra = ["--playground", play]
+    result = camcov("explore", *runs, "-o", tmp_path / "three.html", *extra)
+    assert result.returncode == 0, result.stderr
+    return tmp_path / "three.html"
+
+
+def test_at_1400_by_900_every_world_is_in_view_and_nothing_is_wider_than_the_window(
+        explorer, camcov, tmp_path):
+    explorer.driver.set_window_size(1400, 900)
+    explorer.open(three_methods_page(camcov, tmp_path))
+    view = explorer.driver.execute_script(
+        "return {width: document.documentElement.clientWidth, height: window.innerHeight,"
+        " worlds: Array.from(document.querySelectorAll('svg.world'))"
+        "   .map((w) => w.getBoundingClientRect().toJSON())}")
+    assert len(view["worlds"]) == 3
+    for world in view["worlds"]:
+        assert world["top"] >= 0 and world["left"] >= 0, world
+        assert world["bottom"] <= view["height"] + 0.5, f"below the fold: {world}, {view['height']}"
+        assert world["right"] <= view["width"] + 0.5, world
+        assert world["height"] >= 240, f"a world too small to read: {world}"
+    assert explorer.driver.execute_script(WIDER_THAN_WINDOW_JS) == []
+    (screenshots_folder(tmp_path) / "explorer-1400x900.png").write_bytes(explorer.screenshot())
+    assert_no_console_errors(explorer)
+
+
+def test_worlds_side_by_side_line_up_whatever_their_titles_and_numbers_take(
+        explorer, camcov, tmp_path):
+    explorer.driver.set_window_size(1400, 900)
+    explorer.open(three_methods_page(camcov, tmp_path, playground=True))
+    tops = explorer.driver.execute_script(
+        "return Array.from(document.querySelectorAll('svg.world'))"
+        ".map((w) => w.getBoundingClientRect().top)")
+    titles = explorer.driver.execute_script(
+        "return Array.from(document.querySelectorAll('section.run h2'))"
+        ".map((h) => h.getBoundingClientRect().height)")
+    assert max(titles) > min(titles) + 5, f"no title takes more lines than another: {titles}"
+    assert max(tops) - min(tops) <= 0.5, f"worlds start at {tops}"
+    assert_no_console_errors(explorer)
+
+
+def test_the_reward_and_the_playground_link_are_set_apart(explorer, camcov, tmp_path):
+    explorer.open(three_methods_page(camcov, tmp_path, playground=True))
+    numbers = explorer.run(0).find_element(By.CSS_SELECTOR, ".numbers")
+    assert re.search(r"reward -?\d+\.\d{4} · open this step", numbers.text), numbers.text
+    gap = explorer.driver.execute_script(
+        "const [r, a] = [arguments[0].querySelector('.reward'), arguments[0].querySelector('a.playground')]"
+        ".map((e) => e.getClientRects()[0]);"
+        "return Math.abs(r.top - a.top) > 2 ? null : a.left - r.right;", numbers)
+    assert gap is None or gap >= 6, f"{gap} px between the reward and the link"
+    assert_no_console_errors(explorer)
+
+
+def test_a_legend_says_which_curve_is_coverage_and_which_utilization(explorer, paper_page):
+    page, _ = paper_page
+    explorer.driver.set_window_size(1400, 900)
+    explorer.open(page)
+    legend = explorer.driver.find_element(By.ID, "curve-legend")
+    box = legend.rect
+    assert box["height"] > 0 and box["y"] + box["height"] <= explorer.driver.execute_script(
+        "return window.innerHeight"), f"the legend is not in view: {box}"
+    dashes = explorer.driver.execute_script("""
+      const dash = (e) => (e && e.getAttribute("stroke-dasharray")) || "";
+      const sample = (word) => Array.from(document.querySelectorAll("#curve-legend .item"))
+        .find((i) => i.textContent.trim() === word);
+      return {coverage: [dash(sample("coverage")?.querySelector("line")),
+                         dash(document.querySelector("svg.timeline .curve.coverage"))],
+              utilization: [dash(sample("utilization")?.querySelector("line")),
+                            dash(document.querySelector("svg.timeline .curve.utilization"))]};""")
+    assert dashes["coverage"][0] == dashes["coverage"][1], dashes
+    assert dashes["utilization"][0] == dashes["utilization"][1], dashes
+    assert dashes["coverage"][0] != dashes["utilization"][0], dashes
+    assert_no_console_errors(explorer)
+
+
+def test_a_recording_leaves_a_gap_where_nobody_is_present(explorer, camcov, tmp_path):
+    """Two people tracked for 2 s in a run of 3 s: after 2 s nobody is present and coverage is
+    0 by definition; the curves end at 2 s instead of plunging to 0."""
+    table = tmp_path / "walk.csv"
+    table.write_text("id,t,x,y\n" + "".join(f"{i},{k * 0.5},{2 + k * 0.5 + 3 * i},{3 + i}\n"
+                                            for i in range(2) for k in range(5)))
+    scene = tmp_path / "walk.json"
+    result = camcov("import", "csv", table, "--cameras", 2, "-o", scene)
+    assert result.returncode == 0, result.stderr
+    run_file, run = record_run(camcov, tmp_path / "runs", "paper", scene, 3)
+    present = run["series"]["targetsPresent"]
+    last = max(k for k, n in enumerate(present) if n > 0)
+    assert present[-1] == 0 and last < len(present) - 2, present
+    explorer.open(write_explorer(camcov, [run_file], tmp_path / "walk.html"))
+    times = run["series"]["time"]
+    layout = explorer.driver.execute_script("""
+      const grid = document.querySelector("svg.timeline line").getBoundingClientRect();
+      return {left: grid.left, right: grid.right,
+              curves: Array.from(document.querySelectorAll("svg.timeline .curve"))
+                .map((c) => c.getBoundingClientRect().right)};""")
+    end = layout["left"] + (times[last] - times[0]) / (times[-1] - times[0]) * \
+        (layout["right"] - layout["left"])
+    assert len(layout["curves"]) == 2
+    for right in layout["curves"]:
+        assert right <= end + 2, f"a curve runs on to {right} px, past the last step with " \
+            f"anyone present ({end:.1f} px)"
+    assert "nobody present" in explorer.text("#curve-legend")
+    assert_no_console_errors(explorer)
+
+
+def test_two_runs_with_the_same_curves_both_show(explorer, camcov, tmp_path):
+    """The same run twice, the second relabelled as the baseline (its own colour): both
+    colours show along the curves, neither hidden behind the other."""
+    run_file, run = record_run(camcov, tmp_path / "runs", "paper")
+    twin = json.loads(run_file.read_text())
+    twin["method"] = "local"
+    twin_file = tmp_path / "runs" / "twin.json"
+    twin_file.write_text(json.dumps(twin))
+    explorer.open(write_explorer(camcov, [run_file, twin_file], tmp_path / "twins.html"))
+    colours = explorer.driver.execute_script(
+        "return Array.from(document.querySelectorAll('section.run .swatch'))"
+        ".map((s) => getComputedStyle(s).backgroundColor)")
+    rgb = [tuple(int(v) for v in re.findall(r"\d+", c)[:3]) for c in colours]
+    assert len(set(rgb)) == 2, rgb
+    timeline = explorer.driver.find_element(By.CSS_SELECTOR, "svg.timeline")
+    image = Image.open(io.BytesIO(explorer.screenshot(timeline))).convert("RGB")
+    near = lambda p, c: sum(abs(a - b) for a, b in zip(p, c)) < 60
+    pixels = list(image.getdata())
+    counts = [sum(1 for p in pixels if near(p, c)) for c in rgb]
+    assert min(counts) >= 0.25 * max(counts) and min(counts) > 100, \
+        f"pixels of each run's colour along the curves: {counts}"
+    assert_no_console_errors(explorer)
+
+
+# ----------------------------------------------------------------------------- zoom and pan
+
+def view_box(explorer, run=0):
+    return [float(v) for v in explorer.driver.execute_script(
+        "return arguments[0].getAttribute('viewBox')", explorer.world(run)).split()]
+
+
+def test_the_wheel_zooms_every_world_a_drag_pans_and_whole_scene_resets(explorer, camcov,
+                                                                         tmp_path):
+    runs = [record_run(camcov, tmp_path / "runs", m)[0] for m in ("paper", "local")]
+    explorer.open(write_explorer(camcov, runs, tmp_path / "zoom.html"))
+    home = view_box(explorer)
+    world = explorer.world(0)
+    target = lambda: explorer.world(0).find_element(By.CSS_SELECTOR, "polygon[data-target]")
+    before = target().rect["width"]
+    ActionChains(explorer.driver).scroll_from_origin(ScrollOrigin.from_element(world), 0, -500) \
+        .perform()
+    explorer.settle()
+    zoomed = view_box(explorer)
+    assert zoomed[2] < home[2] / 1.5, f"the wheel did not zoom in: {home} -> {zoomed}"
+    assert view_box(explorer, 1) == zoomed, \
+        "the worlds side by side show the same part of the scene"
+    assert target().rect["width"] > before * 1.5, "the target is not drawn larger"
+    # A drag on the world moves the view with the pointer: 100 px to the right shows what lay
+    # 100 px to the left.
+    scale = zoomed[2] / explorer.world(0).rect["width"]
+    ActionChains(explorer.driver).move_to_element_with_offset(explorer.world(0), 10, 10) \
+        .click_and_hold().move_by_offset(50, 0).move_by_offset(50, 0).release().perform()
+    explorer.settle()
+    panned = view_box(explorer)
+    assert panned[0] == pytest.approx(zoomed[0] - 100 * scale, rel=0.05, abs=scale * 3), \
+        (zoomed, panned)
+    explorer.click(explorer.driver.find_element(By.ID, "zoom-reset"))
+    explorer.settle()
+    assert view_box(explorer) == pytest.approx(home)
     assert_no_console_errors(explorer)

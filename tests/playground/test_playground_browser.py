@@ -28,6 +28,7 @@ import pytest
 from browser import start_chromium  # tests/support/browser.py
 
 from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
@@ -302,4 +303,95 @@ def test_the_explorer_opens_a_step_in_the_playground_at_its_time_and_poses(page,
         assert abs(pose["x"] - recorded[k][0]) <= 1e-3 and abs(pose["y"] - recorded[k][1]) <= 1e-3
     assert abs(page.term("coverage") - inspect(scene, poses, time)["coverage"]) <= 1e-9
     assert abs(page.term("coverage") - run["series"]["coverage"][k]) <= 1e-2
+    assert not page.severe(), page.severe()
+
+
+# ----------------------------------------------------------------------------- a crowd
+# 40 people (discs of 0.25 m, 12-gons) walking across a 60 m × 40 m plaza, as a recording of
+# pedestrians gives them (`camcov import csv`): each person is under 1% of the room across.
+
+def crowd_page(folder):
+    rows = ["id,t,x,y"]
+    for i in range(40):
+        x, y = 2 + (i * 37) % 56, 2 + (i * 23) % 36
+        rows += [f"{i},{k},{x + 0.8 * k},{y}" for k in range(5)]
+    table = folder / "crowd.csv"
+    table.write_text("\n".join(rows) + "\n")
+    scene = folder / "crowd.json"
+    result = camcov("import", "csv", table, "--cameras", 4, "-o", scene)
+    assert result.returncode == 0, result.stderr
+    return write_page(folder, scene)
+
+
+# Every vertex handle on screen: its centre and radius in px.
+HANDLES_JS = """
+return Array.from(document.querySelectorAll("#world .handle")).map((h) => {
+  const r = h.getBoundingClientRect();
+  return [r.left + r.width / 2, r.top + r.height / 2, r.width / 2];
+});
+"""
+
+
+def overlapping_handles(page):
+    handles = page.driver.execute_script(HANDLES_JS)
+    return handles, [(a, b) for i, a in enumerate(handles) for b in handles[i + 1:]
+                     if ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5 < a[2] + b[2] - 0.5]
+
+
+def people_across(page):
+    """Each person's size on screen, px (the larger side of the polygon drawn)."""
+    return page.driver.execute_script(
+        "return Array.from(document.querySelectorAll('#world polygon.object[data-kind=\"target\"]'))"
+        ".map((p) => { const r = p.getBoundingClientRect(); return Math.max(r.width, r.height); })")
+
+
+def test_a_crowd_is_drawn_enlarged_without_blobs_of_handles(page, tmp_path):
+    page.driver.set_window_size(1400, 900)
+    page.open(crowd_page(tmp_path).as_uri() + "#t=1")
+    sizes = people_across(page)
+    assert len(sizes) == 40, sizes
+    assert min(sizes) >= 12, f"people drawn {min(sizes):.1f} px across: too small to see"
+    handles, overlaps = overlapping_handles(page)
+    assert handles, "not even the plaza's corners have handles"
+    assert not overlaps, f"{len(overlaps)} pairs of {len(handles)} handles overlap"
+    assert not page.severe(), page.severe()
+
+
+def view_box(page):
+    return [float(v) for v in page.driver.execute_script(
+        "return document.getElementById('world').getAttribute('viewBox')").split()]
+
+
+def test_the_wheel_zooms_a_drag_pans_and_whole_scene_resets(page, tmp_path):
+    page.driver.set_window_size(1400, 900)
+    page.open(crowd_page(tmp_path).as_uri() + "#t=1")
+    home = view_box(page)
+    person = page.find('#world polygon.object[data-kind="target"][data-id="0"]')
+    # Zoomed about one person until people are drawn at true size: their own vertex handles
+    # appear, still clear of each other.
+    for _ in range(8):
+        ActionChains(page.driver).scroll_from_origin(
+            ScrollOrigin.from_element(page.find('#world polygon.object[data-id="0"]')), 0, -300) \
+            .perform()
+        page.settled()
+    zoomed = view_box(page)
+    assert zoomed[2] < home[2] / 20, f"the wheel did not zoom in: {home} -> {zoomed}"
+    handles, overlaps = overlapping_handles(page)
+    assert len(page.all('#world .handle[data-ring="target 0"]')) == 12, \
+        "at true size a person gets its 12 vertex handles"
+    assert not overlaps, overlaps
+    # A drag on the floor pans: 120 px to the left shows what lay 120 px to the right, and is
+    # not a click (no edge gets explained).
+    scale = zoomed[2] / page.find("#world").rect["width"]
+    floor = page.find("#world")
+    ActionChains(page.driver).move_to_element_with_offset(floor, 5, 5).click_and_hold() \
+        .move_by_offset(-60, 0).move_by_offset(-60, 0).release().perform()
+    page.settled()
+    panned = view_box(page)
+    assert panned[0] == pytest.approx(zoomed[0] + 120 * scale, rel=0.05, abs=3 * scale), \
+        (zoomed, panned)
+    assert not page.all("#world .segment.selected"), "the end of the pan selected an edge"
+    page.find("#zoom-reset").click()
+    page.settled()
+    assert view_box(page) == pytest.approx(home)
     assert not page.severe(), page.severe()

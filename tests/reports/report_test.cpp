@@ -329,8 +329,8 @@ TEST(Report, AWeightedScenesRowsShowItsWeightedCoverageToo) {
     }
     const auto& w = m.at("averageWeightedCoverage");
     EXPECT_EQ(w["count"], 2);
-    expected =
-        fmt::format("weighted {:.3f} ± {:.3f}", w["mean"].get<double>(), w["sd"].get<double>());
+    expected = fmt::format("weighted <span class=\"value\">{:.3f} ± {:.3f}</span>",
+                           w["mean"].get<double>(), w["sd"].get<double>());
   }
   const std::string table = section(readFile(dir / "results" / "report.html"), "summary");
   EXPECT_EQ(countOf(table, expected), 1) << expected;
