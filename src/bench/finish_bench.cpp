@@ -90,7 +90,7 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
     header += fmt::format(" {:>15}", method);
   for (const auto& method : methods) {
     if (method != summary.reference)
-      header += fmt::format("  {:<20}", method + " vs " + summary.reference);
+      header += fmt::format("  {:<26}", method + " vs " + summary.reference);
   }
   observer.report(header);
   for (const auto& scene : summary.scenes) {
@@ -105,7 +105,7 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
     for (const auto& method : methods) {
       if (method == summary.reference) continue;
       const records::Comparison* c = summary.comparison(scene, method);
-      line += fmt::format("  {:<20}", c == nullptr ? std::string("-") : records::verdictText(*c));
+      line += fmt::format("  {:<26}", c == nullptr ? std::string("-") : records::verdictText(*c));
     }
     observer.report(line);
   }

@@ -351,7 +351,8 @@ void count(Tally& tally, const Comparison& c, const std::string& against) {
 
 std::string verdictText(const Comparison& c) {
   if (c.winner.empty()) return "-";
-  if (c.seedsNeeded > 0) return fmt::format("{} ({} seeds)", c.winner, c.seedsNeeded);
+  // "needs ≥ 4 seeds", not "(4 seeds)": read as the seeds that were run.
+  if (c.seedsNeeded > 0) return fmt::format("{}: needs ≥ {} seeds", c.winner, c.seedsNeeded);
   return fmt::format("{} (p {:.3g})", c.winner, c.pValue);
 }
 

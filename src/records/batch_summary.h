@@ -100,8 +100,8 @@ struct Comparison : RunsComparison {
   std::string winner;
 };
 
-// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided (4 seeds)",
-// or "-" when there was no comparison.
+// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided: needs ≥ 4
+// seeds" (per method, for any p to reach significance), or "-" when there was no comparison.
 std::string verdictText(const Comparison& c);
 
 // How one method fared against the reference (or `against`) over the scenes where both ran.
