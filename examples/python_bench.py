@@ -1,6 +1,6 @@
 """A Python controller beside the paper's method on three published scenes, with a report.
 
-    PYTHONPATH=build/python:examples python3 examples/python_bench.py \\
+    PYTHONPATH=build/python:examples build/python/bin/python3 examples/python_bench.py \\
         [--scenes ../shared/coverage_scenes] [--out python-bench] [--seeds 5]
 
 Writes OUT/report.html (open it in a browser) and prints how the Python method did against

@@ -90,7 +90,7 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
     header += fmt::format(" {:>15}", method);
   for (const auto& method : methods) {
     if (method != summary.reference)
-      header += fmt::format("  {:<20}", method + " vs " + summary.reference);
+      header += fmt::format("  {:<26}", method + " vs " + summary.reference);
   }
   observer.report(header);
   for (const auto& scene : summary.scenes) {
@@ -105,7 +105,7 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
     for (const auto& method : methods) {
       if (method == summary.reference) continue;
       const records::Comparison* c = summary.comparison(scene, method);
-      line += fmt::format("  {:<20}", c == nullptr ? std::string("-") : records::verdictText(*c));
+      line += fmt::format("  {:<26}", c == nullptr ? std::string("-") : records::verdictText(*c));
     }
     observer.report(line);
   }
@@ -142,11 +142,13 @@ records::BatchSummary finishBench(const records::BatchFolder& folder,
   std::map<std::string, std::string> groupOf;
   for (const records::SceneEntry& scene : manifest.scenes)
     groupOf[scene.name] = scene.group;
-  const records::BatchSummary summary = records::summarize(
-      outcomes, options.referenceAmong(manifest.methods), manifest.methods, groupOf);
+  // Listed in the one order of methods, whatever order --methods gave them in.
+  const std::vector<std::string> methods = control::inMethodOrder(manifest.methods);
+  const records::BatchSummary summary =
+      records::summarize(outcomes, options.referenceAmong(manifest.methods), methods, groupOf);
   folder.writeSummary(summary);
   const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters);
-  reportSummary(summary, manifest.methods, observer);
+  reportSummary(summary, methods, observer);
   for (const auto& f : summary.failures) {
     observer.report(fmt::format("  failed: {} {} seed {}: {}", f.scene, f.method, f.seed, f.error));
   }

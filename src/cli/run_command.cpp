@@ -13,6 +13,7 @@
 #include "records/run_files.h"
 #include "scene/scene_loader.h"
 #include "sim/scene_parameters.h"
+#include "util/readable_number.h"
 #include "util/run_threads.h"
 #include "viz/run_replay.h"
 
@@ -44,8 +45,9 @@ int run(const RunOptions& o) {
   std::cout << fmt::format(
       "{} {} seed {}: average coverage {:.4f}, utilization {:.4f} over {} s; min distance to "
       "objects {:.3f} m; closer than δ {:.2f} s avoidable, {:.2f} s unavoidable\n  -> {}\n",
-      record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization, s.duration,
-      s.minObjectDistance, s.avoidableContactTime, s.unavoidableContactTime, file.string());
+      record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization,
+      readableNumber(s.duration), s.minObjectDistance, s.avoidableContactTime,
+      s.unavoidableContactTime, file.string());
   if (s.averageWeightedCoverage) {
     std::cout << fmt::format(
         "  average weighted coverage {:.4f} (the reward's{})\n", *s.averageWeightedCoverage,

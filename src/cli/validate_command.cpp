@@ -24,14 +24,15 @@ Registration addValidateCommand(CLI::App& app) {
             for (const auto& file : *files) {
               try {
                 const scene::Scene s = scene::loadScene(file);
-                sim::forScene({}, s, file, false);  // checks its knowledge settings
+                // Checks its knowledge settings, and gives the length of its run: the scene's
+                // own duration (a recording's window) where it has one.
+                const params::SimParams run = sim::forScene({}, s, file, false).sim;
                 std::cout << fmt::format("ok    {}: {} target(s), {} obstacle(s), {} camera(s)\n",
                                          printable(file), s.targets.size(), s.obstacles.size(),
                                          s.cameras.size());
                 for (const std::string& warning : s.warnings)
                   std::cout << fmt::format("  warning: {}\n", printable(warning));
-                // Over a run of the default length, at the simulator's step.
-                const params::SimParams run;
+                // Over the run `camcov run` would make, at the simulator's step.
                 for (const auto& o : kinematics::findObjectOverlaps(s, run.duration, run.dt)) {
                   std::cout << fmt::format("  warning: {} (checked every {:g} s over {:g} s)\n",
                                            kinematics::describeOverlap(o), run.dt, run.duration);

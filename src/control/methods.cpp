@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "control/decentralized_controller.h"
 #include "control/learned_controller.h"
@@ -92,6 +94,18 @@ std::vector<std::string> defaultMethods() {
   for (const Method& m : table()) {
     if (m.role != Role::example) names.emplace_back(m.name);
   }
+  return names;
+}
+
+std::vector<std::string> inMethodOrder(std::vector<std::string> names) {
+  const std::vector<Method>& all = table();
+  const auto place = [&all](const std::string& name) {
+    const auto row =
+        std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == name; });
+    return std::make_pair(row - all.begin(), std::string_view(name));
+  };
+  std::sort(names.begin(), names.end(),
+            [&](const std::string& a, const std::string& b) { return place(a) < place(b); });
   return names;
 }
 

@@ -60,6 +60,11 @@ const Method* findMethod(std::string_view name);
 const Method& requireMethod(std::string_view name, std::span<const Method> extra = {});
 // The methods a batch runs when not told which: every one but the examples.
 std::vector<std::string> defaultMethods();
+// `names` in the one order of methods wherever several are listed (the summary's rows, the
+// CLI's columns, the report's tables, figures and videos): the table's, the built-in rows then
+// registered ones; names it does not know (a Python controller's, one of another version)
+// after them, by name.
+std::vector<std::string> inMethodOrder(std::vector<std::string> names);
 // What a batch of these methods compares the others with: the first baseline among them,
 // else the first of them. `methods` must not be empty.
 std::string referenceAmong(const std::vector<std::string>& methods);

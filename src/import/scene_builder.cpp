@@ -11,6 +11,7 @@
 #include "scene/scene_writer.h"
 #include "util/counted.h"
 #include "util/input_error.h"
+#include "util/readable_number.h"
 
 namespace camcov::import {
 namespace {
@@ -296,8 +297,9 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
   if (o.busiest > 0.0) {
     o.from = busiestStart(recording, o.busiest, o.maxGap);
     o.to = o.from + o.busiest;
-    built.notes.push_back(
-        fmt::format("the busiest {} s: from {} s to {} s", o.busiest, o.from, o.to));
+    built.notes.push_back(fmt::format("the busiest {} s: from {} s to {} s",
+                                      readableNumber(o.busiest), readableNumber(o.from),
+                                      readableNumber(o.to)));
   }
   built.notes.insert(built.notes.begin(), recording.notes.begin(), recording.notes.end());
   const Selected kept = selectTracks(recording, o, built.notes);

@@ -229,15 +229,18 @@ Comparison compareOnScene(const std::string& scene, const std::string& method,
   return c;
 }
 
+// A method's place in the listing order `order`: its position there, else after, by name.
+std::pair<std::size_t, std::string_view> placeIn(std::span<const std::string> order,
+                                                 const std::string& method) {
+  return {static_cast<std::size_t>(std::find(order.begin(), order.end(), method) - order.begin()),
+          method};
+}
+
 // Every scene's comparisons against the reference and between every other pair of methods,
 // and their tallies, into `summary`; methods ranked by their place in `order`.
 void compareMethods(const CoverageByScene& coverageByScene, const std::string& reference,
                     std::span<const std::string> order, BatchSummary& summary) {
-  // The batch's order: a method's position in `order`, else after, by name.
-  const auto rank = [&order](const std::string& m) {
-    return std::make_pair(
-        static_cast<std::size_t>(std::find(order.begin(), order.end(), m) - order.begin()), m);
-  };
+  const auto rank = [&order](const std::string& m) { return placeIn(order, m); };
   std::map<std::string, Tally> tallies;
   std::map<std::pair<std::string, std::string>, Tally> pairTallies;
   for (const auto& [scene, coverageOfScene] : coverageByScene) {
@@ -249,13 +252,14 @@ void compareMethods(const CoverageByScene& coverageByScene, const std::string& r
     };
     std::vector<std::string> others;
     for (const auto& [method, coverage] : byMethod) {
-      if (method == reference) continue;
-      summary.comparisons.push_back(
-          compareOnScene(scene, method, reference, coverage, runsOf(reference), tallies[method]));
-      others.push_back(method);
+      if (method != reference) others.push_back(method);
     }
     std::sort(others.begin(), others.end(),
               [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+    for (const std::string& method : others) {
+      summary.comparisons.push_back(compareOnScene(scene, method, reference, *runsOf(method),
+                                                   runsOf(reference), tallies[method]));
+    }
     for (std::size_t i = 0; i < others.size(); ++i) {
       for (std::size_t k = i + 1; k < others.size(); ++k) {
         const std::string &against = others[i], &method = others[k];
@@ -302,6 +306,12 @@ BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& refe
     std::vector<double>& coverage = coverageByScene[key.first][key.second];
     summary.methods.push_back(summarizeMethod(key.first, key.second, jobs, coverage));
   }
+  // Each scene's rows in the listing order (jobsOf holds them by method name).
+  std::stable_sort(summary.methods.begin(), summary.methods.end(),
+                   [&order](const MethodSummary& a, const MethodSummary& b) {
+                     if (a.scene != b.scene) return naturalLess(a.scene, b.scene);
+                     return placeIn(order, a.method) < placeIn(order, b.method);
+                   });
   summary.reference = reference;
   compareMethods(coverageByScene, reference, order, summary);
   summary.groups = groupScenes(summary, groupOf);
@@ -351,7 +361,8 @@ void count(Tally& tally, const Comparison& c, const std::string& against) {
 
 std::string verdictText(const Comparison& c) {
   if (c.winner.empty()) return "-";
-  if (c.seedsNeeded > 0) return fmt::format("{} ({} seeds)", c.winner, c.seedsNeeded);
+  // "needs ≥ 4 seeds", not "(4 seeds)": read as the seeds that were run.
+  if (c.seedsNeeded > 0) return fmt::format("{}: needs ≥ {} seeds", c.winner, c.seedsNeeded);
   return fmt::format("{} (p {:.3g})", c.winner, c.pValue);
 }
 

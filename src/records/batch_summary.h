@@ -100,8 +100,8 @@ struct Comparison : RunsComparison {
   std::string winner;
 };
 
-// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided (4 seeds)",
-// or "-" when there was no comparison.
+// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided: needs ≥ 4
+// seeds" (per method, for any p to reach significance), or "-" when there was no comparison.
 std::string verdictText(const Comparison& c);
 
 // How one method fared against the reference (or `against`) over the scenes where both ran.
@@ -152,9 +152,10 @@ struct BatchSummary {
   const Comparison* comparison(const std::string& scene, const std::string& method) const;
 };
 
-// Compares every method with `reference` (the baseline, by default), and the others pairwise
-// in the order of `order` (the batch's methods; names it lacks come after, by name), and
-// groups the scenes by `groupOf` (scene name to group; scenes it lacks are in no group).
+// Compares every method with `reference` (the baseline, by default), and the others pairwise,
+// and groups the scenes by `groupOf` (scene name to group; scenes it lacks are in no group).
+// Each scene's rows, comparisons and pairs, and the tallies, follow `order` (the batch's
+// methods in control::inMethodOrder; names it lacks come after, by name).
 BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
                        std::span<const std::string> order = {},
                        const std::map<std::string, std::string>& groupOf = {});

@@ -13,6 +13,7 @@
 #include "records/atomic_file.h"
 #include "records/json_numbers.h"
 #include "scene/scene_validation.h"
+#include "util/readable_number.h"
 
 namespace camcov::records {
 namespace {
@@ -358,9 +359,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
           if (hearing.from < 0 || hearing.to < 0 ||
               hearing.from >= static_cast<int>(cameras.size()) ||
               hearing.to >= static_cast<int>(cameras.size()) || !(hearing.sentAt <= row.time))
-            throw InputError(fmt::format("{}: series.heard[{}] names a camera or a time the run "
-                                         "does not have",
-                                         source, k));
+            throw InputError(
+                fmt::format("{}: series.heard[{}] names a camera or a time the run "
+                            "does not have",
+                            source, k));
           row.heard.push_back(hearing);
         }
       }
@@ -381,10 +383,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       const double at = e.at("time").get<double>();
       const int camera = e.at("camera").get<int>();
       if (!(at >= 0.0 && at <= lastTime) || camera < -1 || camera >= cameraCount) {
-        throw InputError(
-            fmt::format("{}: an event at {} s of camera {} lies outside the run "
-                        "(0 to {} s, cameras 0 to {}, -1 for none)",
-                        source, at, camera, lastTime, cameraCount - 1));
+        throw InputError(fmt::format(
+            "{}: an event at {} s of camera {} lies outside the run "
+            "(0 to {} s, cameras 0 to {}, -1 for none)",
+            source, readableNumber(at), camera, readableNumber(lastTime), cameraCount - 1));
       }
       control::ControlEvent event{at,     e.at("kind").get<std::string>(),
                                   camera, e.at("detail").get<std::string>(),

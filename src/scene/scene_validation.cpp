@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "scene/deformation.h"
+#include "util/readable_number.h"
 
 namespace camcov::scene {
 
@@ -39,7 +40,8 @@ std::string describeDeformationDefect(const MovingObject& object) {
       const double t = t0 + (t1 - t0) * s / kSamplesPerInterval;
       localShapeAt(object, t, shape);
       if (std::string problem = describeRingDefect(shape); !problem.empty()) {
-        return fmt::format("interpolated shape at t = {} s is not simple: {}", t, problem);
+        return fmt::format("interpolated shape at t = {} s is not simple: {}", readableNumber(t),
+                           problem);
       }
     }
     t0 = t1;

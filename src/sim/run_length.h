@@ -17,6 +17,7 @@
 
 #include "params/parameters.h"
 #include "util/input_error.h"
+#include "util/readable_number.h"
 
 namespace camcov::sim {
 
@@ -30,13 +31,14 @@ inline params::Parameters withRunLength(params::Parameters p, std::optional<doub
     throw InputError(
         fmt::format("a run of {} s is shorter than one step of dt = {} s: it would "
                     "average nothing (--duration, sim.duration)",
-                    p.sim.duration, p.sim.dt));
+                    readableNumber(p.sim.duration), readableNumber(p.sim.dt)));
   }
   if (p.sim.duration / p.sim.dt > kMaxSteps) {
     throw InputError(fmt::format(
         "a run of {} s at dt = {} s would record {:.0f} steps; at most {:.0f} are recorded (every "
         "camera's pose at each step is kept in memory): shorten the run or lengthen dt",
-        p.sim.duration, p.sim.dt, p.sim.duration / p.sim.dt, kMaxSteps));
+        readableNumber(p.sim.duration), readableNumber(p.sim.dt), p.sim.duration / p.sim.dt,
+        kMaxSteps));
   }
   return p;
 }

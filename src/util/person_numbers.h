@@ -6,19 +6,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 
-namespace camcov {
+#include "util/readable_number.h"
 
-// `value` as a person reads it: at most 6 significant digits, exponent form when long.
-inline std::string readableNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
+namespace camcov {
 
 // The whole of `text` (no spaces, no sign on an unsigned) as a finite number; nullopt when it
 // is not one (empty, trailing characters, "nan", "inf", out of double's range).

@@ -68,6 +68,24 @@ bench::BenchRequest tinyRequest(const fs::path& out) {
   return request;
 }
 
+TEST(RunBench, ListsMethodsInTheOneOrderOfMethodsWhateverOrderTheyWereAskedIn) {
+  const ScratchDir dir;
+  RecordingObserver observer;
+  bench::BenchRequest request = tinyRequest(dir / "b");  // local, then paper
+  request.seeds = 1;
+  request.outputs.videos = "none";
+  const bench::BenchResult result = bench::runBench(request, observer);
+  const auto& lines = observer.said.reports;
+  const auto header = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.rfind("scene (average coverage)", 0) == 0;
+  });
+  ASSERT_NE(header, lines.end());
+  EXPECT_LT(header->find(" paper"), header->find(" local")) << *header;
+  ASSERT_EQ(result.summary.methods.size(), 2u);
+  EXPECT_EQ(result.summary.methods[0].method, "paper") << "the paper's method leads";
+  EXPECT_EQ(result.summary.methods[1].method, "local");
+}
+
 TEST(RunBench, PrintsNothingAndSaysEverythingToItsObserverInOrder) {
   const ScratchDir dir;
   RecordingObserver observer;

@@ -1,6 +1,8 @@
 // End-to-end: the camcov executable as a user runs it.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "camcov/version.h"
@@ -91,6 +93,25 @@ TEST(CliValidate, ObjectsThatPassThroughEachOtherAreAWarningInValidateAndTheRepo
   EXPECT_EQ(readFile(dir / "short" / "report.html").find("class=\"note scene-warning\""),
             std::string::npos)
       << "a run that ends before they meet has nothing to warn of";
+}
+
+// A scene with its own length (an imported window: 9.7 s as a difference of recorded times) is
+// checked over that length, and every length printed reads as written.
+TEST(CliValidate, OverlapsAreCheckedOverTheScenesOwnDurationPrintedRounded) {
+  auto scene =
+      nlohmann::json::parse(readFile(testDataDir() / "warnings" / "target_through_obstacle.json"));
+  scene["duration"] = 12.3 - 2.6;  // 9.700000000000001
+  const ScratchDir dir;
+  const auto file = dir / "window.json";
+  std::ofstream(file) << scene.dump();
+  const auto validated = runCamcov("validate " + file.string());
+  EXPECT_EQ(validated.exitCode, 0) << validated.out;
+  EXPECT_NE(validated.out.find("(checked every 0.1 s over 9.7 s)"), std::string::npos)
+      << validated.out;
+  const auto ran =
+      runCamcov("run " + file.string() + " --method local --out " + dir.path().string());
+  ASSERT_EQ(ran.exitCode, 0) << ran.out << ran.err;
+  EXPECT_NE(ran.out.find(" over 9.7 s;"), std::string::npos) << ran.out;
 }
 
 TEST(CliState, Dynamic9AtSevenPointThreeFollowsTheLoopRule) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
+#include <vector>
 
 #include "support/small_worlds.h"
 #include "util/input_error.h"
@@ -20,6 +22,11 @@ TEST(Methods, NamesAreUniqueAndEachHasAColourAndADescription) {
   }
   EXPECT_EQ(methods().front().name, "paper") << "the paper's method leads figures and tables";
   EXPECT_TRUE(names.count("local")) << "the baseline";
+}
+
+TEST(Methods, ListingsFollowTheTableThenUnknownNamesByName) {
+  EXPECT_EQ(inMethodOrder({"zeta", "camcov", "alpha", "local", "paper"}),
+            (std::vector<std::string>{"paper", "local", "camcov", "alpha", "zeta"}));
 }
 
 TEST(Methods, AnUnknownNameIsAnInputErrorListingTheKnownOnes) {

@@ -113,6 +113,27 @@ TEST(Summarize, OutputDoesNotDependOnInputOrder) {
   EXPECT_EQ(summaryToCsv(summarize(jobs, "local")), summaryToCsv(summarize(reversed, "local")));
 }
 
+TEST(Summarize, EachScenesRowsAndComparisonsFollowTheListingOrder) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    for (const char* scene : {"a", "b"}) {
+      jobs.push_back(job(scene, "camcov", s, 0.7 + 0.001 * s));
+      jobs.push_back(job(scene, "local", s, 0.1 + 0.001 * s));
+      jobs.push_back(job(scene, "paper", s, 0.5 + 0.001 * s));
+    }
+  }
+  const std::vector<std::string> order{"paper", "local", "camcov"};
+  const BatchSummary summary = summarize(jobs, "local", order);
+  std::vector<std::string> rows, compared;
+  for (const MethodSummary& m : summary.methods)
+    rows.push_back(m.scene + " " + m.method);
+  for (const Comparison& c : summary.comparisons)
+    compared.push_back(c.scene + " " + c.method);
+  EXPECT_EQ(rows, (std::vector<std::string>{"a paper", "a local", "a camcov", "b paper", "b local",
+                                            "b camcov"}));
+  EXPECT_EQ(compared, (std::vector<std::string>{"a paper", "a camcov", "b paper", "b camcov"}));
+}
+
 TEST(Summarize, MethodsOtherThanTheReferenceAreComparedPairwiseInTheBatchOrder) {
   std::vector<JobOutcome> jobs;
   for (std::uint64_t s = 1; s <= 5; ++s) {

@@ -125,7 +125,7 @@ TEST(VerdictRule, SummaryCountsUndecidedScenesAndWritesTheSeedsNeeded) {
   const BatchSummary summary = summarize(jobs, "local");
   ASSERT_EQ(summary.comparisons.size(), 1u);
   EXPECT_EQ(summary.comparisons[0].winner, "undecided");
-  EXPECT_EQ(verdictText(summary.comparisons[0]), "undecided (4 seeds)");
+  EXPECT_EQ(verdictText(summary.comparisons[0]), "undecided: needs ≥ 4 seeds");
   ASSERT_EQ(summary.tallies.size(), 1u);
   EXPECT_EQ(summary.tallies[0].undecided, 1);
   EXPECT_EQ(summary.tallies[0].ties, 0);
