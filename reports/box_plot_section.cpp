@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -70,7 +71,7 @@ std::string panel(const std::vector<const SceneData*>& scenes,
 }  // namespace
 
 std::string boxPlotSection(const ReportData& data) {
-  const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
+  const std::vector<std::string> methods = control::inMethodOrder(data.manifest.methods);
   const Metric metrics[] = {
       {"coverage", "average coverage", "Average coverage (eq. 4)", &MethodRuns::averageCoverage},
       {"utilization", "average utilization", "Average utilization",

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -25,7 +26,7 @@ std::string tallyCell(const records::Tally& t) {
 std::string groupsSection(const ReportData& data) {
   const records::BatchSummary& s = data.summary;
   if (s.groups.size() < 2) return {};
-  const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
+  const std::vector<std::string> methods = control::inMethodOrder(data.manifest.methods);
   std::string head = "<th scope=\"col\">Family or folder</th><th scope=\"col\">Scenes</th>";
   for (const auto& method : methods) {
     head += fmt::format("<th scope=\"col\">{}</th>",

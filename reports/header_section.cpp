@@ -3,9 +3,11 @@
 
 #include <filesystem>
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
+#include "util/readable_number.h"
 
 namespace camcov::reports {
 namespace {
@@ -43,7 +45,7 @@ std::string duration(double seconds) {
 // Mean over scenes of each method's mean coverage: one number per method for the lede.
 std::string meanCoverageByMethod(const ReportData& data) {
   std::vector<std::string> parts;
-  for (const auto& method : orderedMethods(data.manifest.methods)) {
+  for (const auto& method : control::inMethodOrder(data.manifest.methods)) {
     double sum = 0.0;
     int n = 0;
     for (const auto& m : data.summary.methods) {
@@ -73,7 +75,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   std::string out = "<header class=\"report-header\">\n<h1>camcov benchmark report</h1>\n";
   // What ran, said from the batch itself: its methods by their own descriptions.
   std::string ran;
-  const std::vector<std::string> methods = orderedMethods(m.methods);
+  const std::vector<std::string> methods = control::inMethodOrder(m.methods);
   for (std::size_t i = 0; i < methods.size(); ++i) {
     // "paper (global + local)" names itself; "local optimization" gets its name in front.
     const std::string label(methodStyle(methods[i]).label);
@@ -119,7 +121,7 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   // What made each method's results (a resume with other code is refused): the build's
   // sources for C++ methods, the factory's file for Python ones.
   std::string identities;
-  for (const std::string& method : orderedMethods(m.methods)) {
+  for (const std::string& method : control::inMethodOrder(m.methods)) {
     const auto it = m.methodIdentities.find(method);
     identities += fmt::format(
         "{}<b>{}</b> <code>{}</code>", identities.empty() ? "" : "; ", escapeXml(method),
@@ -130,7 +132,8 @@ std::string headerSection(const ReportData& data, const BuildContext& context) {
   fact("Jobs", fmt::format("{} = {} scenes × {} methods × {} seeds; {} failed", jobs,
                            m.scenes.size(), m.methods.size(), m.seeds, s.failures.size()));
   fact("Simulated",
-       fmt::format("{} s per run, dt = {} s", m.parameters.sim.duration, m.parameters.sim.dt));
+       fmt::format("{} s per run, dt = {} s", readableNumber(m.parameters.sim.duration),
+                   readableNumber(m.parameters.sim.dt)));
   fact("Compute time", fmt::format("{} wall, {} CPU, summed over {} jobs", duration(wall),
                                    duration(cpu), data.timings.size()));
   fact("Report built", escapeXml(context.date));

@@ -1,8 +1,6 @@
 #include "reports/method_style.h"
 
-#include <algorithm>
 #include <array>
-#include <tuple>
 
 #include <fmt/format.h>
 
@@ -11,15 +9,6 @@
 
 namespace camcov::reports {
 namespace {
-
-// Position in the table of methods; methods it does not know (results of another version)
-// come after, by name.
-std::size_t rank(std::string_view method) {
-  const auto all = control::methods();
-  return static_cast<std::size_t>(
-      std::find_if(all.begin(), all.end(), [&](const auto& m) { return m.name == method; }) -
-      all.begin());
-}
 
 thread_local const std::map<std::string, records::MethodLook>* broughtLooks = nullptr;
 
@@ -54,13 +43,6 @@ std::string methodMark(std::string_view color, std::string_view html) {
   return fmt::format(
       "<span class=\"method-mark\"><span class=\"method-dot\" style=\"--c:{}\"></span>{}</span>",
       color, html);
-}
-
-std::vector<std::string> orderedMethods(std::vector<std::string> methods) {
-  std::sort(methods.begin(), methods.end(), [](const std::string& a, const std::string& b) {
-    return std::make_tuple(rank(a), a) < std::make_tuple(rank(b), b);
-  });
-  return methods;
 }
 
 }  // namespace camcov::reports

@@ -37,7 +37,4 @@ class BroughtMethodLooks {
 // a narrow column or legend wraps before the dot, never between the dot and the name.
 std::string methodMark(std::string_view color, std::string_view html);
 
-// In the table's order, then any other, by name.
-std::vector<std::string> orderedMethods(std::vector<std::string> methods);
-
 }  // namespace camcov::reports

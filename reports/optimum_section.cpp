@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -23,7 +24,7 @@ constexpr double kNearOptimum = 0.98;
 }  // namespace
 
 std::string optimumSection(const ReportData& data) {
-  const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
+  const std::vector<std::string> methods = control::inMethodOrder(data.manifest.methods);
   std::map<std::pair<std::string, std::string>, const records::MethodSummary*> rows;
   for (const auto& m : data.summary.methods)
     rows[{m.scene, m.method}] = &m;

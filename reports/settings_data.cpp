@@ -1,4 +1,5 @@
 #include "reports/settings_data.h"
+#include "control/methods.h"
 
 #include <fmt/format.h>
 
@@ -200,7 +201,7 @@ SettingsData loadSettingsData(const std::vector<fs::path>& folders, const std::s
             [](const std::string& a, const std::string& b) { return naturalLess(a, b); });
   for (const auto& scene : data.scenes)
     data.groups[scene] = groupOf(scene, data.settings);
-  data.methods = orderedMethods({methods.begin(), methods.end()});
+  data.methods = control::inMethodOrder({methods.begin(), methods.end()});
   return data;
 }
 

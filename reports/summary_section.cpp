@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -137,7 +138,7 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
     const SceneData& scene = data.scenes[i];
     if (scene.group != group) continue;
     std::vector<const records::MethodSummary*> rows;
-    for (const auto& method : orderedMethods(data.manifest.methods)) {
+    for (const auto& method : control::inMethodOrder(data.manifest.methods)) {
       for (const auto* m : byScene[scene.name]) {
         if (m->method == method) rows.push_back(m);
       }
@@ -152,7 +153,7 @@ std::string groupTable(SceneGroup group, const ReportData& data) {
     bodies += sceneBody(scene, data.summary, rows, i);
   }
   std::vector<std::string> verdicts;
-  for (const auto& method : orderedMethods(data.manifest.methods)) {
+  for (const auto& method : control::inMethodOrder(data.manifest.methods)) {
     const auto it = tallies.find(method);
     if (it == tallies.end()) continue;
     verdicts.push_back(fmt::format(

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "control/event_kind.h"
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -188,7 +189,7 @@ std::string sceneFigure(const SceneData& scene, const std::vector<std::string>& 
 }  // namespace
 
 std::string timeSeriesSection(const ReportData& data) {
-  const std::vector<std::string> methods = orderedMethods(data.manifest.methods);
+  const std::vector<std::string> methods = control::inMethodOrder(data.manifest.methods);
   double duration = data.manifest.parameters.sim.duration;
   for (const auto& s : data.scenes) {
     for (const auto& [method, runs] : s.methods) {

@@ -8,6 +8,7 @@
 
 #include "util/natural_order.h"
 
+#include "control/methods.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/sections.h"
@@ -35,7 +36,7 @@ VideoName videoName(const std::string& stem, const std::vector<std::string>& met
 // then others by name), then by seed.
 std::vector<std::string> inMethodOrder(std::vector<std::string> urls,
                                        const std::vector<std::string>& batchMethods) {
-  const std::vector<std::string> methods = orderedMethods(batchMethods);
+  const std::vector<std::string> methods = control::inMethodOrder(batchMethods);
   std::stable_sort(urls.begin(), urls.end(), [&](const std::string& a, const std::string& b) {
     const VideoName x = videoName(std::filesystem::path(a).stem().string(), methods);
     const VideoName y = videoName(std::filesystem::path(b).stem().string(), methods);

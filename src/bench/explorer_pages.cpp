@@ -6,10 +6,10 @@
 #include <map>
 
 #include "bench/bench_observer.h"
+#include "control/methods.h"
 
 #include "records/run_files.h"
 #include "reports/explorer/explorer_page.h"
-#include "reports/method_style.h"
 #include "util/input_error.h"
 
 namespace camcov::bench {
@@ -21,7 +21,7 @@ OutputBatch writeBenchExplorers(const records::BatchFolder& folder,
   std::vector<std::string> methods;
   for (const auto& run : runs)
     methods.push_back(run.method);
-  methods = reports::orderedMethods(methods);
+  methods = control::inMethodOrder(methods);
   const auto rank = [&](const std::string& method) {
     return std::find(methods.begin(), methods.end(), method) - methods.begin();
   };

@@ -30,10 +30,5 @@ TEST(MethodStyle, AnUnknownMethodIsNamedAndColouredByItsNameApartFromTheTable) {
   EXPECT_GE(seen.size(), 3u) << "names spread over the palette";
 }
 
-TEST(MethodStyle, OrdersTheTablesMethodsFirstThenTheOthersByName) {
-  EXPECT_EQ(orderedMethods({"zeta", "local", "alpha", "paper"}),
-            (std::vector<std::string>{"paper", "local", "alpha", "zeta"}));
-}
-
 }  // namespace
 }  // namespace camcov::reports
