@@ -2,23 +2,17 @@
 // Numbers that come from a person — a command-line option, a scene or track file, a Python
 // argument — are read one way: the whole text is the number, it is finite, and it lies in
 // its documented range; a count is a non-negative integer that fits. Messages print numbers
-// and limits readably ("1e+200", never 309 digits).
+// and limits exactly and readably (readableNumber).
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 
-namespace camcov {
+#include "util/readable_number.h"
 
-// `value` as a person reads it: at most 6 significant digits, exponent form when long.
-inline std::string readableNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
+namespace camcov {
 
 // The whole of `text` (no spaces, no sign on an unsigned) as a finite number; nullopt when it
 // is not one (empty, trailing characters, "nan", "inf", out of double's range).
