@@ -219,6 +219,25 @@ TEST(HostileInput, AValueJustPastItsLimitIsShownExactlyBesideTheLimit) {
   EXPECT_NE(pose.err.find("1000000000.5 lies beyond ±1e+09"), std::string::npos) << pose.err;
 }
 
+// The playground's page runs the engine it embeds: any other file (a script, an empty file, a
+// page) would make a page that draws nothing, so it is refused naming the option.
+TEST(HostileInput, APlaygroundEngineThatIsNotTheEngineIsRefusedNamingTheOption) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  std::ofstream(dir / "script.js") << "var createCamcovEngine = () => {};\n";
+  std::ofstream(dir / "empty.js");
+  std::ofstream(dir / "page.html") << "<!doctype html><title>x</title>\n";
+  for (const std::string engine : {"script.js", "empty.js", "page.html"}) {
+    const CommandResult r = runCamcov("playground " + scene + " --engine " +
+                                      (dir / engine).string() + " -o " + (dir / "p.html").string());
+    EXPECT_EQ(r.exitCode, 2) << engine << ": " << r.err;
+    EXPECT_NE(r.err.find("--engine " + (dir / engine).string() + ": not the engine"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "p.html")) << engine;
+  }
+}
+
 }  // namespace
 }  // namespace camcov::testing
 
