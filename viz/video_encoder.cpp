@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "records/atomic_file.h"
 #include "util/input_error.h"
+#include "util/temporary_outputs.h"
 #include "viz/argb_to_yuv420.h"
 #include "viz/file_extension.h"
 
@@ -70,6 +72,7 @@ void requireMp4(const std::filesystem::path& file) {
 struct VideoEncoder::Impl {
   std::filesystem::path file;
   std::filesystem::path partial;
+  std::optional<TemporaryOutput> registered;  // the partial file while it exists
   VideoSettings settings;
   // Declared before the codec context and frames so that it closes the file last.
   AvPtr<AVFormatContext> format;
@@ -131,7 +134,9 @@ struct VideoEncoder::Impl {
     stream->time_base = codec->time_base;  // a wish: the muxer may pick a finer one
     stream->avg_frame_rate = codec->framerate;
     records::prepareOutputFile(file);
-    const int opened = avio_open(&format->pb, partial.c_str(), AVIO_FLAG_WRITE);
+    int opened = 0;
+    registered.emplace(partial,
+                       [&] { opened = avio_open(&format->pb, partial.c_str(), AVIO_FLAG_WRITE); });
     if (opened < 0) throw InputError(file.string() + ": cannot create: " + avError(opened));
     AVDictionary* options = nullptr;
     av_dict_set(&options, "movflags", "+faststart", 0);
@@ -224,6 +229,7 @@ void VideoEncoder::finish() {
   std::error_code error;
   std::filesystem::rename(m.partial, m.file, error);
   if (error) throw InputError(m.file.string() + ": cannot write: " + error.message());
+  m.registered.reset();
   m.finished = true;
 }
 

@@ -14,6 +14,7 @@
 #include "reward/metrics.h"
 #include "scene/pitch_markings.h"
 #include "util/input_error.h"
+#include "util/readable_number.h"
 #include "visibility/unseen_reason.h"
 #include "viz/palette.h"
 #include "viz/run_replay.h"
@@ -273,7 +274,9 @@ nlohmann::json objectPathsJson(const scene::Scene& scene) {
   return out;
 }
 
-nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene) {
+// `packedBefore`: bytes the page's earlier runs packed, at most `maxPacked` with this run's.
+nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene,
+                       std::size_t& packedBefore, std::size_t maxPacked) {
   viz::RunReplay replay(run, scene);
   nlohmann::json series = {{"time", nlohmann::json::array()},
                            {"coverage", nlohmann::json::array()},
@@ -326,7 +329,16 @@ nlohmann::json runJson(const records::RunRecord& run, const scene::Scene& scene)
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
     replay.build(k, frame);
     packer.put(frame, packed);
+    if (packedBefore + packed.size() > maxPacked) {
+      throw InputError(fmt::format(
+          "an explorer page holds at most {} MiB of packed steps (the run of {}, seed {} "
+          "reached it at step {} of {}): a page that large does not load; explore fewer runs "
+          "at once, or runs with fewer steps (--duration) or cameras",
+          readableNumber(static_cast<double>(maxPacked) / (1 << 20)), run.metadata.method,
+          run.metadata.seed, k + 1, run.steps.size()));
+    }
   }
+  packedBefore += packed.size();
   const MethodStyle style = methodStyle(run.metadata.method);
   return {{"method", run.metadata.method},
           {"label", fmt::format("{} · seed {}", style.label, run.metadata.seed)},
@@ -390,7 +402,8 @@ nlohmann::json paletteJson() {
           {"legend", legend}};
 }
 
-nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene) {
+nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene,
+                            std::size_t maxPacked) {
   nlohmann::json out = {
       {"format", kExplorerFormat},
       {"scene",
@@ -410,6 +423,7 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
         {"alongEdge", kAlongEdge},
         {"weight", kWeightUnits}}},
       {"runs", nlohmann::json::array()}};
+  std::size_t packed = 0;  // bytes of steps, over the runs so far
   for (const records::RunRecord& run : runs) {
     const records::RunMetadata& first = runs.front().metadata;
     if (run.metadata.scene != first.scene || run.metadata.sceneHash != first.sceneHash) {
@@ -419,7 +433,7 @@ nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scen
           first.scene, first.method, first.seed, run.metadata.scene, run.metadata.method,
           run.metadata.seed));
     }
-    out["runs"].push_back(runJson(run, scene));
+    out["runs"].push_back(runJson(run, scene, packed, maxPacked));
   }
   return out;
 }

@@ -30,6 +30,7 @@
 //              camera resolves (viz::Frame::unresolved) target, edge, start and end as above
 // Millimetres keep the drawing and the numbers exact to what a user can see; views, which are
 // only filled, are kept to centimetres. A 30 s run of dynamic9 packs into about 0.3 MB.
+#include <cstddef>
 #include <span>
 
 #include <nlohmann/json.hpp>
@@ -47,9 +48,18 @@ inline constexpr double kAlongEdge = 1e6;       // per edge length
 inline constexpr double kTermUnits = 1e6;       // per unit of a reward term
 inline constexpr double kWeightUnits = 1e3;     // per unit of an edge's importance weight
 
-// Throws InputError when the runs are not of one scene (name and file hash) or a run does not
-// fit the scene (viz::RunReplay's checks).
-nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene);
+// The most packed step data one page holds, bytes over all its runs: 128 MiB in the page as
+// base64. Writing a page holds a few copies of it in memory and a browser must load it whole:
+// a 100,000-step run of three cameras (scenes/dynamic_loops_speeds.json) packs into 44 MB,
+// and a page of two of them (89 MB packed, 118 MB of page) took 0.78 GB to write, so about
+// 0.9 GB at the limit. Past it the page is refused as it is packed, before the copies are made.
+inline constexpr std::size_t kMaxPackedSteps = std::size_t{96} << 20;
+
+// Throws InputError when the runs are not of one scene (name and file hash), a run does not
+// fit the scene (viz::RunReplay's checks) or the runs' steps pack into more than
+// `maxPacked` bytes.
+nlohmann::json explorerData(std::span<const records::RunRecord> runs, const scene::Scene& scene,
+                            std::size_t maxPacked = kMaxPackedSteps);
 
 // The frames' palette and wordings for a page's script (viz/palette.h): colours, the width of
 // weighted edges, the legend, and why an edge is unseen (visibility::unseenPhrase by

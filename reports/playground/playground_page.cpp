@@ -119,9 +119,18 @@ void writePlayground(const std::filesystem::path& sceneFile, double time,
                      ": the WebAssembly engine is not there: install Debian's emscripten "
                      "(scripts/install_deps.sh does) and build again, or give --engine FILE");
   }
-  const std::string page =
-      buildPlaygroundHtml(readWholeFile(sceneFile), sceneFile.filename().string(), scene, time,
-                          poses, readWholeFile(engine));
+  const std::string engineScript = readWholeFile(engine);
+  // Any other file (another script, an engine of other bindings) would make a page that
+  // draws nothing: the engine this page calls begins with its interface's stamp.
+  constexpr std::string_view kStamp = CAMCOV_ENGINE_STAMP;
+  if (!engineScript.starts_with(std::string(kStamp) + "\n")) {
+    throw InputError(fmt::format(
+        "--engine {}: not the engine this page calls (its first line is not \"{}\"): give "
+        "camcov_engine.js as this build writes it (build/wasm), or leave --engine out",
+        engine.string(), kStamp));
+  }
+  const std::string page = buildPlaygroundHtml(
+      readWholeFile(sceneFile), sceneFile.filename().string(), scene, time, poses, engineScript);
   records::writeFileAtomically(out, page);
 }
 

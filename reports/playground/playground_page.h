@@ -22,7 +22,8 @@ std::string buildPlaygroundHtml(std::string_view sceneText, const std::string& f
                                 std::string_view engineScript);
 
 // Reads the scene (and the poses file, if given: one pose per camera) and the engine, writes
-// the page atomically. InputError for a bad scene or poses, or an engine that is not there.
+// the page atomically. InputError for a bad scene or poses, or an engine that is not there or
+// not the one the page calls (its first line, the stamp of its interface).
 void writePlayground(const std::filesystem::path& sceneFile, double time,
                      const std::optional<std::filesystem::path>& posesFile,
                      const std::filesystem::path& engine, const std::filesystem::path& out);

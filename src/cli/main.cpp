@@ -5,12 +5,14 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/signal_cleanup.h"
 #include "cli/terminal_safe_stream.h"
 #include "util/input_error.h"
 
 int main(int argc, char** argv) {
   using namespace camcov;
   const cli::TerminalSafeStderr safeMessages;
+  cli::removeTemporaryOutputsOnSignal();
   CLI::App app{"camcov: dynamic multi-target coverage with robotic cameras (Hönig & Ayanian)"};
   const std::vector<cli::Registration> commands = cli::addCommands(app);
   cli::setInvocation(argc, argv);

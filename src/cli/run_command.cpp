@@ -46,7 +46,7 @@ int run(const RunOptions& o) {
       "{} {} seed {}: average coverage {:.4f}, utilization {:.4f} over {} s; min distance to "
       "objects {:.3f} m; closer than δ {:.2f} s avoidable, {:.2f} s unavoidable\n  -> {}\n",
       record.metadata.scene, o.method, o.seed, s.averageCoverage, s.averageUtilization,
-      readableNumber(s.duration), s.minObjectDistance, s.avoidableContactTime,
+      roundedNumber(s.duration), s.minObjectDistance, s.avoidableContactTime,
       s.unavoidableContactTime, file.string());
   if (s.averageWeightedCoverage) {
     std::cout << fmt::format(

@@ -11,6 +11,7 @@
 #include "sim/scene_parameters.h"
 #include "util/input_error.h"
 #include "util/printable.h"
+#include "util/readable_number.h"
 
 namespace camcov::cli {
 
@@ -34,8 +35,9 @@ Registration addValidateCommand(CLI::App& app) {
                   std::cout << fmt::format("  warning: {}\n", printable(warning));
                 // Over the run `camcov run` would make, at the simulator's step.
                 for (const auto& o : kinematics::findObjectOverlaps(s, run.duration, run.dt)) {
-                  std::cout << fmt::format("  warning: {} (checked every {:g} s over {:g} s)\n",
-                                           kinematics::describeOverlap(o), run.dt, run.duration);
+                  std::cout << fmt::format("  warning: {} (checked every {} s over {} s)\n",
+                                           kinematics::describeOverlap(o), roundedNumber(run.dt),
+                                           roundedNumber(run.duration));
                 }
               } catch (const InputError& e) {
                 // On stdout, past std::cerr's filter: quoted file text made printable here.

@@ -13,6 +13,7 @@
 #include "util/counted.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
+#include "util/readable_number.h"
 
 namespace camcov::import {
 namespace {
@@ -231,8 +232,8 @@ Recording parseEthUcy(std::string obsmat, std::optional<std::string> map, const 
     if (!(std::isfinite(rate.fps) && rate.fps > 0.0 && rate.fps <= kMaxFrameRate)) {
       throw InputError(
           fmt::format("{}: give --fps: the velocities of the rows tell {} frames per "
-                      "second, beyond (0, {:g}]",
-                      file, rate.median, kMaxFrameRate));
+                      "second, beyond (0, {}]",
+                      file, readableNumber(rate.median), readableNumber(kMaxFrameRate)));
     }
     fps = rate.fps;
     recording.notes.push_back(

@@ -298,8 +298,8 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
     o.from = busiestStart(recording, o.busiest, o.maxGap);
     o.to = o.from + o.busiest;
     built.notes.push_back(fmt::format("the busiest {} s: from {} s to {} s",
-                                      readableNumber(o.busiest), readableNumber(o.from),
-                                      readableNumber(o.to)));
+                                      roundedNumber(o.busiest), roundedNumber(o.from),
+                                      roundedNumber(o.to)));
   }
   built.notes.insert(built.notes.begin(), recording.notes.begin(), recording.notes.end());
   const Selected kept = selectTracks(recording, o, built.notes);

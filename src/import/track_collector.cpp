@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "util/input_error.h"
+#include "util/readable_number.h"
 
 namespace camcov::import {
 
@@ -13,10 +14,10 @@ RecordedTrack& TrackCollector::add(const std::string& id, double time, geometry:
                                    const std::string& color) {
   // Bounded so that what is built from the recording, sampled every 0.1 s, stays in memory.
   if (!(std::abs(time) <= kMaxRecordingSeconds)) {
-    throw InputError(
-        fmt::format("{}{} {} at t = {} s: a recording's times lie within +-{:g} s "
-                    "(11.6 days) of its start",
-                    where.prefix(), kind, id, time, kMaxRecordingSeconds));
+    throw InputError(fmt::format(
+        "{}{} {} at t = {} s: a recording's times lie within +-{} s "
+        "(11.6 days) of its start",
+        where.prefix(), kind, id, readableNumber(time), readableNumber(kMaxRecordingSeconds)));
   }
   auto [it, fresh] = index_.try_emplace(id, tracks_.size());
   if (fresh) tracks_.push_back({id, color, kind, {}, {}, {}, 0.0});

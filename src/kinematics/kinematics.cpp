@@ -50,20 +50,16 @@ void Kinematics::placeObstacle(std::size_t i, double t, geometry::Ring& out) con
   place(scene_.obstacles.at(i), obstacleMotion_.at(i), t, out);
 }
 
-double Kinematics::speedBound(const scene::MovingObject& object, const Motion& motion) {
-  if (motion.track) {
-    double radius = 0.0;
-    for (const auto& v : object.shape)
-      radius = std::max(radius, geometry::norm(v));
-    return motion.track->maxSpeed() + motion.track->maxTurnRate() * radius;
-  }
+MotionBounds Kinematics::motionBounds(const scene::MovingObject& object, const Motion& motion) {
+  double radius = 0.0;
+  for (const auto& v : object.shape)
+    radius = std::max(radius, geometry::norm(v));
+  if (motion.track) return {motion.track->maxSpeed(), radius, motion.track->maxTurnRate(), 0.0};
   // A world point is r(t) + R(ωt)·q(t): its velocity r' + ω R'(ωt) q + R q' is bounded by
   // v + |ω|·|q| + |q'|. Interpolated shapes are convex combinations of the keyframes, so
   // |q| is at most the largest keyframe radius and |q'| the fastest keyframe-to-keyframe step.
   const bool moves = object.path.size() > 1;
-  double radius = 0.0, deformationSpeed = 0.0;
-  for (const auto& v : object.shape)
-    radius = std::max(radius, geometry::norm(v));
+  double deformationSpeed = 0.0;
   if (object.deformation) {
     const auto& d = *object.deformation;
     const geometry::Ring* from = &object.shape;
@@ -81,16 +77,16 @@ double Kinematics::speedBound(const scene::MovingObject& object, const Motion& m
       step(frame.shape, frame.time);
     step(object.shape, d.period);
   }
-  return (moves ? object.velocity : 0.0) + std::abs(object.angularVelocity) * radius +
-         deformationSpeed;
+  return {moves ? object.velocity : 0.0, radius, std::abs(object.angularVelocity),
+          deformationSpeed};
 }
 
-double Kinematics::targetSpeedBound(std::size_t i) const {
-  return speedBound(scene_.targets.at(i), targetMotion_.at(i));
+MotionBounds Kinematics::targetMotionBounds(std::size_t i) const {
+  return motionBounds(scene_.targets.at(i), targetMotion_.at(i));
 }
 
-double Kinematics::obstacleSpeedBound(std::size_t i) const {
-  return speedBound(scene_.obstacles.at(i), obstacleMotion_.at(i));
+MotionBounds Kinematics::obstacleMotionBounds(std::size_t i) const {
+  return motionBounds(scene_.obstacles.at(i), obstacleMotion_.at(i));
 }
 
 void Kinematics::worldAt(double t, World& out) const {

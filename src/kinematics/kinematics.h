@@ -18,6 +18,18 @@ struct ObjectPose {
   double angle = 0.0;        // rotation of the shape, radians (ω·t, not wrapped)
 };
 
+// How an object can move, over all time, in the parts the safety layer's distance bounds use.
+// Not something a controller may know.
+struct MotionBounds {
+  double travel = 0.0;       // m/s: its reference point never moves faster
+  double reach = 0.0;        // m: no point of it is ever farther from its reference point
+  double turnRate = 0.0;     // rad/s: |ω|, or a recorded track's fastest turn
+  double deformation = 0.0;  // m/s: the fastest vertex of its deformation, in its own frame
+  // No point of the object ever moves faster than this, m/s: a Lipschitz constant for
+  // distances to the object.
+  double pointSpeed() const { return travel + turnRate * reach + deformation; }
+};
+
 class Kinematics {
  public:
   explicit Kinematics(const scene::Scene& scene);
@@ -33,11 +45,10 @@ class Kinematics {
   // two instants of the world (the safety layer's continuous-time accounting).
   void placeTarget(std::size_t i, double t, geometry::Ring& out) const;
   void placeObstacle(std::size_t i, double t, geometry::Ring& out) const;
-  // No point of the object ever moves faster than this, m/s: path speed + |ω|·(largest
-  // radius of any shape it takes) + the fastest vertex of its deformation. A Lipschitz
-  // constant for distances to the object, not something a controller may know.
-  double targetSpeedBound(std::size_t i) const;
-  double obstacleSpeedBound(std::size_t i) const;
+  // Path speed, the largest radius of any shape it takes, |ω| and the fastest vertex of its
+  // deformation: the bounds of every motion the object may make.
+  MotionBounds targetMotionBounds(std::size_t i) const;
+  MotionBounds obstacleMotionBounds(std::size_t i) const;
   bool targetPresent(std::size_t i, double t) const { return scene_.targets.at(i).presentAt(t); }
   bool obstaclePresent(std::size_t i, double t) const {
     return scene_.obstacles.at(i).presentAt(t);
@@ -52,7 +63,7 @@ class Kinematics {
   };
   static Motion motionOf(const scene::MovingObject& object);
   static ObjectPose pose(const scene::MovingObject& object, const Motion& motion, double t);
-  static double speedBound(const scene::MovingObject& object, const Motion& motion);
+  static MotionBounds motionBounds(const scene::MovingObject& object, const Motion& motion);
   static void place(const scene::MovingObject& object, const Motion& motion, double t,
                     geometry::Ring& out);
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene_validation.h"
+#include "util/readable_number.h"
 
 namespace camcov::python {
 
@@ -47,9 +48,11 @@ void requireScenePoses(std::span<const geometry::Pose> poses, const char* what) 
     if (!within(p.x, scene::kMaxCoordinate) || !within(p.y, scene::kMaxCoordinate) ||
         !within(p.yaw, maxYaw)) {
       throw py::value_error(fmt::format(
-          "{}: row {} ({}, {}, {}): x and y must be finite and within ±{:g} m, yaw within "
-          "±{:.0f} rad ({:g}°)",
-          what, j, p.x, p.y, p.yaw, scene::kMaxCoordinate, maxYaw, scene::kMaxYawDegrees));
+          "{}: row {} ({}, {}, {}): x and y must be finite and within ±{} m, yaw within ±{} rad "
+          "({}°)",
+          what, j, readableNumber(p.x), readableNumber(p.y), readableNumber(p.yaw),
+          readableNumber(scene::kMaxCoordinate), readableNumber(maxYaw),
+          readableNumber(scene::kMaxYawDegrees)));
     }
   }
 }
@@ -123,8 +126,8 @@ std::vector<double> valuesFromArray(const py::handle& values, std::size_t count,
   std::vector<double> out(a.data(), a.data() + count);
   for (std::size_t i = 0; i < count; ++i) {
     if (!std::isfinite(out[i]) || std::abs(out[i]) > limit) {
-      throw py::value_error(fmt::format("{}: entry {} is {}: expected a finite number within ±{:g}",
-                                        what, i, out[i], limit));
+      throw py::value_error(fmt::format("{}: entry {} is {}: expected a finite number within ±{}",
+                                        what, i, readableNumber(out[i]), readableNumber(limit)));
     }
   }
   return out;

@@ -13,6 +13,7 @@
 
 #include "util/input_error.h"
 #include "util/protected_files.h"
+#include "util/temporary_outputs.h"
 
 namespace camcov::records {
 
@@ -54,7 +55,10 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view con
   prepareOutputFile(file);
   const std::filesystem::path temporary =
       file.string() + std::string(kTemporaryMarker) + std::to_string(::getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  int fd = -1;
+  const TemporaryOutput registered(temporary, [&] {
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  });
   if (fd < 0) throw InputError(systemError("cannot create", temporary));
   std::size_t written = 0;
   while (written < content.size()) {

@@ -1,7 +1,8 @@
 #pragma once
 // Results files appear whole or not at all: written to a temporary file beside the target,
 // flushed to disk, then renamed over it (rename is atomic within a file system). A killed
-// run leaves at most a stray "*.tmp-*" file, never a half-written result.
+// run leaves at most a stray "*.tmp-*" file, never a half-written result (and the CLI ended by
+// a signal not even that: util/temporary_outputs.h).
 #include <filesystem>
 #include <string_view>
 

@@ -386,7 +386,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
         throw InputError(fmt::format(
             "{}: an event at {} s of camera {} lies outside the run "
             "(0 to {} s, cameras 0 to {}, -1 for none)",
-            source, readableNumber(at), camera, readableNumber(lastTime), cameraCount - 1));
+            source, roundedNumber(at), camera, roundedNumber(lastTime), cameraCount - 1));
       }
       control::ControlEvent event{at,     e.at("kind").get<std::string>(),
                                   camera, e.at("detail").get<std::string>(),

@@ -15,9 +15,13 @@ struct Interval {
 // when the tolerance is sane.
 constexpr int kMaxDepth = 60;
 
-}  // namespace
-
-double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling, int maxSamples) {
+// One branch and bound; `withFloor`: intervals are bounded below by the floor too.
+double searchMinimum(const Sampled& g, double tolerance, double ceiling, int maxSamples,
+                     bool withFloor, bool& exhausted) {
+  auto lowerBound = [&](const Interval& i) {
+    const double slope = 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a));
+    return withFloor ? std::max(slope, g.floor(i.a, i.b)) : slope;
+  };
   double best = std::min(g.f0, g.f1);
   std::vector<Interval> stack{{0.0, g.h, g.f0, g.f1, 0}};
   for (int samples = 0; !stack.empty(); ++samples) {
@@ -26,21 +30,31 @@ double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling, int 
       // is left can be no lower than its intervals' lower bounds, so the answer stays a
       // lower bound of the minimum.
       for (const Interval& i : stack)
-        best = std::min(best, 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a)));
+        best = std::min(best, lowerBound(i));
+      exhausted = true;
       return best;
     }
     const Interval i = stack.back();
     stack.pop_back();
-    const double lower = 0.5 * (i.fa + i.fb - g.lipschitz * (i.b - i.a));
     // Nothing here can beat the best by more than the tolerance, or reach below the ceiling.
-    if (lower >= std::min(best - tolerance, ceiling) || i.depth >= kMaxDepth) continue;
+    if (lowerBound(i) >= std::min(best - tolerance, ceiling) || i.depth >= kMaxDepth) continue;
     const double m = 0.5 * (i.a + i.b);
     const double fm = g.f(m);
     best = std::min(best, fm);
     stack.push_back({m, i.b, fm, i.fb, i.depth + 1});
     stack.push_back({i.a, m, i.fa, fm, i.depth + 1});
   }
+  exhausted = false;
   return best;
+}
+
+}  // namespace
+
+double lipschitzMinimum(const Sampled& g, double tolerance, double ceiling, int maxSamples) {
+  bool exhausted = false;
+  const double slopeOnly = searchMinimum(g, tolerance, ceiling, maxSamples, false, exhausted);
+  if (!exhausted || !g.floor) return slopeOnly;
+  return searchMinimum(g, tolerance, ceiling, maxSamples, true, exhausted);
 }
 
 double firstBelow(const Sampled& g, double level, int depth) {

@@ -14,15 +14,22 @@ struct Sampled {
   double h = 0.0;
   double f0 = 0.0, f1 = 0.0;  // f(0), f(h), already known to the caller
   double lipschitz = 0.0;     // L ≥ |f'|
+  // Optional: a lower bound of f on [a, b] known otherwise than from the slope (the
+  // geometry of the motion), for functions whose L says little about how far they vary: a
+  // distance to an object spinning at 2,000 rad/s changes fast but stays within its reach.
+  std::function<double(double a, double b)> floor;
 };
 
 // The smallest value f takes on [0, h], as a value f attains within `tolerance` of the true
 // minimum. Intervals that cannot go below `ceiling` are not searched: with a finite ceiling
 // the result is exact only where it is below it. The work is bounded whatever L is: where the
-// search runs out of `maxSamples`, the result is a lower bound of the minimum instead (it may
-// then be below zero for a distance).
+// search runs out of `maxSamples`, it searches again with the floor as well (a fresh budget),
+// pruning what neither bound lets fall below the best; out of that too, the result is a lower
+// bound of the minimum instead (it may then be below zero for a distance). The floor is left
+// out of the first search so that a search that never needed it samples as it always did.
 // The most samples one minimum search takes by default: a step of a run needs a few hundred
-// at most; an object turning at 1e9 rad/s would need about L·h / tolerance of them.
+// at most; an object turning at 1e9 rad/s would need about L·h / tolerance of them without a
+// floor.
 inline constexpr int kMaxMinimumSamples = 1 << 16;
 double lipschitzMinimum(const Sampled& g, double tolerance,
                         double ceiling = std::numeric_limits<double>::infinity(),

@@ -25,9 +25,9 @@ StepAccounting::StepAccounting(const kinematics::Kinematics& kinematics, double 
     : kinematics_(kinematics), delta_(delta) {
   const auto& scene = kinematics.scene();
   for (std::size_t i = 0; i < scene.targets.size(); ++i)
-    targetSpeeds_.push_back(kinematics.targetSpeedBound(i));
+    targetBounds_.push_back(kinematics.targetMotionBounds(i));
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
-    obstacleSpeeds_.push_back(kinematics.obstacleSpeedBound(i));
+    obstacleBounds_.push_back(kinematics.obstacleMotionBounds(i));
 }
 
 Sample StepAccounting::sample(const kinematics::World& world,
@@ -36,7 +36,7 @@ Sample StepAccounting::sample(const kinematics::World& world,
   s.time = world.time;
   // One distance per object of the scene, in scene order; an object absent at this instant
   // (a recorded track) is infinitely far.
-  const std::size_t targets = targetSpeeds_.size(), objects = targets + obstacleSpeeds_.size();
+  const std::size_t targets = targetBounds_.size(), objects = targets + obstacleBounds_.size();
   for (const auto& c : cameras) {
     const geometry::Vec2 p = c.position();
     const std::size_t first = s.objectDistances.size();
@@ -68,18 +68,19 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
     return h > 0.0 ? geometry::distance(from.cameras[j], to.cameras[j]) / h : 0.0;
   };
 
-  const std::size_t objectCount = targetSpeeds_.size() + obstacleSpeeds_.size();
+  const std::size_t objectCount = targetBounds_.size() + obstacleBounds_.size();
   std::vector<Pair> pairs;
   for (std::size_t j = 0; j < from.cameras.size(); ++j) {
     for (std::size_t o = 0; o < objectCount; ++o) {
-      const bool isTarget = o < targetSpeeds_.size();
-      const std::size_t i = isTarget ? o : o - targetSpeeds_.size();
-      const double speed = isTarget ? targetSpeeds_[i] : obstacleSpeeds_[i];
+      const bool isTarget = o < targetBounds_.size();
+      const std::size_t i = isTarget ? o : o - targetBounds_.size();
+      const double speed = (isTarget ? targetBounds_[i] : obstacleBounds_[i]).pointSpeed();
       const Sampled s{{},
                       h,
                       from.objectDistances[j * objectCount + o],
                       to.objectDistances[j * objectCount + o],
-                      cameraSpeed(j) + speed};
+                      cameraSpeed(j) + speed,
+                      {}};
       pairs.push_back({j, -1, isTarget, i, s});
     }
     for (std::size_t i = 0; i < j; ++i) {
@@ -90,7 +91,8 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
                       h,
                       geometry::norm(r0),
                       geometry::norm(r1),
-                      h > 0.0 ? geometry::distance(r0, r1) / h : 0.0};
+                      h > 0.0 ? geometry::distance(r0, r1) / h : 0.0,
+                      {}};
       pairs.push_back({j, static_cast<std::ptrdiff_t>(i), false, 0, s});
     }
   }
@@ -117,6 +119,22 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
           kinematics_.placeObstacle(i, t, ring);
         }
         return geometry::distanceToPolygon(ring, cameraAt(j, tau));
+      };
+      // Over [a, b] the object's reference point stays within travel·(b − a)/2 of where it is
+      // at the middle, and every point of the object within its reach of that point, while
+      // the camera stays on its segment: bounds that do not grow with the object's spin.
+      p.distance.floor = [this, target = p.target, i = p.object, t0, j, cameraAt](double a,
+                                                                                  double b) {
+        const double middle = t0 + 0.5 * (a + b);
+        if (!(target ? kinematics_.targetPresent(i, middle)
+                     : kinematics_.obstaclePresent(i, middle)))
+          return -std::numeric_limits<double>::infinity();  // no bound known
+        const kinematics::MotionBounds& bounds = target ? targetBounds_[i] : obstacleBounds_[i];
+        const geometry::Vec2 reference =
+            (target ? kinematics_.targetPose(i, middle) : kinematics_.obstaclePose(i, middle))
+                .reference;
+        return geometry::distanceToSegment(reference, cameraAt(j, a), cameraAt(j, b)) -
+               bounds.travel * 0.5 * (b - a) - bounds.reach;
       };
     }
     return p.distance;
@@ -159,8 +177,11 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
                         d = std::min(d, s->f(tau));
                       return d;
                     },
-                    h, std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity(), 0.0};
+                    h,
+                    std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(),
+                    0.0,
+                    {}};
     for (const Sampled* s : group) {
       nearest.f0 = std::min(nearest.f0, s->f0);
       nearest.f1 = std::min(nearest.f1, s->f1);

@@ -5,9 +5,11 @@
 // linearly between their two poses (the simulator holds a velocity over the step), objects
 // move exactly as the scene says (the kinematics at any instant, not interpolated).
 // Lipschitz branch and bound (lipschitz_search.h) gives certified results: minimum distances
-// within 1e-4 m, time closer than δ never undercounted and overcounted by at most dt/4096
-// per crossing of δ. Measurement, not control: it may use what the controller may not (the
-// scene's speed bounds, the world between samples).
+// within 1e-4 m (also of objects spinning at the scene's limit: where the slope bound runs out
+// of samples, every point of an object lies within its reach of its reference point), time closer
+// than δ never undercounted and overcounted by at most dt/4096 per crossing of δ. Measurement, not
+// control: it may use what the controller may not (the scene's speed bounds, the world between
+// samples).
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -55,7 +57,9 @@ class StepAccounting {
  private:
   const kinematics::Kinematics& kinematics_;
   double delta_;
-  std::vector<double> targetSpeeds_, obstacleSpeeds_;  // Lipschitz constants of the objects
+  // How the objects move: point speeds are the Lipschitz constants of distances to them,
+  // travel and reach bound them where those constants say little (fast spin).
+  std::vector<kinematics::MotionBounds> targetBounds_, obstacleBounds_;
 };
 
 }  // namespace camcov::safety

@@ -8,6 +8,7 @@
 #include "scene/read_text.h"
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
+#include "util/readable_number.h"
 #include "util/strict_json.h"
 
 namespace camcov::scene {
@@ -46,7 +47,8 @@ std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const st
       if (!std::isfinite(values[k])) throw SceneError(source, keyPath, "number is not finite");
       const double limit = k < 2 ? kMaxCoordinate : kMaxYawDegrees;
       if (std::abs(values[k]) > limit) {
-        throw SceneError(source, keyPath, fmt::format("{:g} lies beyond ±{:g}", values[k], limit));
+        throw SceneError(source, keyPath,
+                         readableNumber(values[k]) + " lies beyond ±" + readableNumber(limit));
       }
     }
     poses.push_back({values[0], values[1], geometry::wrapAngle(geometry::degToRad(values[2]))});

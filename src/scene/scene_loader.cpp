@@ -15,6 +15,7 @@
 #include "scene/scene_error.h"
 #include "scene/scene_validation.h"
 #include "scene/wkt.h"
+#include "util/readable_number.h"
 #include "util/strict_json.h"
 
 namespace camcov::scene {
@@ -101,8 +102,8 @@ class Node {
   }
   void requireWithinRange(geometry::Vec2 v, std::size_t index) const {
     if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate) {
-      fail(fmt::format("coordinate {} ({} {}) lies beyond ±{:g} m", index, v.x, v.y,
-                       kMaxCoordinate));
+      fail(fmt::format("coordinate {} ({} {}) lies beyond ±{} m", index, readableNumber(v.x),
+                       readableNumber(v.y), readableNumber(kMaxCoordinate)));
     }
   }
   std::string join(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
@@ -182,7 +183,8 @@ double positive(const Node& node, const char* what, const char* unit) {
 double speed(const Node& node, const char* what, const char* unit) {
   const double v = node.number();
   if (std::abs(v) > kMaxSpeed)
-    node.fail(fmt::format("{} {} {} exceeds {:g} {}", what, v, unit, kMaxSpeed, unit));
+    node.fail(fmt::format("{} {} {} exceeds {} {}", what, readableNumber(v), unit,
+                          readableNumber(kMaxSpeed), unit));
   return v;
 }
 
@@ -250,7 +252,8 @@ Track track(const Node& node) {
     }
     const geometry::Vec2 p{sample.element(1).number(), sample.element(2).number()};
     if (std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate) {
-      sample.fail(fmt::format("position ({} {}) lies beyond ±{:g} m", p.x, p.y, kMaxCoordinate));
+      sample.fail(fmt::format("position ({} {}) lies beyond ±{} m", readableNumber(p.x),
+                              readableNumber(p.y), readableNumber(kMaxCoordinate)));
     }
     result.times.push_back(t);
     result.positions.push_back(p);
@@ -428,8 +431,8 @@ double sensingRange(const Node& node) {
 double imageWidth(const Node& node) {
   const double w = positive(node, "imageWidth", "pixels");
   if (w != std::floor(w) || w > kMaxImageWidth)
-    node.fail(fmt::format("imageWidth must be a whole number of pixels from 1 to {:g}, is {}",
-                          kMaxImageWidth, w));
+    node.fail(fmt::format("imageWidth must be a whole number of pixels from 1 to {}, is {}",
+                          readableNumber(kMaxImageWidth), readableNumber(w)));
   return w;
 }
 
@@ -441,8 +444,9 @@ ResolutionRequirement resolutionRequirement(const Node& node) {
   const Node density = node.child("minDensity");
   requirement.minDensity = positive(density, "minDensity", "pixels per metre");
   if (requirement.minDensity > kMaxMinDensity)
-    density.fail(fmt::format("minDensity {} pixels per metre lies beyond {:g}",
-                             requirement.minDensity, kMaxMinDensity));
+    density.fail(fmt::format("minDensity {} pixels per metre lies beyond {}",
+                             readableNumber(requirement.minDensity),
+                             readableNumber(kMaxMinDensity)));
   if (node.has("proportional")) requirement.proportional = node.child("proportional").boolean();
   return requirement;
 }
@@ -492,7 +496,8 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     const Node node = root.child("duration");
     const double seconds = positive(node, "duration", "s");
     if (!(seconds <= kMaxDuration))
-      node.fail(fmt::format("duration {} s lies beyond {:g} s", seconds, kMaxDuration));
+      node.fail(fmt::format("duration {} s lies beyond {} s", readableNumber(seconds),
+                            readableNumber(kMaxDuration)));
     scene.duration = seconds;
   });
   // Kept as written: the parameter table, one stage up, owns their names and ranges.
@@ -512,7 +517,8 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     const auto size = [](const Node& n, const char* what) {
       const double v = positive(n, what, "m");
       if (v > kMaxCoordinate)
-        n.fail(fmt::format("{} {} m lies beyond {:g} m", what, v, kMaxCoordinate));
+        n.fail(fmt::format("{} {} m lies beyond {} m", what, readableNumber(v),
+                           readableNumber(kMaxCoordinate)));
       return v;
     };
     scene.pitch = Pitch{size(pitch.child("length"), "length"), size(pitch.child("width"), "width")};

@@ -40,7 +40,7 @@ std::string describeDeformationDefect(const MovingObject& object) {
       const double t = t0 + (t1 - t0) * s / kSamplesPerInterval;
       localShapeAt(object, t, shape);
       if (std::string problem = describeRingDefect(shape); !problem.empty()) {
-        return fmt::format("interpolated shape at t = {} s is not simple: {}", readableNumber(t),
+        return fmt::format("interpolated shape at t = {} s is not simple: {}", roundedNumber(t),
                            problem);
       }
     }

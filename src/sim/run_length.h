@@ -27,18 +27,21 @@ inline params::Parameters withRunLength(params::Parameters p, std::optional<doub
                                         bool durationGiven) {
   if (sceneDuration && !durationGiven && p.sim.duration == params::Parameters{}.sim.duration)
     p.sim.duration = *sceneDuration;
-  if (!(std::llround(p.sim.duration / p.sim.dt) >= 1)) {
+  // The simulator's count of steps; judged and shown as that whole number, so a message never
+  // shows a count on the limit as beyond it.
+  const double steps = std::round(p.sim.duration / p.sim.dt);
+  if (!(steps >= 1)) {
     throw InputError(
         fmt::format("a run of {} s is shorter than one step of dt = {} s: it would "
                     "average nothing (--duration, sim.duration)",
-                    readableNumber(p.sim.duration), readableNumber(p.sim.dt)));
+                    p.sim.duration, p.sim.dt));
   }
-  if (p.sim.duration / p.sim.dt > kMaxSteps) {
+  if (steps > kMaxSteps) {
     throw InputError(fmt::format(
-        "a run of {} s at dt = {} s would record {:.0f} steps; at most {:.0f} are recorded (every "
+        "a run of {} s at dt = {} s would record {} steps; at most {} are recorded (every "
         "camera's pose at each step is kept in memory): shorten the run or lengthen dt",
-        readableNumber(p.sim.duration), readableNumber(p.sim.dt), p.sim.duration / p.sim.dt,
-        kMaxSteps));
+        readableNumber(p.sim.duration), readableNumber(p.sim.dt), readableNumber(steps),
+        readableNumber(kMaxSteps)));
   }
   return p;
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Stopping long work when the person who started it asks: a run checks between its steps and
 // a batch before each job, so that Ctrl-C in Python ends camcov.run, simulate and bench within
-// a step (the CLI needs none of it: SIGINT ends the process, and what it wrote is whole). A
-// caller that can be interrupted installs a check.
+// a step (the CLI needs none of it: SIGINT ends the process, what it wrote is whole and its
+// temporary files are removed, cli/signal_cleanup.h). A caller that can be interrupted
+// installs a check.
 #include <atomic>
 #include <stdexcept>
 

@@ -2,7 +2,7 @@
 // Numbers that come from a person — a command-line option, a scene or track file, a Python
 // argument — are read one way: the whole text is the number, it is finite, and it lies in
 // its documented range; a count is a non-negative integer that fits. Messages print numbers
-// and limits readably ("1e+200", never 309 digits).
+// and limits exactly and readably (readableNumber).
 #include <charconv>
 #include <cmath>
 #include <cstdint>

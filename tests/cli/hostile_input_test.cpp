@@ -196,6 +196,48 @@ TEST(HostileInput, SceneAtTheSpeedLimitsRunsToItsEndAndBeyondThemIsRefused) {
   EXPECT_NE(beyond.err.find("exceeds 10000"), std::string::npos) << beyond.err;
 }
 
+// A value just past a limit is shown as it was given, never rounded onto the limit shown
+// beside it ("10000 is outside (0, 10000]").
+TEST(HostileInput, AValueJustPastItsLimitIsShownExactlyBesideTheLimit) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  const CommandResult option =
+      runCamcov("run " + scene + " --duration 10000.000001 -o " + (dir / "r").string());
+  EXPECT_EQ(option.exitCode, 2) << option.err;
+  EXPECT_NE(option.err.find("10000.000001 is outside (0, 10000]"), std::string::npos) << option.err;
+  std::string text = readFile(scene);
+  text.insert(text.rfind('}'), R"(, "duration": 10000.0000001)");
+  std::ofstream(dir / "long.json") << text;
+  const CommandResult key = runCamcov("validate " + (dir / "long.json").string());
+  EXPECT_EQ(key.exitCode, 2) << key.err;
+  EXPECT_NE(key.out.find("duration 10000.0000001 s lies beyond 10000 s"), std::string::npos)
+      << key.out;
+  std::ofstream(dir / "poses.json") << R"([{"x": 1000000000.5, "y": 0, "yaw_deg": 0}])";
+  const CommandResult pose =
+      runCamcov("inspect " + scene + " --cameras " + (dir / "poses.json").string());
+  EXPECT_EQ(pose.exitCode, 2) << pose.err;
+  EXPECT_NE(pose.err.find("1000000000.5 lies beyond ±1e+09"), std::string::npos) << pose.err;
+}
+
+// The playground's page runs the engine it embeds: any other file (a script, an empty file, a
+// page) would make a page that draws nothing, so it is refused naming the option.
+TEST(HostileInput, APlaygroundEngineThatIsNotTheEngineIsRefusedNamingTheOption) {
+  const ScratchDir dir;
+  const std::string scene = (testDataDir() / "scenes" / "tiny_static.json").string();
+  std::ofstream(dir / "script.js") << "var createCamcovEngine = () => {};\n";
+  std::ofstream(dir / "empty.js");
+  std::ofstream(dir / "page.html") << "<!doctype html><title>x</title>\n";
+  for (const std::string engine : {"script.js", "empty.js", "page.html"}) {
+    const CommandResult r = runCamcov("playground " + scene + " --engine " +
+                                      (dir / engine).string() + " -o " + (dir / "p.html").string());
+    EXPECT_EQ(r.exitCode, 2) << engine << ": " << r.err;
+    EXPECT_NE(r.err.find("--engine " + (dir / engine).string() + ": not the engine"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "p.html")) << engine;
+  }
+}
+
 }  // namespace
 }  // namespace camcov::testing
 

@@ -8,11 +8,15 @@
 
 #include <algorithm>
 
+#include "records/run_files.h"
+#include "reports/explorer/explorer_data.h"
 #include "reports/explorer/packed_stream.h"
+#include "scene/scene_loader.h"
 #include "support/html_checks.h"
 #include "support/run_camcov.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
+#include "util/input_error.h"
 
 namespace camcov::testing {
 namespace {
@@ -129,6 +133,31 @@ TEST_F(Explore, TwoMethodsOfDynamic9ForThirtySecondsFitWellUnderTwoMegabytes) {
             0);
   EXPECT_EQ(embeddedData(page)["runs"][0]["series"]["time"].size(), 301u);
   EXPECT_LT(fs::file_size(page), 1'000'000u) << "well under the 2 MB a page may weigh";
+}
+
+// A page holds at most kMaxPackedSteps of packed steps over its runs: pages past it would not
+// load. The limit is checked as the steps are packed, to the byte; here set at two runs' worth.
+TEST_F(Explore, APageHoldsAtMostItsLimitOfPackedStepsAndSaysWhatToDoPastIt) {
+  const std::string tiny = (testDataDir() / "scenes" / "tiny_dynamic.json").string();
+  const std::vector<records::RunRecord> runs{records::loadRunFile(run(tiny, "paper", "")),
+                                             records::loadRunFile(run(tiny, "local", ""))};
+  const scene::Scene scene = scene::loadScene(tiny);
+  std::size_t packed = 0;  // bytes, from the base64 of each run's steps
+  const nlohmann::json whole = reports::explorer::explorerData(runs, scene);
+  for (const auto& r : whole["runs"]) {
+    const std::string steps = r["steps"];
+    packed += steps.size() / 4 * 3 - std::count(steps.end() - 2, steps.end(), '=');
+  }
+  EXPECT_NO_THROW(reports::explorer::explorerData(runs, scene, packed));
+  try {
+    reports::explorer::explorerData(runs, scene, packed - 1);
+    ADD_FAILURE() << "one byte past the limit is refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the run of local, seed 1 reached it at step"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("explore fewer runs at once"), std::string::npos);
+  }
 }
 
 TEST_F(Explore, BadRequestsExitWithTwoAndWriteNothing) {

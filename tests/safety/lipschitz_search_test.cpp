@@ -10,7 +10,7 @@ namespace {
 
 Sampled of(std::function<double(double)> f, double h, double lipschitz) {
   const double f0 = f(0.0), f1 = f(h);
-  return {std::move(f), h, f0, f1, lipschitz};
+  return {std::move(f), h, f0, f1, lipschitz, {}};
 }
 
 TEST(LipschitzSearch, FindsTheMinimumOfRandomWavesAsADenseGridDoes) {

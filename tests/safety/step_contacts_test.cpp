@@ -1,8 +1,11 @@
 #include "safety/step_contacts.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
 
 #include "geometry/ring.h"
 #include "support/small_worlds.h"
@@ -119,6 +122,43 @@ TEST(StepContacts, ACrossingBetweenTheSamplesIsCaughtThatTheSamplesMiss) {
   EXPECT_GE(c.contactStart[0], 0.0375 - 0.1 / 4096);
   EXPECT_LE(c.contactStart[0], 0.0375);
   EXPECT_EQ(c.contactStart[0], c.contactStart[1]);
+}
+
+// A target spinning at the scene's limit past a camera standing still: its slope bound (ω·r,
+// 14,000 m/s) would need millions of samples, yet over a step of many turns its farthest
+// vertex comes by every turn. The minimum is then that pass: the camera's distance to the
+// centre less the vertex's radius, worked out by hand.
+TEST(StepContacts, ObjectsSpinningAtTheLimitGiveTheirClosestPassNotZero) {
+  const std::string square = "POLYGON((-1 -1,1 -1,1 1,-1 1))";
+  std::string polygon = "POLYGON((";  // 64 vertices on the unit circle: round, but not quite
+  for (int k = 0; k < 64; ++k) {
+    const double a = 2 * M_PI * k / 64;
+    polygon += fmt::format("{}{} {}", k == 0 ? "" : ",", std::cos(a), std::sin(a));
+  }
+  polygon += "))";
+  struct Case {
+    std::string shape;
+    double spin;     // rad/s
+    double closest;  // m, the camera at (−5, 0): 5 less the farthest vertex's radius
+  };
+  for (const Case& c :
+       {Case{square, 1e4, 5 - std::sqrt(2.0)}, Case{square, 2000, 5 - std::sqrt(2.0)},
+        Case{polygon, 1000, 4.0}, Case{polygon, 1e4, 4.0}}) {
+    SCOPED_TRACE(c.shape.substr(0, 40) + fmt::format(" at {} rad/s", c.spin));
+    const scene::Scene scene = testing::sceneFromJson(fmt::format(
+        R"js({{"boundary": "POLYGON((-10 -10,10 -10,10 10,-10 10))", "cameraFoV": 30,
+              "targets": [{{"shape": "{}", "path": "POLYGON((0 0))", "angularVelocity": {}}}],
+              "cameras": [{{"pos": "POINT(-5 0)", "angle": 0, "maxVelocity": 1,
+                           "maxAngularVelocity": 1}}]}})js",
+        c.shape, c.spin));
+    const kinematics::Kinematics kinematics(scene);
+    const StepAccounting accounting(kinematics, 0.5);
+    const std::vector<geometry::Pose> still{{-5, 0, 0}};
+    const StepContacts step = accounting.measure(accounting.sample(kinematics.worldAt(3.0), still),
+                                                 accounting.sample(kinematics.worldAt(3.1), still));
+    EXPECT_GE(step.minObjectDistance, c.closest - kDistanceTolerance);
+    EXPECT_LE(step.minObjectDistance, c.closest + kDistanceTolerance);
+  }
 }
 
 }  // namespace
