@@ -195,7 +195,7 @@ Registration addImportCommand(CLI::App& app) {
       ->check(within(0.0, 1e4, false))
       ->capture_default_str();
   l->add_option("--radius", lastrow->scene.personRadius, "player disc radius, m")
-      ->check(within(0.0, 1e2, false))
+      ->check(within(import::kMinDiscRadius, 1e2))
       ->capture_default_str();
   lastrow->scene.margin = 5.0;
   addSceneOptions(*l, *lastrow);
@@ -212,7 +212,7 @@ Registration addImportCommand(CLI::App& app) {
        "default: from the recorded velocities, said in a note")
       ->check(within(0.0, import::kMaxFrameRate, false));
   e->add_option("--radius", ethucy->scene.personRadius, "pedestrian disc radius, m")
-      ->check(within(0.0, 1e2, false))
+      ->check(within(import::kMinDiscRadius, 1e2))
       ->capture_default_str();
   e->add_option("--wall-thickness", ethucy->scene.wallThickness,
                 "walls of map.xml as obstacles this thick, m")
@@ -257,7 +257,7 @@ Registration addImportCommand(CLI::App& app) {
       ->capture_default_str();
   t->add_option("--radius", table->scene.personRadius,
                 "disc radius of everyone the table gives none for, m")
-      ->check(within(0.0, 1e2, false))
+      ->check(within(import::kMinDiscRadius, 1e2))
       ->capture_default_str();
   addSceneOptions(*t, *table);
 

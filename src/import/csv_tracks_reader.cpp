@@ -9,6 +9,7 @@
 #include <set>
 
 #include "import/colour_names.h"
+#include "import/scene_builder.h"
 #include "import/text_fields.h"
 #include "import/track_collector.h"
 #include "util/input_error.h"
@@ -18,8 +19,8 @@
 namespace camcov::import {
 namespace {
 
-// The largest disc a person or thing of a table may be, m.
-constexpr Limits kRadius{0.0, 100.0};
+// The discs a person or thing of a table may be, m.
+constexpr Limits kRadius{kMinDiscRadius, 100.0};
 // Times as the table writes them, before scaling: a Unix time in milliseconds fits.
 constexpr Limits kTimeInUnits{-1e15, 1e15};
 // Headings as written: turns enough for any recording, and their degrees stay finite.
@@ -160,7 +161,7 @@ Recording parseCsvTracks(std::string text, const std::string& file, const CsvTra
     if (row.id.empty())
       throw InputError(where.prefix() + "column " + header[column.id] + ": empty id");
     if (column.heading) row.heading = number(*column.heading, kHeading) * format.radiansPerUnit;
-    if (column.radius) row.radius = metres(*column.radius, kRadius, false);
+    if (column.radius) row.radius = metres(*column.radius, kRadius);
     if (column.color) row.color = f[*column.color];
     earliest = std::min(earliest, row.time);
     rows.push_back(std::move(row));

@@ -27,6 +27,11 @@ namespace camcov::import {
 
 enum class BallAs { None, Target, Obstacle };
 
+// The smallest disc a person or ball may be, m: a disc is written as a 12-gon to the
+// millimetre, whose sides (0.52 r) must stay apart at that rounding; a smaller one would be
+// written with vertices on top of each other.
+inline constexpr double kMinDiscRadius = 0.01;
+
 struct SceneOptions {
   double from = 0.0;  // the window, s from the recording's start
   double to = std::numeric_limits<double>::infinity();

@@ -392,7 +392,10 @@ const BadInput kBadInputs[] = {
     {"csv_far_away", "csv", "id,t,x,y\n1,0,2e6,0\n", nullptr,
      ":2: column x: 2e+06 m is outside [-1e+06, 1e+06]"},
     {"csv_radius_zero", "csv", "id,t,x,y,radius\n1,0,0,0,0\n", nullptr,
-     ":2: column radius: 0 m is outside (0, 100]"},
+     ":2: column radius: 0 m is outside [0.01, 100]"},
+    // A disc too small to write: its 12 vertices would round onto each other.
+    {"csv_radius_below_a_writable_disc", "csv", "id,t,x,y,radius\n1,0,0,0,0.0005\n", nullptr,
+     ":2: column radius: 0.0005 m is outside [0.01, 100]"},
     {"csv_radius_changes", "csv", "id,t,x,y,radius\n1,0,0,0,0.3\n1,1,1,1,0.4\n", nullptr,
      ":3: person 1: radius 0.4 m after 0.3 m"},
     {"csv_heading_beyond_reason", "csv", "id,t,x,y,heading\n1,0,0,0,1e300\n", nullptr,
