@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Every speed figure camcov is held to, measured side by side in one call (docs/performance.md,
+# "Speed at a glance"), so that a change can be judged by running this before and after it:
+#
+#   protocol     the published protocol, paper's method and the baseline, 32 scenes x 20 seeds
+#                (1,280 runs), no videos, no explorer, no report: wall seconds on all cores
+#   all methods  the same with our method too and the offline optima of the scenes that hold
+#                still (1,920 runs): wall seconds on all cores
+#   real time    simulated seconds per wall second of one run on one core (taskset -c 0),
+#                `camcov run SCENE --method M --duration 30`, for ours, the paper's and the
+#                baseline on scenes/large/crowd_100x30 (100 targets, 30 cameras), dynamic9 and
+#                scenes/large/round_4000 (one target of 4,000 vertices)
+#
+#   scripts/speed_benchmark.sh            # builds camcov if needed, prints the table
+#   SEEDS=5 scripts/speed_benchmark.sh    # a quicker protocol (the real-time rows are the same)
+#
+# Prints the machine (cores, CPU) first: figures from machines of another size do not compare.
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+scenes=${COVERAGE_SCENES_DIR:-$repo/../shared/coverage_scenes}
+seeds=${SEEDS:-20}
+camcov="$repo/build/src/cli/camcov"
+[ -x "$camcov" ] || "$repo/scripts/build.sh" release camcov >/dev/null
+[ -d "$scenes" ] || { echo "speed_benchmark.sh: no published scenes at $scenes (COVERAGE_SCENES_DIR)" >&2; exit 2; }
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+# Wall seconds of a command, its output kept out of the table.
+wall() {
+  local start end
+  start=$(date +%s.%N)
+  "$@" >"$scratch/stdout" 2>"$scratch/stderr" || { cat "$scratch/stderr" >&2; exit 1; }
+  end=$(date +%s.%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }'
+}
+
+# Simulated seconds per wall second of a 30 s run of scene $1 with method $2, on one core (long
+# enough that starting the program is a small part of it).
+real_time() {
+  local seconds
+  seconds=$(wall taskset -c 0 "$camcov" run "$1" --method "$2" --seed 1 --duration 30 \
+    --out "$scratch/runs")
+  awk -v s="$seconds" 'BEGIN { printf "%.1f", 30 / s }'
+}
+
+echo "camcov $("$camcov" --version | cut -d' ' -f2), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
+printf '%-44s %-14s %s\n' measure goal measured
+protocol=$(wall "$camcov" bench --scenes "$scenes" --seeds "$seeds" --methods paper,local \
+  --videos none --explorer none --no-report --optimum-budget 0 --out "$scratch/protocol")
+printf '%-44s %-14s %s s\n' "protocol, paper + baseline, $((32 * 2 * seeds)) runs" "<= 10 s" "$protocol"
+all=$(wall "$camcov" bench --scenes "$scenes" --seeds "$seeds" --methods paper,local,camcov \
+  --videos none --explorer none --no-report --out "$scratch/all")
+printf '%-44s %-14s %s s\n' "all three methods + optima, $((32 * 3 * seeds)) runs" "<= 20 s" "$all"
+
+crowd="$repo/scenes/large/crowd_100x30.json"
+round="$repo/scenes/large/round_4000.json"
+for row in "crowd_100x30:$crowd" "dynamic9:$scenes/dynamic9.json" "round_4000:$round"; do
+  name=${row%%:*} file=${row#*:}
+  ours=$(real_time "$file" camcov)
+  paper=$(real_time "$file" paper)
+  local_=$(real_time "$file" local)
+  ratio=$(awk -v o="$ours" -v p="$paper" 'BEGIN { printf "%.2f", o / p }')
+  case $name in
+    crowd_100x30) goal=">= 30x" ;;
+    dynamic9) goal="ours/paper>=0.8" ;;
+    round_4000) goal=">= 50x" ;;
+  esac
+  printf '%-44s %-14s ours %sx, paper %sx, baseline %sx (ours/paper %s)\n' \
+    "real time, $name, one core" "$goal" "$ours" "$paper" "$local_" "$ratio"
+done
