@@ -5,7 +5,8 @@
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
-# Targets: the scene loader, the visibility sweep, the three track importers, the command
+# Targets: the scene loader, the visibility sweep, the three track importers, the run-file
+# reader (what report, video and explore read), the command
 # line's parser, weighted coverage on scenes the bytes choose, and the Python environments'
 # native stepping (EpisodeStepper). The corpus starts from tests/fuzz/seeds, every scene of
 # scenes/ and tests/data/ and the track extracts of tests/data/tracks (copied at run time into
@@ -21,11 +22,11 @@ case "$budget" in
 esac
 
 dir=$("$repo/scripts/build.sh" sanitize fuzz_scene fuzz_visibility fuzz_lastrow fuzz_ethucy \
-  fuzz_csv_tracks fuzz_command_line fuzz_weighted_scene fuzz_episode_stepper | tail -n 1)
+  fuzz_csv_tracks fuzz_run_file fuzz_command_line fuzz_weighted_scene fuzz_episode_stepper | tail -n 1)
 
 corpus="$dir/corpus"
 rm -rf "$corpus"
-mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,csv_tracks,command_line,weighted_scene,episode_stepper} "$dir/artifacts"
+mkdir -p "$corpus"/{scene,visibility,lastrow,ethucy,csv_tracks,run_file,command_line,weighted_scene,episode_stepper} "$dir/artifacts"
 cp "$repo"/tests/fuzz/seeds/scene/*.json "$corpus/scene/"
 find "$repo/scenes" "$repo/tests/data" -name '*.json' -size -64k |
   while read -r f; do cp "$f" "$corpus/scene/$(echo "${f#"$repo"/}" | tr / _)"; done
@@ -38,6 +39,7 @@ cp "$tracks/ethucy_extract/obsmat.txt" "$corpus/ethucy/obsmat_only"
   >"$corpus/ethucy/with_map"
 cp "$repo"/tests/fuzz/seeds/command_line/* "$corpus/command_line/"
 cp "$repo"/tests/fuzz/seeds/csv_tracks/* "$corpus/csv_tracks/"
+cp "$repo"/tests/fuzz/seeds/run_file/* "$corpus/run_file/"
 
 run() {
   local target=$1 log="$dir/fuzz_$1.log" code=0
@@ -60,6 +62,8 @@ run visibility -max_len=1024 -len_control=0 || status=1
 run lastrow -max_len=8192 || status=1
 run ethucy -max_len=8192 || status=1
 run csv_tracks -max_len=8192 || status=1
+# A short run's file (tests/fuzz/seeds/run_file), a few kilobytes.
+run run_file -max_len=16384 || status=1
 run command_line -max_len=512 || status=1
 # Bytes choose a weighted scene (tests/fuzz/weighted_scene_fuzzer.cpp): a few hundred do.
 run weighted_scene -max_len=512 -len_control=0 || status=1
