@@ -163,8 +163,8 @@ void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::sp
 
 namespace {
 
-// The encoding of an instant `o` that the view reads as it is (for View::known, the camera's
-// belief: belief() below).
+// The encoding of an instant `o` that the view reads as it is (for View::known under limited
+// knowledge, the camera's belief, which encodeObservation builds).
 void encodeInstant(const scene::Scene& scene, const params::Parameters& params,
                    const Observation& o, const EncodingSizes& sizes, View view, std::size_t camera,
                    std::span<float> out) {
