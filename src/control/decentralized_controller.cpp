@@ -1,5 +1,12 @@
 #include "control/decentralized_controller.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+#include "control/event_kind.h"
+#include "control/neighbourhood.h"
 #include "control/team_belief.h"
 
 namespace camcov::control {
@@ -7,17 +14,39 @@ namespace camcov::control {
 DecentralizedController::DecentralizedController(const scene::Scene& scene,
                                                  const params::Parameters& params,
                                                  std::uint64_t seed)
-    : scene_(scene), planned_(scene.cameras.size()) {
+    : scene_(scene),
+      params_(params),
+      seed_(seed),
+      // The loops' own first global step waits one step to see whether anything moves.
+      nextRegroupTime_(params.sim.dt + params.global.T1) {
+  std::vector<geometry::Pose> initial;
+  for (const scene::CameraSpec& camera : scene.cameras)
+    initial.push_back(camera.initial);
+  const auto size = static_cast<std::size_t>(std::max(1, params.camcov.neighbours));
+  for (std::size_t j = 0; j < scene.cameras.size(); ++j)
+    loops_.push_back(makeLoop(j, neighbourhood(initial, j, size), 0.0));
+}
+
+DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
+                                                                std::vector<std::size_t> members,
+                                                                double start) const {
+  Loop loop;
+  loop.self =
+      static_cast<std::size_t>(std::find(members.begin(), members.end(), j) - members.begin());
+  if (members.size() < scene_.cameras.size()) {
+    loop.scene = std::make_unique<const scene::Scene>(neighbourhoodScene(scene_, members));
+  }
+  loop.members = std::move(members);
   // One seed for every camera: a team agreed on it before the run, so that cameras that know
   // the same draw the same samples and reach the same plan.
-  for (std::size_t j = 0; j < scene.cameras.size(); ++j) {
-    loops_.push_back(
-        std::make_unique<PaperController>(scene, params, seed, PaperController::Variant::Camcov));
-  }
+  loop.controller = std::make_unique<PaperController>(
+      loop.scene ? *loop.scene : scene_, params_, seed_, PaperController::Variant::Camcov, start);
+  return loop;
 }
 
 std::optional<geometry::Pose> DecentralizedController::goal(std::size_t camera) const {
-  return loops_[camera]->goal(camera);
+  const Loop& loop = loops_[camera];
+  return loop.controller->goal(loop.self);
 }
 
 void DecentralizedController::takeEvents(std::vector<ControlEvent>& out) {
@@ -28,31 +57,60 @@ void DecentralizedController::takeEvents(std::vector<ControlEvent>& out) {
 
 void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
+  // Neighbourhoods are chosen again when the loops' global steps are due (half a step of slack
+  // against rounding, as theirs).
+  const auto size = static_cast<std::size_t>(std::max(1, params_.camcov.neighbours));
+  const bool regroup =
+      size < loops_.size() && observation.time + 0.5 * params_.sim.dt >= nextRegroupTime_;
+  if (regroup) nextRegroupTime_ += params_.global.T1;
+
   std::vector<ControlEvent> loopEvents;
   for (std::size_t j = 0; j < loops_.size(); ++j) {
-    if (observation.own.empty()) {
-      // Full knowledge: every camera's own world is the true one, its teammates' poses known.
-      loops_[j]->control(observation, planned_);
-    } else {
-      const OwnKnowledge& own = observation.own[j];
-      if (own.world.targets.empty()) {
-        // Nothing to cover that it knows of, so nothing its loop could plan for: it turns on
-        // the spot, looking round for a target, and plans from the instant it knows one.
-        commands[j] = {{0.0, 0.0}, scene_.cameras[j].maxAngularVelocity};
-        continue;
-      }
-      believedTeam(scene_, own, j, observation.cameras[j], believed_);
-      // Nothing measured for this camera's world: its loop sweeps it itself.
-      const Observation mine{observation.time, own.world, believed_};
-      loops_[j]->control(mine, planned_);
+    const OwnKnowledge* own = observation.own.empty() ? nullptr : &observation.own[j];
+    if (own != nullptr && own->world.targets.empty()) {
+      // Nothing to cover that it knows of, so nothing its loop could plan for: it turns on
+      // the spot, looking round for a target, and plans from the instant it knows one.
+      commands[j] = {{0.0, 0.0}, scene_.cameras[j].maxAngularVelocity};
+      continue;
     }
-    commands[j] = planned_[j];
+    // Full knowledge: every camera's own world is the true one, its teammates' poses known.
+    if (own != nullptr) {
+      believedTeam(scene_, *own, j, observation.cameras[j], believed_);
+    } else {
+      believed_.assign(observation.cameras.begin(), observation.cameras.end());
+    }
+    if (regroup) {
+      if (auto members = neighbourhood(believed_, j, size); members != loops_[j].members) {
+        events_.push_back({observation.time,
+                           std::string(eventName(EventKind::Neighbourhood)),
+                           static_cast<int>(j),
+                           fmt::format("plans with cameras {}", fmt::join(members, ", ")),
+                           {},
+                           {}});
+        loops_[j] = makeLoop(j, std::move(members), observation.time);
+      }
+    }
+    Loop& loop = loops_[j];
+    planned_.resize(loop.members.size());
+    if (own == nullptr && !loop.scene) {
+      // The whole team with the true world: the simulator's measurements serve as they are.
+      loop.controller->control(observation, planned_);
+    } else {
+      memberPoses_.clear();
+      for (std::size_t i : loop.members)
+        memberPoses_.push_back(believed_[i]);
+      // Nothing measured for this camera's world or team: its loop sweeps it itself.
+      const Observation mine{observation.time, own != nullptr ? own->world : observation.world,
+                             memberPoses_};
+      loop.controller->control(mine, planned_);
+    }
+    commands[j] = planned_[loop.self];
     loopEvents.clear();
-    loops_[j]->takeEvents(loopEvents);
+    loop.controller->takeEvents(loopEvents);
     for (ControlEvent& e : loopEvents) {
       // Its own events, and its team decisions as its own: what it planned for the others is
       // not what they do.
-      if (e.camera != -1 && e.camera != static_cast<int>(j)) continue;
+      if (e.camera != -1 && e.camera != static_cast<int>(loop.self)) continue;
       e.camera = static_cast<int>(j);
       events_.push_back(std::move(e));
     }

@@ -10,9 +10,16 @@
 // run is camcov's. A camera that knows no target (under limited knowledge) turns on the spot at
 // its full rate, looking round for one.
 //
+// In a team larger than camcov.neighbours (N), each camera's loop plans for its neighbourhood
+// only (control/neighbourhood.h): itself and the N - 1 teammates nearest to it as it believes
+// them, chosen at t = 0 and again every T1, when its global step is due. A camera whose
+// neighbourhood changed starts a new loop for the new one (its global step runs at once and
+// judges the plan afresh), so each camera's work per step is bounded by N, not by the team.
+//
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -33,10 +40,25 @@ class DecentralizedController final : public Controller {
   void takeEvents(std::vector<ControlEvent>& out) override;
 
  private:
+  // Camera j's own loop, over the scene as its neighbourhood plans in it.
+  struct Loop {
+    std::vector<std::size_t> members;           // scene camera indices, increasing; j among them
+    std::size_t self = 0;                       // j's place in members
+    std::unique_ptr<const scene::Scene> scene;  // null: the whole scene's team
+    std::unique_ptr<PaperController> controller;
+  };
+  // Camera j's loop for `members`, whose first instant is at `start` (a fresh loop: it plans
+  // anew, one step after its first instant as camcov does).
+  Loop makeLoop(std::size_t j, std::vector<std::size_t> members, double start) const;
+
   const scene::Scene& scene_;
-  std::vector<std::unique_ptr<PaperController>> loops_;  // camera j's own loop
-  std::vector<geometry::Pose> believed_;                 // scratch: a camera's believedTeam
-  std::vector<scene::CameraCommand> planned_;            // scratch: one loop's commands
+  params::Parameters params_;
+  std::uint64_t seed_;
+  std::vector<Loop> loops_;
+  double nextRegroupTime_;                     // when neighbourhoods are chosen again
+  std::vector<geometry::Pose> believed_;       // scratch: a camera's believedTeam
+  std::vector<geometry::Pose> memberPoses_;    // scratch: its neighbourhood's poses
+  std::vector<scene::CameraCommand> planned_;  // scratch: one loop's commands
   std::vector<ControlEvent> events_;
 };
 

@@ -25,6 +25,8 @@ constexpr std::array kKinds{
     EventKindInfo{EventKind::TargetLeaves, "target-leaves", "a recorded target leaves"},
     EventKindInfo{EventKind::NonFiniteCommand, "non-finite-command",
                   "a controller's command is not finite: the camera holds still"},
+    EventKindInfo{EventKind::Neighbourhood, "neighbourhood",
+                  "camcov-dec: the teammates a camera plans with changed (its detail lists them)"},
 };
 
 constexpr std::array kMarks{
@@ -70,6 +72,7 @@ EventMark markOf(const ControlEvent& event) {
     case EventKind::PlanCompleted:
     case EventKind::TargetAppears:
     case EventKind::TargetLeaves:
+    case EventKind::Neighbourhood:
       return EventMark::None;
   }
   return EventMark::None;

@@ -24,6 +24,7 @@ enum class EventKind {
   TargetAppears,       // a recorded target enters the scene
   TargetLeaves,        // a recorded target leaves it
   NonFiniteCommand,    // a controller's command is not a finite number: the camera holds
+  Neighbourhood,       // camcov-dec: a camera plans with other teammates from now on
 };
 
 // How a timeline marks an event: the report's coverage plots and the explorer's timeline.

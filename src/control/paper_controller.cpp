@@ -13,7 +13,7 @@
 namespace camcov::control {
 
 PaperController::PaperController(const scene::Scene& scene, const params::Parameters& params,
-                                 std::uint64_t seed, Variant variant)
+                                 std::uint64_t seed, Variant variant, double start)
     : scene_(scene),
       params_(params),
       variant_(variant),
@@ -28,7 +28,7 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       executors_(scene.cameras.size(), planners::PlanExecutor(params.potential, params.reward.d2)),
       roadmapOf_(scene.cameras.size()),
       // Ours waits one step to see whether anything moves.
-      nextGlobalTime_(variant == Variant::Camcov ? params.sim.dt : 0.0) {
+      nextGlobalTime_(start + (variant == Variant::Camcov ? params.sim.dt : 0.0)) {
   for (unsigned t = 1; t < runThreads(); ++t)
     helpers_.emplace_back(params.reward, scene::lenses(scene));
 }

@@ -43,8 +43,10 @@ class PaperController final : public Controller {
  public:
   enum class Variant { Paper, Camcov };
 
+  // `start`: the time of the first instant it will see (a loop started during a run, as
+  // camcov-dec starts one for a new neighbourhood, keeps its global steps T1 apart from then).
   PaperController(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed,
-                  Variant variant = Variant::Paper);
+                  Variant variant = Variant::Paper, double start = 0.0);
   ~PaperController() override;
 
   void control(const Observation& observation, std::span<scene::CameraCommand> commands) override;

@@ -45,6 +45,12 @@ constexpr bool knowledgeIsLimited(const Parameters& p) {
   return p.knowledge.limited;
 }
 
+// camcov-dec's neighbourhood is written only where it is not the default (which binds only on
+// teams larger than any published or family scene), so that runs keep their bytes.
+constexpr bool neighboursChanged(const Parameters& p) {
+  return p.camcov.neighbours != CamcovParams{}.neighbours;
+}
+
 constexpr std::array kTable{
     row<&P::reward, &RewardParams::lambda1>("reward.lambda1", "λ1", "",
                                             "weight of coverage in the reward, eq. (8)", 0, kInf),
@@ -171,6 +177,11 @@ constexpr std::array kTable{
         "(everything going on at its last velocity) and credit it with the better of that and "
         "the present world; a candidate is sampled to fit the present, so it is judged there",
         0, 1),
+    row<&P::camcov, &CamcovParams::neighbours>(
+        "camcov.neighbours", "N", "cameras",
+        "camcov-dec: a camera plans for itself and at most N - 1 teammates, the nearest it "
+        "believes in, chosen again every T1; a team of at most N plans as one",
+        1, 1e6, false, neighboursChanged),
     row<&P::knowledge, &KnowledgeParams::limited>(
         "knowledge.limited", "", "",
         "our extension: a camera knows a target or obstacle only as it last saw it or was told "

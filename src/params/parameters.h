@@ -103,6 +103,10 @@ struct CamcovParams {
   // Credit the committed team also with what it would see if the targets and obstacles went on
   // as they last moved (control/motion_watch.h), taking the better of that and the present.
   bool forecastStay = true;
+  // camcov-dec: a camera plans for itself and at most N - 1 teammates, the nearest it believes
+  // in (control/neighbourhood.h), so that its work is bounded by its neighbourhood, not by the
+  // team. A team of at most N plans as one, as camcov does.
+  int neighbours = 8;
 };
 
 // What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every

@@ -22,8 +22,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Two rooms: a wall along x = 0 (gaps of 5 cm at the ends, too narrow for a camera or a line
 // of sight that reaches anything) keeps camera 0 and target 0 in the west, camera 1 and
-// target 1 in the east, along `eastPath`.
-std::string twoRooms(const std::string& eastPath, int westYaw = -34) {
+// target 1 in the east, along `eastPath`; without `eastCamera`, camera 0 alone.
+std::string twoRooms(const std::string& eastPath, int westYaw = -34, bool eastCamera = true) {
   return R"js({
   "boundary": "POLYGON((-10 -5,10 -5,10 5,-10 5))",
   "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-5 0))"},
@@ -32,8 +32,11 @@ std::string twoRooms(const std::string& eastPath, int westYaw = -34) {
   "obstacles": [{"shape": "POLYGON((-0.25 -4.95,0.25 -4.95,0.25 4.95,-0.25 4.95))", "path": "POLYGON((0 0))"}],
   "cameraFoV": 30,
   "cameras": [{"pos": "POINT(-8 2)", "angle": )js" +
-         std::to_string(westYaw) + R"js(, "maxVelocity": 1, "maxAngularVelocity": 1},
-              {"pos": "POINT(8 -2)", "angle": 146, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
+         std::to_string(westYaw) + R"js(, "maxVelocity": 1, "maxAngularVelocity": 1})js" +
+         (eastCamera ? R"js(,
+              {"pos": "POINT(8 -2)", "angle": 146, "maxVelocity": 1, "maxAngularVelocity": 1})js"
+                     : "") +
+         "]}";
 }
 
 params::Parameters limited(double range, double loss = 0.0) {
@@ -60,6 +63,8 @@ class Recorded final : public Controller, public sim::Recorder {
     poses.emplace_back(r.cameras.begin(), r.cameras.end());
     for (const auto& e : r.events) {
       events.push_back(e.kind + " " + std::to_string(e.camera) + " " + e.detail);
+      if (e.kind == eventName(EventKind::Neighbourhood))
+        neighbourhoods.push_back({r.time, poses.size() - 1, e.camera, e.detail});
       if (e.kind == eventName(EventKind::NonFiniteCommand)) ++nonFinite;
     }
   }
@@ -73,6 +78,14 @@ class Recorded final : public Controller, public sim::Recorder {
   std::vector<std::vector<scene::CameraCommand>> commands;
   std::vector<std::vector<geometry::Pose>> poses;
   std::vector<std::string> events;
+  // camcov-dec's neighbourhood changes: when, at which step, whose, and its detail.
+  struct Change {
+    double time;
+    std::size_t step;
+    int camera;
+    std::string detail;
+  };
+  std::vector<Change> neighbourhoods;
   int nonFinite = 0;
 
  private:
@@ -117,6 +130,64 @@ TEST(DecentralizedController, WithFullKnowledgeEveryCameraTakesItsPartOfCamcovsP
   const auto ours = run(scene, p, 3), centralized = run(scene, p, 3, "camcov");
   EXPECT_EQ(ours->recorded.poses, centralized->recorded.poses);
   EXPECT_EQ(ours->summary.averageCoverage, centralized->summary.averageCoverage);
+}
+
+TEST(DecentralizedController, ACameraWhoseNeighbourhoodIsItselfMovesAsCamcovMovesItAlone) {
+  // With neighbourhoods of one, camera 0 plans for itself only: its run is camcov's in the same
+  // rooms without camera 1, whose wall-separated presence changes nothing it plans with.
+  const scene::Scene both = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))"));
+  const scene::Scene alone = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))", -34, false));
+  params::Parameters p;
+  p.sim.duration = 11.0;  // three global steps
+  p.global.K = 100;
+  p.camcov.neighbours = 1;
+  const auto ours = run(both, p, 5), centralized = run(alone, p, 5, "camcov");
+  EXPECT_EQ(ours->recorded.of(0), centralized->recorded.of(0));
+  // With one neighbourhood of both (the default) the team plans as one, and camera 0 moves
+  // otherwise (the check can fail).
+  p.camcov.neighbours = 2;
+  EXPECT_NE(run(both, p, 5)->recorded.of(0), centralized->recorded.of(0));
+}
+
+TEST(DecentralizedController, ALargerTeamPlansInNeighbourhoodsOfItsNearestChosenEveryT1) {
+  // Four cameras and two neighbourhoods of two: as the cameras follow the targets across the
+  // hall the nearest teammates change, and each change is one event at a global step's time
+  // naming the camera's nearest teammate where the run put the team at that step.
+  const scene::Scene scene = testing::sceneFromJson(R"js({
+  "boundary": "POLYGON((-15 -6,15 -6,15 6,-15 6))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-12 -4,12 -4))"},
+              {"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((12 4,-12 4))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-13 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(-10 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(10 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(13 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1}]})js");
+  params::Parameters p;
+  p.sim.duration = 30.0;
+  p.global.K = 100;
+  p.camcov.neighbours = 2;
+  const auto r = run(scene, p, 2);
+  const auto& changes = r->recorded.neighbourhoods;
+  EXPECT_GE(changes.size(), 2u);
+  for (const auto& change : changes) {
+    SCOPED_TRACE(change.detail);
+    const double globalSteps = (change.time - p.sim.dt) / p.global.T1;
+    EXPECT_NEAR(globalSteps, std::round(globalSteps), 1e-9);
+    EXPECT_GE(globalSteps, 1.0);  // chosen at the start without an event
+    // The teammate it names is the nearest one at that step.
+    const std::vector<geometry::Pose>& team = r->recorded.poses[change.step];
+    const auto j = static_cast<std::size_t>(change.camera);
+    std::size_t nearest = j == 0 ? 1 : 0;
+    for (std::size_t i = 0; i < team.size(); ++i) {
+      if (i != j && geometry::distance(team[i].position(), team[j].position()) <
+                        geometry::distance(team[nearest].position(), team[j].position()))
+        nearest = i;
+    }
+    const auto [first, second] = std::minmax(j, nearest);
+    EXPECT_EQ(change.detail,
+              "plans with cameras " + std::to_string(first) + ", " + std::to_string(second));
+  }
+  EXPECT_EQ(r->summary.avoidableContacts, 0);
 }
 
 TEST(DecentralizedController, ACameraIgnoresWhatItNeitherSawNorHeard) {
