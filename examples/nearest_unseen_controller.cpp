@@ -67,11 +67,12 @@ class NearestUnseenController final : public control::Controller {
   // `from`, or nullptr.
   static const visibility::Segment* nearestUnseen(std::span<const visibility::Segment> seen,
                                                   std::size_t camera, geometry::Vec2 from) {
-    const std::uint64_t others = ~(std::uint64_t{1} << camera);
     const visibility::Segment* best = nullptr;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (const visibility::Segment& s : seen) {
-      if ((s.visibleBy & others) != 0 || s.a == s.b) continue;
+      scene::CameraSet others = s.visibleBy;
+      others.erase(camera);
+      if (!others.empty() || s.a == s.b) continue;
       const double d = geometry::distance(from, 0.5 * (s.a + s.b));
       if (d < bestDistance) {
         bestDistance = d;

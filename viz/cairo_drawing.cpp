@@ -207,7 +207,7 @@ void drawSegments(const Painter& p, std::span<const visibility::Segment> segment
   for (const bool seen : {false, true}) {
     const visibility::Segment* last = nullptr;  // the one of this colour drawn before
     for (const auto& s : segments) {
-      if ((s.visibleBy != 0) != seen) continue;
+      if ((!s.visibleBy.empty()) != seen) continue;
       const Enlargement e = enlargementAt(enlarged ? &enlarged->targets : nullptr, s.target);
       // A polyline has one width: a segment of another weight starts a new one.
       if (last != nullptr && widthOf(*last) != widthOf(s)) {

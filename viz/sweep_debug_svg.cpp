@@ -175,10 +175,9 @@ std::string rangesOf(const std::vector<std::size_t>& numbers) {
   return out;
 }
 
-std::string cameraSet(std::uint64_t mask) {
+std::string cameraSet(const scene::CameraSet& cameras) {
   std::string out = "{";
-  for (std::uint64_t m = mask; m != 0; m &= m - 1)
-    out += fmt::format("{}{}", out.size() > 1 ? "," : "", std::countr_zero(m));
+  cameras.forEach([&](std::size_t j) { out += fmt::format("{}{}", out.size() > 1 ? "," : "", j); });
   return out + "}";
 }
 
@@ -436,7 +435,7 @@ void labelFrontEdges(const Painter& p, const visibility::SweepTrace& t, LabelPla
 void labelSegments(const Painter& p, std::span<const visibility::Segment> segments,
                    LabelPlacer& labels) {
   for (const visibility::Segment& s : segments) {
-    if (s.visibleBy == 0) continue;
+    if (s.visibleBy.empty()) continue;
     const Vec2 d = unit(s.b - s.a, {1.0, 0.0});
     const Vec2 outside{d.y, d.x};  // the world's right-hand normal (d.y, −d.x), y flipped
     labels.add(p.image((s.a + s.b) * 0.5), outside, cameraSet(s.visibleBy),

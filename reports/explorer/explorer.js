@@ -29,7 +29,7 @@
       const z = this.u();
       return z % 2 === 0 ? z / 2 : -(z + 1) / 2;
     }
-    bits() {  // a varint mask as the list of its set bits (up to 64 cameras, beyond 2^53)
+    bits() {  // a varint mask as the list of its set bits (any number of cameras, beyond 2^53)
       const set = [];
       let shift = 0, byte;
       do {

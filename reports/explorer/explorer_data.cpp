@@ -194,14 +194,14 @@ class StepPacker {
     out.putUnsigned(frame.segments.size());
     for (const visibility::Segment& s : frame.segments) {
       putPiece(frame.world, s, out);
-      out.putUnsigned(s.visibleBy);
+      out.putBits(s.visibleBy);
       // A weighted scene's (run.weighted): the edge's importance, in thousandths.
       if (!frame.world.targetEdgeWeights.empty()) {
         out.putUnsigned(static_cast<std::uint64_t>(
             std::llround(frame.world.targetEdgeWeights[s.target][s.edge] * kWeightUnits)));
       }
       for (std::size_t j = 0; j < frame.cameras.size(); ++j) {
-        if ((s.visibleBy >> j & 1u) != 0) continue;
+        if (s.visibleBy.contains(j)) continue;
         visibility::UnseenReason r =
             visibility::whyUnseen(frame.world, frame.cameras[j].pose, lenses_[j], s);
         if (r.blocker.kind == visibility::ObjectRef::Kind::Target)

@@ -1,6 +1,7 @@
 #include "reports/explorer/packed_stream.h"
 
 #include <algorithm>
+#include <array>
 
 namespace camcov::reports::explorer {
 
@@ -10,6 +11,23 @@ void PackedStream::putUnsigned(std::uint64_t v) {
     v >>= 7;
   }
   bytes_.push_back(static_cast<std::uint8_t>(v));
+}
+
+void PackedStream::putBits(const scene::CameraSet& cameras) {
+  std::array<std::uint64_t, scene::CameraSet::kWords> words;
+  for (std::size_t w = 0; w < words.size(); ++w)
+    words[w] = cameras.word(w);
+  const auto rest = [&] {
+    return std::any_of(words.begin(), words.end(), [](auto w) { return w; });
+  };
+  do {
+    auto byte = static_cast<std::uint8_t>(words[0] & 0x7f);
+    // The number shifted right by 7 across its words.
+    for (std::size_t w = 0; w < words.size(); ++w)
+      words[w] = (words[w] >> 7) | (w + 1 < words.size() ? words[w + 1] << 57 : 0);
+    if (rest()) byte |= 0x80;
+    bytes_.push_back(byte);
+  } while (rest());
 }
 
 void PackedStream::putSigned(std::int64_t v) {

@@ -6,11 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "scene/camera_set.h"
+
 namespace camcov::reports::explorer {
 
 class PackedStream {
  public:
   void putUnsigned(std::uint64_t v);
+  // The set as one unsigned number, bit j for camera j (putUnsigned's bytes where it holds no
+  // camera beyond 63; the page's bits() reads any length).
+  void putBits(const scene::CameraSet& cameras);
   void putSigned(std::int64_t v);  // zigzag: 0, −1, 1, −2 … → 0, 1, 2, 3 …
   std::size_t size() const { return bytes_.size(); }
   const std::vector<std::uint8_t>& bytes() const { return bytes_; }

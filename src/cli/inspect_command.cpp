@@ -32,10 +32,9 @@ struct InspectOptions {
   ParameterOptions parameters;
 };
 
-nlohmann::json cameraList(std::uint64_t mask) {
+nlohmann::json cameraList(const scene::CameraSet& cameras) {
   nlohmann::json list = nlohmann::json::array();
-  for (; mask != 0; mask &= mask - 1)
-    list.push_back(std::countr_zero(mask));
+  cameras.forEach([&](std::size_t j) { list.push_back(j); });
   return list;
 }
 
@@ -112,7 +111,7 @@ int inspect(const InspectOptions& o) {
         "seen by {}\n",
         kinematics::targetId(model.world(), seg.target), seg.edge, seg.a.x, seg.a.y, seg.b.x,
         seg.b.y, visibility::length(seg),
-        seg.visibleBy ? cameraList(seg.visibleBy).dump() : "nobody");
+        !seg.visibleBy.empty() ? cameraList(seg.visibleBy).dump() : "nobody");
   }
   if (!o.debugSvg.empty()) std::cout << fmt::format("  -> {}\n", o.debugSvg);
   return 0;

@@ -14,10 +14,6 @@ std::vector<scene::StepLimits> stepLimits(const scene::Scene& scene, double dt) 
   return limits;
 }
 
-std::uint64_t allCameras(std::size_t count) {
-  return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-}
-
 LocalController::LocalController(const scene::Scene& scene, const params::Parameters& params)
     : limits_(stepLimits(scene, params.sim.dt)),
       dt_(params.sim.dt),
@@ -28,7 +24,7 @@ void LocalController::control(const Observation& observation,
                               std::span<scene::CameraCommand> commands) {
   takeInstant(model_, observation);
   team_.assign(observation.cameras.begin(), observation.cameras.end());
-  local_.improve(model_, team_, allCameras(team_.size()), limits_);
+  local_.improve(model_, team_, scene::CameraSet::firstCameras(team_.size()), limits_);
   for (std::size_t j = 0; j < team_.size(); ++j) {
     commands[j] = commandTowards(observation.cameras[j], team_[j], dt_);
   }

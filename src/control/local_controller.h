@@ -30,7 +30,5 @@ scene::CameraCommand commandTowards(const geometry::Pose& from, const geometry::
                                     double dt);
 // Per-step limits v_max·dt and γ̇_max·dt of every camera.
 std::vector<scene::StepLimits> stepLimits(const scene::Scene& scene, double dt);
-// Bit mask with one bit per camera set.
-std::uint64_t allCameras(std::size_t count);
 
 }  // namespace camcov::control

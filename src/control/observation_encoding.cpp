@@ -173,7 +173,9 @@ void encodeInstant(const scene::Scene& scene, const params::Parameters& params,
   const RoomFrame frame(world.boundary);
   const double perimeter = reward::targetPerimeter(world);
   // Who counts as seeing: the team, or the camera alone.
-  const std::uint64_t seers = view == View::own ? std::uint64_t{1} << camera : ~std::uint64_t{0};
+  const scene::CameraSet seers = view == View::own
+                                     ? scene::CameraSet::only(camera)
+                                     : scene::CameraSet::firstCameras(o.cameras.size());
   // The own and known views put the camera's own slot first.
   const bool egocentric = view != View::team;
 
@@ -213,7 +215,7 @@ void encodeInstant(const scene::Scene& scene, const params::Parameters& params,
   for (const visibility::Segment& s : o.seen) {
     const double l = visibility::length(s);
     boundary[s.target] += l;
-    if ((s.visibleBy & seers) != 0) seen[s.target] += l;
+    if (s.visibleBy.intersects(seers)) seen[s.target] += l;
   }
   std::vector<geometry::Vec2> centroids;
   centroids.reserve(world.targets.size());

@@ -99,9 +99,9 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   // What the team is committed to: the cameras that follow a plan at its goal, the others
   // where they are (improved the same way as the candidate when camcov.refine > 0).
   std::vector<geometry::Pose> kept = committedTeam(observation.cameras);
-  std::uint64_t idle = 0;
+  scene::CameraSet idle;
   for (std::size_t j = 0; j < m; ++j) {
-    if (!executors_[j].executing()) idle |= std::uint64_t{1} << j;
+    if (!executors_[j].executing()) idle.insert(j);
   }
   double keptReward = model_.reward(kept);
   planners::TeamImprovement(model_, validity_, ours.refine).refineAll(kept, keptReward, idle);
@@ -251,14 +251,14 @@ void PaperController::refineGoals(const Observation& observation) {
   // Section V-D: goals keep being refined by the local optimizer, against the team's
   // committed configuration, so a reached goal is a current local optimum.
   std::vector<geometry::Pose> team = committedTeam(observation.cameras);
-  std::uint64_t executing = 0;
+  scene::CameraSet executing;
   for (std::size_t j = 0; j < team.size(); ++j) {
-    if (executors_[j].executing()) executing |= std::uint64_t{1} << j;
+    if (executors_[j].executing()) executing.insert(j);
   }
-  if (executing == 0) return;
+  if (executing.empty()) return;
   local_.improve(model_, team, executing, limits_);
   for (std::size_t j = 0; j < team.size(); ++j) {
-    if (((executing >> j) & 1u) == 0) continue;
+    if (!executing.contains(j)) continue;
     planners::PlanExecutor& executor = executors_[j];
     const geometry::Pose planned = executor.path().back();
     executor.refineGoal(team[j]);
@@ -289,7 +289,7 @@ void PaperController::control(const Observation& observation,
   refineGoals(observation);
 
   std::vector<geometry::Pose> team(observation.cameras.begin(), observation.cameras.end());
-  std::uint64_t idle = 0;
+  scene::CameraSet idle;
   std::vector<geometry::Pose> others;
   for (std::size_t j = 0; j < team.size(); ++j) {
     planners::PlanExecutor& executor = executors_[j];
@@ -308,13 +308,13 @@ void PaperController::control(const Observation& observation,
               fmt::format("no progress for T3 = {} s", params_.potential.T3));
       }
     }
-    if (!executor.executing()) idle |= std::uint64_t{1} << j;
+    if (!executor.executing()) idle.insert(j);
   }
-  if (idle != 0) {
+  if (!idle.empty()) {
     std::vector<geometry::Pose> improved = team;
     local_.improve(model_, improved, idle, limits_);
     for (std::size_t j = 0; j < team.size(); ++j) {
-      if ((idle >> j) & 1u) commands[j] = commandTowards(team[j], improved[j], params_.sim.dt);
+      if (idle.contains(j)) commands[j] = commandTowards(team[j], improved[j], params_.sim.dt);
     }
   }
 }

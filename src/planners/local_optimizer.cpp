@@ -74,10 +74,11 @@ geometry::Pose LocalOptimizer::gradientStep(reward::RewardModel& model,
 }
 
 double LocalOptimizer::improve(reward::RewardModel& model, std::span<geometry::Pose> team,
-                               std::uint64_t movable, std::span<const StepLimits> limits) const {
+                               const scene::CameraSet& movable,
+                               std::span<const StepLimits> limits) const {
   double current = model.reward(team);
   for (std::size_t j = 0; j < team.size(); ++j) {
-    if (((movable >> j) & 1u) == 0) continue;
+    if (!movable.contains(j)) continue;
     const geometry::Pose next = step(model, team, j, current, limits[j]);
     if (next == team[j]) continue;
     team[j] = next;

@@ -31,11 +31,11 @@ class LocalOptimizer {
   geometry::Pose step(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
                       double currentReward, StepLimits limits) const;
 
-  // One step for each camera j whose bit is set in `movable`, in index order, each against
+  // One step for each camera j in `movable`, in index order, each against
   // the team as the cameras before it left it (so moves never conflict). Updates `team`;
   // returns its reward.
-  double improve(reward::RewardModel& model, std::span<geometry::Pose> team, std::uint64_t movable,
-                 std::span<const StepLimits> limits) const;
+  double improve(reward::RewardModel& model, std::span<geometry::Pose> team,
+                 const scene::CameraSet& movable, std::span<const StepLimits> limits) const;
 
  private:
   geometry::Pose gradientStep(reward::RewardModel& model, std::span<geometry::Pose> team,

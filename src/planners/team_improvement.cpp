@@ -55,12 +55,12 @@ bool TeamImprovement::refine(std::vector<geometry::Pose>& team, std::size_t j, d
 }
 
 bool TeamImprovement::refineAll(std::vector<geometry::Pose>& team, double& value,
-                                std::uint64_t movable) {
+                                const scene::CameraSet& movable) {
   bool moved = false;
   for (bool pass = true; pass && !spent();) {
     pass = false;
     for (std::size_t j = 0; j < team.size() && !spent(); ++j) {
-      if ((movable >> j) & 1u) pass = refine(team, j, value) || pass;
+      if (movable.contains(j)) pass = refine(team, j, value) || pass;
     }
     moved = moved || pass;
   }

@@ -34,10 +34,11 @@ class TeamImprovement {
   // Pattern search on camera j's x, y and γ, the steps halving from 1 m and 0.2 rad while no
   // move helps, down to 1 mm and 0.001 rad. True if camera j moved.
   bool refine(std::vector<geometry::Pose>& team, std::size_t j, double& value);
-  // refine() for every camera whose bit is set in `movable`, in turn, passes until one finds
+  // refine() for every camera in `movable`, in turn, passes until one finds
   // nothing or the budget is spent.
-  bool refineAll(std::vector<geometry::Pose>& team, double& value,
-                 std::uint64_t movable = ~std::uint64_t{0});
+  bool refineAll(
+      std::vector<geometry::Pose>& team, double& value,
+      const scene::CameraSet& movable = scene::CameraSet::firstCameras(scene::kMaxCameras));
 
  private:
   double reward(std::span<const geometry::Pose> team) {

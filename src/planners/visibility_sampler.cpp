@@ -101,7 +101,7 @@ bool VisibilitySampler::focus(reward::RewardModel& model, geometry::Vec2 q1) {
 bool VisibilitySampler::focusOnUnseen(reward::RewardModel& model, Random& random) {
   unseen_.clear();
   for (const auto& s : model.segments()) {
-    if (s.visibleBy == 0) unseen_.push_back(s);
+    if (s.visibleBy.empty()) unseen_.push_back(s);
   }
   auto q1 = samplePointOnSegments(unseen_, random);
   if (!q1) q1 = samplePointOnSegments(model.segments(), random);

@@ -133,15 +133,38 @@ std::vector<double> valuesFromArray(const py::handle& values, std::size_t count,
   return out;
 }
 
-py::dict segmentsToDict(std::span<const visibility::Segment> segments,
+namespace {
+
+// visibleBy as bits of one number per segment: uint64 for a team of up to 64 cameras, else
+// Python's own integers (an object array), which hold as many bits as the team has cameras.
+py::array visibleByArray(std::span<const visibility::Segment> segments, std::size_t cameras) {
+  const auto n = static_cast<py::ssize_t>(segments.size());
+  if (cameras <= 64) {
+    py::array_t<std::uint64_t> bits(n);
+    auto view = bits.mutable_unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i)
+      view(i) = segments[static_cast<std::size_t>(i)].visibleBy.word(0);
+    return bits;
+  }
+  py::list numbers;
+  for (const visibility::Segment& s : segments) {
+    py::object value = py::int_(0);
+    for (std::size_t w = scene::CameraSet::kWords; w-- > 0;)
+      value = value.attr("__lshift__")(64).attr("__or__")(py::int_(s.visibleBy.word(w)));
+    numbers.append(value);
+  }
+  return py::module_::import("numpy").attr("array")(numbers, py::arg("dtype") = "O");
+}
+
+}  // namespace
+
+py::dict segmentsToDict(std::span<const visibility::Segment> segments, std::size_t cameras,
                         std::span<const std::int64_t> team) {
   const auto n = static_cast<py::ssize_t>(segments.size());
   Array a({n, py::ssize_t{2}}), b({n, py::ssize_t{2}});
   py::array_t<std::int64_t> target(n), edge(n);
-  py::array_t<std::uint64_t> visibleBy(n);
   auto av = a.mutable_unchecked<2>(), bv = b.mutable_unchecked<2>();
   auto tv = target.mutable_unchecked<1>(), ev = edge.mutable_unchecked<1>();
-  auto vv = visibleBy.mutable_unchecked<1>();
   for (py::ssize_t i = 0; i < n; ++i) {
     const visibility::Segment& s = segments[static_cast<std::size_t>(i)];
     av(i, 0) = s.a.x;
@@ -150,14 +173,13 @@ py::dict segmentsToDict(std::span<const visibility::Segment> segments,
     bv(i, 1) = s.b.y;
     tv(i) = s.target;
     ev(i) = s.edge;
-    vv(i) = s.visibleBy;
   }
   py::dict out;
   out["a"] = a;
   out["b"] = b;
   out["target"] = target;
   out["edge"] = edge;
-  out["visible_by"] = visibleBy;
+  out["visible_by"] = visibleByArray(segments, cameras);
   if (!team.empty()) out["team"] = py::array_t<std::int64_t>(n, team.data());
   return out;
 }

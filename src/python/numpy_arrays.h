@@ -43,9 +43,10 @@ std::vector<geometry::Pose> teamsFromArray(const py::handle& teams, std::size_t&
 // finite and within ±`limit`.
 std::vector<double> valuesFromArray(const py::handle& values, std::size_t count, const char* what,
                                     double limit = 1e9);
-// S as a dict of arrays: a, b (S, 2); target, edge (S,) int64; visible_by (S,) uint64; and,
-// when `team` is given, team (S,) int64: which team each segment belongs to.
-py::dict segmentsToDict(std::span<const visibility::Segment> segments,
+// S of a team of `cameras` as a dict of arrays: a, b (S, 2); target, edge (S,) int64;
+// visible_by (S,), bit j for camera j: uint64 for up to 64 cameras, else Python integers (an
+// object array); and, when `team` is given, team (S,) int64: which team each segment belongs to.
+py::dict segmentsToDict(std::span<const visibility::Segment> segments, std::size_t cameras,
                         std::span<const std::int64_t> team = {});
 // A JSON value (a run's summary, the parameters) as Python's json module would read it.
 py::object jsonToPython(const nlohmann::json& value);

@@ -105,7 +105,8 @@ void bindObservation(py::module_& m) {
           "cameras", [](const PythonObservation& o) { return posesToArray(o.cameras); },
           "The cameras' poses (M, 3): x, y in metres, yaw in radians.")
       .def_property_readonly(
-          "seen", [](const PythonObservation& o) { return segmentsToDict(o.seen); },
+          "seen",
+          [](const PythonObservation& o) { return segmentsToDict(o.seen, o.cameras.size()); },
           "S(t) for the cameras, as the simulator measured it (see Visibility.segments).")
       .def_property_readonly(
           "terms", [](const PythonObservation& o) { return termsToDict(o.terms); },

@@ -89,7 +89,7 @@ std::vector<scene::Lens> lensesFromArrays(const py::handle& halfFovs, const py::
     throw py::value_error(
         "cameras: expected a camcov.Scene or one half-angle (radians) per camera");
   const auto count = static_cast<std::size_t>(thetas.shape(0));
-  // The sweep keeps which cameras see a segment as a 64-bit mask.
+  // The sweep keeps which cameras see a segment as a scene::CameraSet.
   if (count > scene::kMaxCameras) {
     throw py::value_error(
         fmt::format("cameras: {} cameras; at most {}", count, scene::kMaxCameras));
@@ -171,11 +171,13 @@ void bindVisibility(py::module_& m) {
           [](Visibility& v, const py::handle& poses) {
             const auto team = posesFromArray(poses, "poses");
             const auto lock = v.evaluate(team, team.size(), true);
-            return segmentsToDict(v.scratch().segments);
+            return segmentsToDict(v.scratch().segments, team.size());
           },
           py::arg("poses"),
           "S for poses (M, 3): every target edge split where visibility changes, as arrays a, "
-          "b (S, 2), target, edge (S,), visible_by (S,) with bit j for camera j.")
+          "b (S, 2), target, edge (S,), visible_by (S,) with bit j for camera j (uint64; Python "
+          "integers "
+          "for a team of more than 64).")
       .def(
           "terms",
           [](Visibility& v, const py::handle& poses) {
@@ -190,7 +192,7 @@ void bindVisibility(py::module_& m) {
             std::size_t m = 0;
             const auto poses = teamsFromArray(teams, m);
             const auto lock = v.evaluate(poses, m, true);
-            return segmentsToDict(v.scratch().segments, v.scratch().team);
+            return segmentsToDict(v.scratch().segments, m, v.scratch().team);
           },
           py::arg("teams"),
           "segments() of many teams in one call: (N, M, 3), or (N, 3) for N single cameras "

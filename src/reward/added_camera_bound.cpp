@@ -76,7 +76,7 @@ void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometr
     edge.unseen = edge.length;
   teamSeen_ = 0.0;
   for (const visibility::Segment& s : model.segments()) {
-    if (s.visibleBy == 0) continue;
+    if (s.visibleBy.empty()) continue;
     const std::uint32_t e = occluders.targetEdgeOffset(s.target) + s.edge;
     const double seen = model.rewardWeight(e) * visibility::length(s);
     edges_[e].unseen -= seen;

@@ -26,10 +26,10 @@ void forEachSeenRun(std::span<const visibility::Segment> segments, F&& f) {
   const visibility::Segment* first = nullptr;  // of the run of seen segments being walked
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& s = segments[i];
-    if (s.visibleBy == 0) continue;
+    if (s.visibleBy.empty()) continue;
     if (first == nullptr) first = &s;
-    const bool runGoesOn =
-        i + 1 < segments.size() && segments[i + 1].visibleBy != 0 && sameEdge(s, segments[i + 1]);
+    const bool runGoesOn = i + 1 < segments.size() && !segments[i + 1].visibleBy.empty() &&
+                           sameEdge(s, segments[i + 1]);
     if (!runGoesOn) {
       f(*first, s);
       first = nullptr;
@@ -90,8 +90,8 @@ RewardTerms termsAlone(const kinematics::World& world,
                        std::size_t j, const params::RewardParams& params) {
   std::vector<visibility::Segment> own;
   for (visibility::Segment s : segments) {
-    if ((s.visibleBy >> j & 1u) == 0) continue;
-    s.visibleBy = 1;  // camera 0 of a team of one
+    if (!s.visibleBy.contains(j)) continue;
+    s.visibleBy = scene::CameraSet::only(0);  // camera 0 of a team of one
     own.push_back(s);
   }
   const geometry::Pose& pose = cameras[j];
@@ -151,14 +151,13 @@ double utilization(std::span<const visibility::Segment> segments,
   };
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& s = segments[i];
-    for (std::uint64_t bits = s.visibleBy; bits != 0; bits &= bits - 1) {
-      const auto j = static_cast<std::size_t>(std::countr_zero(bits));
+    s.visibleBy.forEach([&](std::size_t j) {
       Run& run = runs[j];
       // A run goes on while its camera sees the next piece of the same edge.
       if (run.last != kNone && !(run.last + 1 == i && sameEdge(segments[run.last], s))) close(j);
       if (run.last == kNone) run.a = s.a;
       run.last = i;
-    }
+    });
   }
   for (std::size_t j = 0; j < cameras.size(); ++j)
     close(j);
@@ -168,7 +167,7 @@ double utilization(std::span<const visibility::Segment> segments,
 double visibleLengthOf(std::span<const visibility::Segment> segments, unsigned camera) {
   double total = 0.0;
   for (const auto& s : segments) {
-    if ((s.visibleBy >> camera) & 1u) total += visibility::length(s);
+    if (s.visibleBy.contains(camera)) total += visibility::length(s);
   }
   return total;
 }

@@ -129,10 +129,9 @@ struct Viewers {
   std::size_t count = 0;
   Viewers(const visibility::Segment& segment, std::span<const geometry::Pose> cameras,
           std::span<const scene::Lens> lenses) {
-    for (std::uint64_t bits = segment.visibleBy; bits != 0; bits &= bits - 1) {
-      const auto j = static_cast<std::size_t>(std::countr_zero(bits));
+    segment.visibleBy.forEach([&](std::size_t j) {
       viewers[count++] = viewer(cameras[j].position(), lenses[j], segment.a, segment.b);
-    }
+    });
   }
   std::span<const Viewer> all() const { return {viewers, count}; }
 };
@@ -149,7 +148,7 @@ double pixelDensity(geometry::Vec2 camera, const scene::Lens& lens, geometry::Ve
 double resolvedLength(const visibility::Segment& segment, std::span<const geometry::Pose> cameras,
                       std::span<const scene::Lens> lenses,
                       const scene::ResolutionRequirement& requirement) {
-  if (segment.visibleBy == 0 || segment.a == segment.b) return 0.0;
+  if (segment.visibleBy.empty() || segment.a == segment.b) return 0.0;
   const Viewers seeing(segment, cameras, lenses);
   const std::span<const Viewer> seenBy = seeing.all();
   if (requirement.proportional)
@@ -172,7 +171,7 @@ void addUnresolvedPieces(const visibility::Segment& segment,
                          std::span<const geometry::Pose> cameras,
                          std::span<const scene::Lens> lenses, double minDensity,
                          std::vector<visibility::Segment>& out) {
-  if (segment.visibleBy == 0 || segment.a == segment.b) return;
+  if (segment.visibleBy.empty() || segment.a == segment.b) return;
   const Viewers seeing(segment, cameras, lenses);
   const auto piece = [&](double from, double to) {
     if (!(to > from)) return;

@@ -12,11 +12,9 @@
 
 #include "geometry/same_bits.h"
 #include "geometry/vec2.h"
+#include "scene/camera_set.h"
 
 namespace camcov::scene {
-
-// The visibility sweep keeps visibleBy(s_l) as a 64-bit mask, one bit a camera.
-inline constexpr std::size_t kMaxCameras = 64;
 
 inline constexpr double kUnlimitedRange = std::numeric_limits<double>::infinity();
 

@@ -47,8 +47,7 @@ void validate(const GeneratorOptions& o) {
   require(o.targets >= 1 && o.targets <= kMaxTargets,
           fmt::format("{} targets: a scene has 1 to {}", o.targets, kMaxTargets));
   require(o.cameras >= 1 && o.cameras <= static_cast<int>(kMaxCameras),
-          fmt::format("{} cameras: a scene has 1 to {} (visibleBy is a {}-bit mask)", o.cameras,
-                      kMaxCameras, kMaxCameras));
+          fmt::format("{} cameras: a scene has 1 to {}", o.cameras, kMaxCameras));
   require(
       o.vertices >= 3 && o.vertices <= kMaxVertices,
       fmt::format("{} vertices per target: a polygon has 3 to {} here", o.vertices, kMaxVertices));

@@ -30,7 +30,7 @@ void TeamKnowledge::see(const kinematics::World& world, std::span<const geometry
   sight_.setWorld(everything);
   sight_.evaluate(poses);
   const std::size_t objects = everything.targets.size();
-  std::vector<std::uint64_t> seenBy(objects, 0);
+  std::vector<scene::CameraSet> seenBy(objects);
   for (const visibility::Segment& s : sight_.segments())
     seenBy[s.target] |= s.visibleBy;
 
@@ -38,7 +38,7 @@ void TeamKnowledge::see(const kinematics::World& world, std::span<const geometry
   const std::vector<geometry::Vec2> obstacleVelocity = control::obstacleVelocities(world, before_);
   const std::size_t targets = world.targets.size();
   for (std::size_t i = 0; i < objects; ++i) {
-    if (seenBy[i] == 0) continue;
+    if (seenBy[i].empty()) continue;
     const bool isTarget = i < targets;
     KnownObject object;
     object.kind = isTarget ? ObjectKind::target : ObjectKind::obstacle;
@@ -49,9 +49,7 @@ void TeamKnowledge::see(const kinematics::World& world, std::span<const geometry
     object.seenAt = world.time;
     if (isTarget && weighted_ && i < world.targetEdgeWeights.size())
       object.edgeWeights = world.targetEdgeWeights[i];
-    for (std::size_t j = 0; j < cameras_.size(); ++j) {
-      if ((seenBy[i] >> j) & 1U) cameras_[j].see(object);
-    }
+    seenBy[i].forEach([&](std::size_t j) { cameras_[j].see(object); });
   }
   before_ = world;
 }

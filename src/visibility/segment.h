@@ -4,15 +4,16 @@
 #include <cstdint>
 
 #include "geometry/vec2.h"
+#include "scene/camera_set.h"
 
 namespace camcov::visibility {
 
 struct Segment {
-  geometry::Vec2 a;             // s_l^(1), first in the target ring's direction
-  geometry::Vec2 b;             // s_l^(2)
-  std::uint32_t target = 0;     // index into World::targets
-  std::uint32_t edge = 0;       // the edge of that ring from vertex `edge` to the next one
-  std::uint64_t visibleBy = 0;  // bit j set: camera j sees all of the segment
+  geometry::Vec2 a;            // s_l^(1), first in the target ring's direction
+  geometry::Vec2 b;            // s_l^(2)
+  std::uint32_t target = 0;    // index into World::targets
+  std::uint32_t edge = 0;      // the edge of that ring from vertex `edge` to the next one
+  scene::CameraSet visibleBy;  // the cameras that see all of the segment
 };
 
 // One camera sees the global target edge `edge` (Occluders::targetEdgeOffset) for parameters

@@ -58,7 +58,7 @@ class Sweep {
   Sweep& operator=(Sweep&&) noexcept;
 
   // S(T, O, C) and visibleBy(s_l) (paper equation (1), Algorithm 1) for `cameras` (camera j
-  // is bit j of visibleBy), camera j with lens lenses[j] (half-angle θ_j in radians). Writes into
+  // is j of visibleBy), camera j with lens lenses[j] (half-angle θ_j in radians). Writes into
   // `out` (cleared first) every target's boundary as segments, ordered by target, edge and along
   // the edge; segments nobody sees are included with an empty mask. O(M · n log n).
   // Each camera slot j keeps its last six sweeps: a camera whose arrangement
@@ -74,7 +74,7 @@ class Sweep {
   void segments(const Occluders& occluders, std::span<const geometry::Pose> cameras,
                 const scene::Lens& lens, std::vector<Segment>& out);
 
-  // What camera slot `slot` (< scene::kMaxCameras; bit `slot` of segments()) at `camera` with
+  // What camera slot `slot` (< scene::kMaxCameras; camera `slot` of segments()) at `camera` with
   // `lens` sees of the targets' edges: the intervals segments() unites into S, from the
   // slot's kept sweeps when they hold this query. Valid until the slot's next sweep. Throws
   // like segments().

@@ -49,7 +49,7 @@ void Tessellation::build(const Occluders& occluders, std::vector<Segment>& out) 
       const auto point = [a, b](double t) { return pointAt(a, b, t); };
       const auto first = out.size();
       double cur = 0.0;
-      std::uint64_t mask = 0;
+      scene::CameraSet mask;
       const auto emit = [&](double t) {
         if (out.size() > first && out.back().visibleBy == mask) {
           out.back().b = point(t);  // same cameras as the piece before: one segment
@@ -67,8 +67,11 @@ void Tessellation::build(const Occluders& occluders, std::vector<Segment>& out) 
         // All marks at one t at once, so touching intervals of one camera do not split S.
         for (const double t = m->t; m != end && m->t == t; ++m) {
           open_[m->camera] += m->delta;
-          const std::uint64_t bit = std::uint64_t{1} << m->camera;
-          mask = open_[m->camera] > 0 ? mask | bit : mask & ~bit;
+          if (open_[m->camera] > 0) {
+            mask.insert(m->camera);
+          } else {
+            mask.erase(m->camera);
+          }
         }
       }
       if (cur < 1.0) emit(1.0);

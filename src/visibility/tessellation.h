@@ -29,7 +29,7 @@ void appendSeen(std::vector<SeenInterval>& out, std::uint32_t globalEdge, double
 class Tessellation {
  public:
   void clear();
-  // Camera `camera` (< 64) sees each of `seen`.
+  // Camera `camera` (< scene::kMaxCameras) sees each of `seen`.
   void add(std::span<const SeenInterval> seen, unsigned camera);
   // Writes S, ordered by target, edge, and along the edge.
   void build(const Occluders& occluders, std::vector<Segment>& out);

@@ -70,7 +70,7 @@ std::string inspect(const std::string& sceneText, const std::string& name, doubl
     for (const auto& s : segments) {
       nlohmann::json seenBy = nlohmann::json::array();  // camera numbers, as inspect lists them
       for (unsigned j = 0; j < cameras.size(); ++j) {
-        if ((s.visibleBy >> j & 1u) != 0) seenBy.push_back(j);
+        if (s.visibleBy.contains(j)) seenBy.push_back(j);
       }
       out["segments"].push_back({{"target", camcov::kinematics::targetId(model.world(), s.target)},
                                  {"edge", s.edge},
@@ -227,7 +227,7 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
         ends.push_back(v);
       nlohmann::json seenBy = nlohmann::json::array();
       for (unsigned j = 0; j < cameras.size(); ++j) {
-        if ((s.visibleBy >> j & 1u) != 0) seenBy.push_back(j);
+        if (s.visibleBy.contains(j)) seenBy.push_back(j);
       }
       visibleBy.push_back(std::move(seenBy));
     }
@@ -241,7 +241,7 @@ std::string explain(const std::string& sceneText, const std::string& name, doubl
       const cc::visibility::Segment& s = segments[reasonsFor];
       nlohmann::json why = nlohmann::json::array();
       for (unsigned j = 0; j < cameras.size(); ++j) {
-        if ((s.visibleBy >> j & 1u) != 0) {
+        if (s.visibleBy.contains(j)) {
           why.push_back(nullptr);
         } else {
           why.push_back(cc::visibility::describeUnseen(

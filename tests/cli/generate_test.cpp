@@ -47,7 +47,7 @@ TEST(CliGenerate, BadOptionsExitTwoAndWriteNothing) {
   const fs::path out = dir / "scene.json";
   for (const std::string bad : {
            "--targets 0",
-           "--cameras 65",
+           "--cameras 129",
            "--vertices 2",
            "--field 30",
            "--field 30,-1",

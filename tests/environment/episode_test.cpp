@@ -169,7 +169,7 @@ TEST(Episode, UnderLimitedKnowledgeAKnownViewHoldsWhatTheCameraSawAndItsTeamAsLa
   std::vector<bool> seesTarget(2, false);
   for (const visibility::Segment& s : episode.scored().seen)
     for (unsigned j = 0; j < 2; ++j)
-      seesTarget[j] = seesTarget[j] || (s.visibleBy >> j & 1u) != 0;
+      seesTarget[j] = seesTarget[j] || s.visibleBy.contains(j);
   ASSERT_FALSE(seesTarget[0]);
   ASSERT_TRUE(seesTarget[1]);
   for (std::size_t j = 0; j < 2; ++j) {

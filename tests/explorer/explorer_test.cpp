@@ -30,6 +30,19 @@ TEST(PackedStream, VarintsZigzagAndBase64AsTheStandardsGiveThem) {
   s.putSigned(1);      // zigzag 2
   s.putSigned(-64);    // zigzag 127
   EXPECT_EQ(s.bytes(), (std::vector<std::uint8_t>{0xAC, 0x02, 0x01, 0x02, 0x7F}));
+  // A camera set is the number whose bit j is camera j: 2^100 is fourteen groups of seven zero
+  // bits, then 2^2; a set within 64 cameras is written as putUnsigned writes its bits.
+  reports::explorer::PackedStream far, near, asNumber;
+  far.putBits(scene::CameraSet::only(100));
+  std::vector<std::uint8_t> twoToThe100(14, 0x80);
+  twoToThe100.push_back(0x04);
+  EXPECT_EQ(far.bytes(), twoToThe100);
+  near.putBits(scene::CameraSet::fromBits(0x8000'0000'0000'0301));
+  asNumber.putUnsigned(0x8000'0000'0000'0301);
+  EXPECT_EQ(near.bytes(), asNumber.bytes());
+  reports::explorer::PackedStream nobody;
+  nobody.putBits({});
+  EXPECT_EQ(nobody.bytes(), (std::vector<std::uint8_t>{0x00}));
   // RFC 4648: "Man" → "TWFu", "Ma" → "TWE=", "M" → "TQ==".
   for (const auto& [text, expected] :
        {std::pair{"Man", "TWFu"}, std::pair{"Ma", "TWE="}, std::pair{"M", "TQ=="}}) {

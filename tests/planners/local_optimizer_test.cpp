@@ -47,7 +47,7 @@ TEST(LocalOptimizer, ImproveMovesOnlyTheSelectedCameras) {
   std::vector<geometry::Pose> team{{-4, -3, 0.3}, {4, 3, 3.0}};
   const std::vector<StepLimits> limits(2, StepLimits{0.2, 0.1});
   const double before = model.reward(team);
-  const double after = local.improve(model, team, 0b01, limits);
+  const double after = local.improve(model, team, scene::CameraSet::only(0), limits);
   EXPECT_EQ(team[1], (geometry::Pose{4, 3, 3.0}));
   EXPECT_GE(after, before);
   EXPECT_DOUBLE_EQ(after, model.reward(team));

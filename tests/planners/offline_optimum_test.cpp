@@ -76,7 +76,9 @@ TEST(TeamImprovement, RefinementRaisesTheRewardKeepsCamerasValidAndOnlyMovesTheC
   double value = s.model.reward(team);
   const double before = value;
   TeamImprovement moves(s.model, s.validity, 5000);
-  moves.refineAll(team, value, 0b101);
+  scene::CameraSet firstAndThird = scene::CameraSet::only(0);
+  firstAndThird.insert(2);
+  moves.refineAll(team, value, firstAndThird);
   EXPECT_GT(value, before);
   EXPECT_DOUBLE_EQ(value, s.model.reward(team));
   EXPECT_EQ(team[1], (geometry::Pose{6, 6, 2.0}));

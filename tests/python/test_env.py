@@ -464,7 +464,7 @@ def test_bad_input_raises_naming_the_argument(scenes):
         vector.step(nan)
     # Sizes, threads and counts that would overflow or exhaust the machine are refused.
     episode = env.episodes.episode
-    with pytest.raises(ValueError, match="sizes: 4611686018427387904 cameras, at most 64"):
+    with pytest.raises(ValueError, match="sizes: 4611686018427387904 cameras, at most 128"):
         episode.observation((2**62, 1, 0, 4))
     with pytest.raises(ValueError, match="sizes: .* vertices, at most 1000000"):
         episode.observation((5, 6, 0, 2**61))

@@ -26,7 +26,7 @@ def test_segments_and_terms_agree_with_the_cli(cli, published, name, t):
     for k, s in enumerate(reference["segments"]):
         assert segments["a"][k].tolist() == s["a"] and segments["b"][k].tolist() == s["b"]
         assert (segments["target"][k], segments["edge"][k]) == (s["target"], s["edge"])
-        bits = [j for j in range(64) if (int(segments["visible_by"][k]) >> j) & 1]
+        bits = [j for j in range(len(scene.initial_poses)) if (int(segments["visible_by"][k]) >> j) & 1]
         assert bits == s["visibleBy"]
 
 
@@ -46,6 +46,21 @@ def test_many_teams_in_one_call_are_each_team_on_its_own(published):
         assert np.array_equal(segments["visible_by"][mine], alone["visible_by"])
     singles = visibility.terms_each(teams[:, 0, :])  # (N, 3): one camera each, camera 0's θ
     assert singles["coverage"][4] == visibility.terms(teams[4, :1])["coverage"]
+
+
+def test_a_team_of_more_than_64_cameras_names_each_one_that_sees(published):
+    # 100 copies of one camera of dynamic9: each sees exactly what that camera sees alone, so
+    # every segment is seen by all 100 or by none, as Python integers of 100 bits.
+    scene = camcov.load_scene(published("dynamic9"))
+    visibility = camcov.Visibility(scene.world_at(7.0), np.full(100, scene.half_fovs[0]))
+    alone = camcov.Visibility(scene.world_at(7.0), scene.half_fovs[:1]).segments(
+        scene.initial_poses[:1])
+    seen = visibility.segments(np.repeat(scene.initial_poses[:1], 100, axis=0))
+    assert seen["visible_by"].dtype == object
+    everyone = (1 << 100) - 1
+    assert [everyone if bits else 0 for bits in alone["visible_by"].tolist()] == \
+        seen["visible_by"].tolist()
+    assert any(bits == everyone for bits in seen["visible_by"].tolist())
 
 
 def test_the_visibility_polygon_holds_its_point(published):
@@ -103,8 +118,8 @@ def test_a_half_angle_outside_zero_to_pi_or_too_many_cameras_raise_value_errors(
     world = camcov.load_scene(tiny("tiny_static")).world_at(0.0)
     with pytest.raises(ValueError, match=r"half-angle must lie in \(0, π\)"):
         camcov.Visibility(world, [0.5, theta])
-    with pytest.raises(ValueError, match="65 cameras; at most 64"):
-        camcov.Visibility(world, np.full(65, 0.5))
+    with pytest.raises(ValueError, match="129 cameras; at most 128"):
+        camcov.Visibility(world, np.full(129, 0.5))
 
 
 RANGED_SCENE = {

@@ -144,9 +144,9 @@ TEST(Metrics, RunSumsAreThePaperSumsOverSegments) {
     sweep.segments(occluders, team, thetas, s);
     double length = 0.0, angles = 0.0;
     for (const auto& segment : s) {
-      if (segment.visibleBy != 0) length += visibility::length(segment);
+      if (!segment.visibleBy.empty()) length += visibility::length(segment);
       for (std::size_t j = 0; j < team.size(); ++j) {
-        if ((segment.visibleBy >> j) & 1u) {
+        if (segment.visibleBy.contains(j)) {
           angles += thetas[0].halfFov / thetas[j].halfFov *
                     subtendedAngle(segment.a, segment.b, team[j].position());
         }
@@ -161,11 +161,12 @@ TEST(Metrics, RunsJoinTouchingPiecesAndStopAtGapsAndEdgeEnds) {
   // Edge 0 from (0, 0) to (4, 0), then edge 1 up to (4, 4). Camera 0 sees [0, 1] and [1, 2]
   // (touching: one run); camera 1 sees [1, 2], then after a gap [3, 4] and all of edge 1 (two
   // runs on edge 0, one on edge 1: a run ends with its edge).
-  const std::vector<visibility::Segment> s{{{0, 0}, {1, 0}, 0, 0, 1},
-                                           {{1, 0}, {2, 0}, 0, 0, 3},
-                                           {{2, 0}, {3, 0}, 0, 0, 0},
-                                           {{3, 0}, {4, 0}, 0, 0, 2},
-                                           {{4, 0}, {4, 4}, 0, 1, 2}};
+  using scene::CameraSet;
+  const std::vector<visibility::Segment> s{{{0, 0}, {1, 0}, 0, 0, CameraSet::fromBits(1)},
+                                           {{1, 0}, {2, 0}, 0, 0, CameraSet::fromBits(3)},
+                                           {{2, 0}, {3, 0}, 0, 0, CameraSet::fromBits(0)},
+                                           {{3, 0}, {4, 0}, 0, 0, CameraSet::fromBits(2)},
+                                           {{4, 0}, {4, 4}, 0, 1, CameraSet::fromBits(2)}};
   EXPECT_EQ(visibleLength(s), 2.0 + 1.0 + 4.0);
   const geometry::Vec2 p0{0, -1}, p1{3.5, -1};
   const std::vector<Pose> team{{p0.x, p0.y, 0}, {p1.x, p1.y, 0}};

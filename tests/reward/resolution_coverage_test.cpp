@@ -30,7 +30,7 @@ visibility::Segment seenBy(Vec2 a, Vec2 b, std::uint64_t cameras) {
   visibility::Segment s;
   s.a = a;
   s.b = b;
-  s.visibleBy = cameras;
+  s.visibleBy = scene::CameraSet::fromBits(cameras);
   return s;
 }
 

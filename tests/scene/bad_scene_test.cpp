@@ -74,7 +74,7 @@ const BadCase kBadCases[] = {
     {"comms_not_object", "comms", "expected an object"},
     {"no_cameras", "cameras", "at least one camera"},
     {"no_targets", "targets", "at least one target"},
-    {"too_many_cameras", "cameras", "at most 64"},
+    {"too_many_cameras", "cameras", "at most 128"},
     {"camera_outside_boundary", "cameras[0].pos", "outside the boundary"},
     {"camera_inside_target", "cameras[0].pos", "inside targets[0]"},
     {"camera_inside_obstacle", "cameras[0].pos", "inside obstacles[0]"},

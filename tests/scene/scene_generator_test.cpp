@@ -179,7 +179,7 @@ TEST(GenerateScene, BadOptionsAreInputErrors) {
       {"no targets", [](auto& o) { o.targets = 0; }},
       {"too many targets", [](auto& o) { o.targets = 10001; }},
       {"no cameras", [](auto& o) { o.cameras = 0; }},
-      {"65 cameras", [](auto& o) { o.cameras = 65; }},
+      {"129 cameras", [](auto& o) { o.cameras = 129; }},
       {"2 vertices", [](auto& o) { o.vertices = 2; }},
       {"too many vertices", [](auto& o) { o.vertices = 100001; }},
       {"field width 0", [](auto& o) { o.fieldWidth = 0.0; }},

@@ -137,7 +137,7 @@ TEST(CulledSweep, WalledInCameraSweepsOnlyTheInnerRoomExactly) {
   // The target inside is seen on the sides facing the cameras, the one outside not at all.
   double seenInside = 0.0, seenOutside = 0.0;
   for (const Segment& s : got)
-    (s.target == 0 ? seenInside : seenOutside) += s.visibleBy != 0 ? length(s) : 0.0;
+    (s.target == 0 ? seenInside : seenOutside) += !s.visibleBy.empty() ? length(s) : 0.0;
   EXPECT_GT(seenInside, 0.0);
   EXPECT_EQ(seenOutside, 0.0);
 }

@@ -57,7 +57,7 @@ TEST(ExportedCases, EachAgreesWithTheReference) {
       ASSERT_FALSE(lenses[j].limited()) << "the reference has no sensing range";
       double swept = 0.0, expected = 0.0;
       for (const Segment& seg : segments) {
-        if ((seg.visibleBy >> j & 1u) != 0) swept += length(seg);
+        if (seg.visibleBy.contains(j)) swept += length(seg);
       }
       const auto seen =
           reference::visibleIntervals(world, poses[j].position(), poses[j].yaw, lenses[j].halfFov);

@@ -46,9 +46,9 @@ Quantities fromSweep(const testing::Case& c, const std::vector<Segment>& segment
   q.length.assign(c.cameras.size(), 0.0);
   q.utilization.assign(c.cameras.size(), 0.0);
   for (const Segment& s : segments) {
-    if (s.visibleBy != 0) q.unionLength += length(s);
+    if (!s.visibleBy.empty()) q.unionLength += length(s);
     for (std::size_t j = 0; j < c.cameras.size(); ++j) {
-      if ((s.visibleBy >> j & 1) == 0) continue;
+      if (!s.visibleBy.contains(j)) continue;
       q.length[j] += length(s);
       q.utilization[j] += angleAt(c.cameras[j].position(), s.a, s.b) / (2.0 * c.halfFov);
     }

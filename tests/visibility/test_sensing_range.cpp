@@ -31,7 +31,7 @@ double seenLength(const kinematics::World& w, const Pose& camera, const scene::L
   sweep.segments(Occluders(w), std::vector<Pose>{camera}, lens, out);
   double sum = 0.0;
   for (const Segment& s : out)
-    sum += s.visibleBy != 0 ? length(s) : 0.0;
+    sum += !s.visibleBy.empty() ? length(s) : 0.0;
   return sum;
 }
 
@@ -69,7 +69,7 @@ TEST(SensingRange, TheSegmentsOfSAreCutAtTheCircle) {
                  out);
   int seen = 0;
   for (const Segment& s : out) {
-    if (s.visibleBy == 0) continue;
+    if (s.visibleBy.empty()) continue;
     ++seen;
     EXPECT_NEAR(std::min(s.a.y, s.b.y), -0.5, 1e-12);
     EXPECT_NEAR(std::max(s.a.y, s.b.y), 0.5, 1e-12);
@@ -82,7 +82,7 @@ TEST(SensingRange, WhatIsBeyondTheRangeIsOutsideTheFieldOfView) {
   const auto w = squareAhead();
   const auto& ring = w.targets[0];
   // The near edge x = 3 is edge 3 of box(3, −1, 5, 1) (counter-clockwise from (3, −1)).
-  const Segment nearEdge{ring[3], ring[0], 0, 3, 0};
+  const Segment nearEdge{ring[3], ring[0], 0, 3, {}};
   EXPECT_EQ(whyUnseen(w, {0, 0, 0}, kPi / 3, nearEdge).kind, UnseenKind::InSight);
   EXPECT_EQ(whyUnseen(w, {0, 0, 0}, rangedLens(kPi / 3, 2.5), nearEdge).kind,
             UnseenKind::OutsideFieldOfView);
@@ -144,7 +144,7 @@ TEST(SensingRange, OnRandomScenesIsTheUnlimitedViewCutToTheCircle) {
       // A range among the distances of what the camera sees, so that it cuts.
       double farthest = 0.0;
       for (const Segment& s : unlimited) {
-        if (s.visibleBy == 0) continue;
+        if (s.visibleBy.empty()) continue;
         farthest = std::max({farthest, geometry::distance(camera.position(), s.a),
                              geometry::distance(camera.position(), s.b)});
       }
@@ -154,9 +154,9 @@ TEST(SensingRange, OnRandomScenesIsTheUnlimitedViewCutToTheCircle) {
       sweep.segments(occluders, std::vector<Pose>{camera}, rangedLens(c.halfFov, r), limited);
       double want = 0.0, got = 0.0;
       for (const Segment& s : unlimited)
-        want += s.visibleBy != 0 ? lengthWithin(camera.position(), s.a, s.b, r) : 0.0;
+        want += !s.visibleBy.empty() ? lengthWithin(camera.position(), s.a, s.b, r) : 0.0;
       for (const Segment& s : limited) {
-        if (s.visibleBy == 0) continue;
+        if (s.visibleBy.empty()) continue;
         got += length(s);
         EXPECT_LE(geometry::distance(camera.position(), s.a), r * (1 + 1e-12));
         EXPECT_LE(geometry::distance(camera.position(), s.b), r * (1 + 1e-12));

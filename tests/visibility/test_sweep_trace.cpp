@@ -167,7 +167,7 @@ TEST_F(SweepTraceInARoom, FrontAfterEachTargetCornerIsTheTargetEdgeSeenNext) {
   std::vector<Segment> segments;
   sweep.segments(Occluders(world_), std::vector<Pose>{camera_}, halfFov_, segments);
   for (const Segment& s : segments) {
-    EXPECT_EQ(s.visibleBy != 0, s.edge <= 1) << "edge " << s.edge;
+    EXPECT_EQ(!s.visibleBy.empty(), s.edge <= 1) << "edge " << s.edge;
   }
 }
 

@@ -21,7 +21,7 @@ constexpr double kHalfFov = std::numbers::pi / 6;  // θ = 30°
 // square at the origin, edges 0 bottom, 1 right, 2 top, 3 left), whole.
 Segment edgeOfTarget(const kinematics::World& w, std::uint32_t edge) {
   const auto& ring = w.targets[0];
-  return {ring[edge], ring[(edge + 1) % ring.size()], 0, edge, 0};
+  return {ring[edge], ring[(edge + 1) % ring.size()], 0, edge, {}};
 }
 
 TEST(WhyUnseen, AnEdgeInFrontAndInViewIsInSight) {
@@ -64,7 +64,7 @@ TEST(WhyUnseen, ANotchOfTheBoundaryBlocks) {
   // An L-shaped room: the camera in one arm, the target round the corner in the other.
   const auto w = camcov::testing::world({{0, 0}, {20, 0}, {20, 4}, {4, 4}, {4, 20}, {0, 20}},
                                         {camcov::testing::box(1, 15, 2, 16)});
-  const Segment bottom{{1, 15}, {2, 15}, 0, 0, 0};
+  const Segment bottom{{1, 15}, {2, 15}, 0, 0, {}};
   const auto r = whyUnseen(w, {16, 1, 2.4}, std::numbers::pi / 2.5, bottom);
   EXPECT_EQ(r.kind, UnseenKind::Blocked);
   EXPECT_EQ(r.blocker, (ObjectRef{Kind::Boundary, 0}));
@@ -114,7 +114,7 @@ TEST(WhyUnseen, AgreesWithTheSweepOnRandomConfigurations) {
       if (length(s) < 1e-6) continue;
       for (std::size_t j = 0; j < c.cameras.size(); ++j) {
         if (degenerate(c.world, c.cameras[j], (s.a + s.b) * 0.5)) continue;
-        const bool seen = (s.visibleBy >> j & 1u) != 0;
+        const bool seen = s.visibleBy.contains(j);
         const bool explained =
             whyUnseen(c.world, c.cameras[j], c.halfFov, s).kind != UnseenKind::InSight;
         ++checked;

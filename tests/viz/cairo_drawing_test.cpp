@@ -92,12 +92,13 @@ TEST(CameraMarker, HaloDrawnAsAFillMatchesCairosStrokeOfTheOutline) {
 // sharply (a mitred join would stick out), then two unseen ones, the second of which starts
 // away from where the first ends.
 TEST(Segments, ARunIsStrokedAsOnePolylineWithTheShapeOfItsSegmentsStrokedOneByOne) {
+  using scene::CameraSet;
   using visibility::Segment;
-  const std::vector<Segment> segments{{{1.0, 1.0}, {6.0, 1.5}, 0, 0, 1},
-                                      {{6.0, 1.5}, {9.0, 5.0}, 0, 1, 1},
-                                      {{9.0, 5.0}, {4.0, 3.0}, 0, 2, 3},
-                                      {{7.0, 9.0}, {2.0, 8.0}, 0, 3, 0},
-                                      {{2.5, 7.0}, {1.0, 1.2}, 0, 4, 0}};
+  const std::vector<Segment> segments{{{1.0, 1.0}, {6.0, 1.5}, 0, 0, CameraSet::fromBits(1)},
+                                      {{6.0, 1.5}, {9.0, 5.0}, 0, 1, CameraSet::fromBits(1)},
+                                      {{9.0, 5.0}, {4.0, 3.0}, 0, 2, CameraSet::fromBits(3)},
+                                      {{7.0, 9.0}, {2.0, 8.0}, 0, 3, {}},
+                                      {{2.5, 7.0}, {1.0, 1.2}, 0, 4, {}}};
   const WorldToImage toImage({{0.0, 0.0}, {10.0, 10.0}}, {0.0, 0.0, kSize, kSize}, 5.0);
   const double em = 12.0;
   const auto ours = drawn([&](cairo_t* cr) { drawSegments(Painter(cr, toImage, em), segments); });
@@ -106,7 +107,7 @@ TEST(Segments, ARunIsStrokedAsOnePolylineWithTheShapeOfItsSegmentsStrokedOneByOn
     cairo_set_line_width(cr, kSegmentWidth * em);
     for (const bool seen : {false, true}) {
       for (const Segment& s : segments) {
-        if ((s.visibleBy != 0) != seen) continue;
+        if ((!s.visibleBy.empty()) != seen) continue;
         const Vec2 a = toImage(s.a), b = toImage(s.b);
         cairo_move_to(cr, a.x, a.y);
         cairo_line_to(cr, b.x, b.y);

@@ -103,7 +103,8 @@ TEST_F(TinyFrame, ATargetTooSmallToMakeOutIsDrawnEnlargedAndRinged) {
   frame_.world.targets.push_back(
       {centre + Vec2{-0.01, -0.01}, centre + Vec2{0.01, -0.01}, centre + Vec2{0.0, 0.01}});
   frame_.segments.push_back({centre + Vec2{-0.01, -0.01}, centre + Vec2{0.01, -0.01},
-                             static_cast<std::uint32_t>(frame_.world.targets.size() - 1), 0, 1});
+                             static_cast<std::uint32_t>(frame_.world.targets.size() - 1), 0,
+                             scene::CameraSet::only(0)});
   ScratchDir dir;
   writeAndLoad(dir / "small.png");
   const FrameLayout layout = renderer_.layoutOf(frame_);

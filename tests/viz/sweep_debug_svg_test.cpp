@@ -164,7 +164,7 @@ TEST_F(SweepDebugOfTwoCameras, LabelsSeenSegmentsWithTheirVisibleBySets) {
   EXPECT_EQ(labels, (std::multiset<std::string>{"{0,1}", "{0}", "{1}"}));
   for (const auto& s : debug_.segments) {
     const std::uint64_t expected = s.edge == 0 ? 3 : s.edge == 1 ? 2 : s.edge == 3 ? 1 : 0;
-    EXPECT_EQ(s.visibleBy, expected) << "edge " << s.edge;
+    EXPECT_EQ(s.visibleBy, scene::CameraSet::fromBits(expected)) << "edge " << s.edge;
   }
 }
 

@@ -26,7 +26,7 @@ square = wkt_polygon([(-1, -1), (1, -1), (1, 1), (-1, 1)])
 
 # The maximum number of cameras, on a circle, all looking at the middle.
 write("cameras_64.json", {
-    "description": "64 cameras (the most a scene may have) on a circle around two targets.",
+    "description": "64 cameras on a circle around two targets.",
     "boundary": room,
     "targets": [{"shape": square, "path": "POLYGON((-3 0,3 0))"},
                 {"shape": square, "path": "POLYGON((0 4))", "angularVelocity": 0.5}],
