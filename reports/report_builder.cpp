@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "records/atomic_file.h"
 #include "records/batch_folder.h"
@@ -15,23 +16,18 @@
 namespace camcov::reports {
 namespace {
 
+// The links of the sections that show something, each where its row places it.
 std::string navigation(const ReportData& data) {
-  std::string links =
-      data.summary.groups.size() > 1 ? "<li><a href=\"#groups\">By family or folder</a></li>" : "";
-  links +=
-      "<li><a href=\"#summary\">Summary</a></li><li><a href=\"#box-plots\">Per scene (Fig. 4)"
-      "</a></li><li><a href=\"#time-series\">Over time (Fig. 5)</a></li><li><a "
-      "href=\"#scenes\">Scenes (Fig. 3)</a></li><li><a href=\"#parameters\">Parameters "
-      "(Table I)</a></li>";
-  if (!data.summary.pairTallies.empty())
-    links += "<li><a href=\"#pairs\">Methods against each other</a></li>";
-  if (std::any_of(data.scenes.begin(), data.scenes.end(),
-                  [](const SceneData& s) { return s.optimum.has_value(); }))
-    links += "<li><a href=\"#optimum\">Against the optimum</a></li>";
-  if (!data.videos.empty()) links += "<li><a href=\"#videos\">Videos</a></li>";
-  if (!data.summary.failures.empty()) {
-    links += fmt::format("<li><a href=\"#failures\">Failed jobs ({})</a></li>",
-                         data.summary.failures.size());
+  std::vector<const ReportSection*> byPlace;
+  for (const ReportSection& section : kReportSections)
+    byPlace.push_back(&section);
+  std::ranges::sort(byPlace, {}, &ReportSection::navigationPlace);
+  std::string links;
+  for (const ReportSection* section : byPlace) {
+    const std::size_t count = section->count == nullptr ? 1 : section->count(data);
+    if (count == 0) continue;
+    links += fmt::format("<li><a href=\"#{}\">{}</a></li>", section->anchor,
+                         fmt::format(fmt::runtime(section->link), count));
   }
   return "<nav class=\"toc\" aria-label=\"Sections\"><ul>" + links + "</ul></nav>\n";
 }
@@ -47,16 +43,8 @@ std::string buildReportHtml(const ReportData& data, const BuildContext& context)
   html += "<div class=\"page\">\n";
   html += headerSection(data, context);
   html += "<main>\n";
-  html += groupsSection(data);
-  html += summarySection(data);
-  html += pairsSection(data);
-  html += optimumSection(data);
-  html += boxPlotSection(data);
-  html += timeSeriesSection(data);
-  html += sceneGallerySection(data);
-  html += parametersSection(data);
-  html += videosSection(data);
-  html += failuresSection(data);
+  for (const ReportSection& section : kReportSections)
+    html += section.write(data);
   html += "</main>\n";
   html += fmt::format(
       "<footer>Written by camcov {} from the results folder alone, except the build date and "

@@ -104,9 +104,7 @@ void writePlayground(const std::filesystem::path& sceneFile, double time,
                      const std::optional<std::filesystem::path>& posesFile,
                      const std::filesystem::path& engine, const std::filesystem::path& out) {
   const scene::Scene scene = scene::loadScene(sceneFile);
-  std::vector<geometry::Pose> poses;
-  for (const scene::CameraSpec& c : scene.cameras)
-    poses.push_back(c.initial);
+  std::vector<geometry::Pose> poses = scene::initialPoses(scene);
   if (posesFile) {
     poses = scene::loadCameraPosesFor(*posesFile, scene);
     if (poses.size() != scene.cameras.size()) {

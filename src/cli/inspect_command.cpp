@@ -3,14 +3,13 @@
 // reward's terms (paper IV-A, IV-B) — and, with -o, the sweep of camera J drawn for debugging.
 #include <fmt/format.h>
 
-#include <bit>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "cli/number_options.h"
 #include "cli/parameter_options.h"
+#include "inspection/inspection_json.h"
 #include "kinematics/kinematics.h"
 #include "records/atomic_file.h"
 #include "reward/reward_model.h"
@@ -32,23 +31,12 @@ struct InspectOptions {
   ParameterOptions parameters;
 };
 
-nlohmann::json cameraList(const scene::CameraSet& cameras) {
-  nlohmann::json list = nlohmann::json::array();
-  cameras.forEach([&](std::size_t j) { list.push_back(j); });
-  return list;
-}
-
 int inspect(const InspectOptions& o) {
   if (!o.debugSvg.empty()) viz::requireSvg(o.debugSvg);  // a wrong extension fails before any work
   const scene::Scene s = scene::loadScene(o.scene);
   const params::Parameters p = o.parameters.resolve();
-  std::vector<geometry::Pose> cameras;
-  if (o.camerasFile.empty()) {
-    for (const auto& c : s.cameras)
-      cameras.push_back(c.initial);
-  } else {
-    cameras = scene::loadCameraPosesFor(o.camerasFile, s);
-  }
+  const std::vector<geometry::Pose> cameras =
+      o.camerasFile.empty() ? scene::initialPoses(s) : scene::loadCameraPosesFor(o.camerasFile, s);
   if (!o.debugSvg.empty()) {
     if (o.camera >= cameras.size()) {
       throw InputError(fmt::format("--camera {}: out of range, the cameras are numbered 0 to {}",
@@ -63,35 +51,7 @@ int inspect(const InspectOptions& o) {
   const auto segments = model.segments();
 
   if (o.json) {
-    nlohmann::json out;
-    out["scene"] = s.name;
-    out["time"] = o.time;
-    out["coverage"] = terms.coverage;
-    if (s.isWeighted()) out["weightedCoverage"] = terms.weightedCoverage;
-    out["utilization"] = terms.utilization;
-    out["repulsion"] = terms.repulsion;
-    out["reward"] = terms.reward;
-    out["targetPerimeter"] = reward::targetPerimeter(model.world());
-    out["cameras"] = nlohmann::json::array();
-    for (unsigned j = 0; j < cameras.size(); ++j) {
-      out["cameras"].push_back({{"x", cameras[j].x},
-                                {"y", cameras[j].y},
-                                {"yaw_deg", geometry::radToDeg(cameras[j].yaw)},
-                                {"visibleLength", reward::visibleLengthOf(segments, j)}});
-    }
-    out["segments"] = nlohmann::json::array();
-    for (const auto& seg : segments) {
-      out["segments"].push_back({{"a", {seg.a.x, seg.a.y}},
-                                 {"b", {seg.b.x, seg.b.y}},
-                                 {"target", kinematics::targetId(model.world(), seg.target)},
-                                 {"edge", seg.edge},
-                                 {"length", visibility::length(seg)},
-                                 {"visibleBy", cameraList(seg.visibleBy)}});
-      // Where weighted, the edge's importance weight (World::targetEdgeWeights, in [0, 1]).
-      if (s.isWeighted())
-        out["segments"].back()["weight"] = model.world().targetEdgeWeights[seg.target][seg.edge];
-    }
-    std::cout << out.dump(2) << "\n";
+    std::cout << inspection::inspectionJson(s, o.time, cameras, model, terms).dump(2) << "\n";
     return 0;
   }
   std::cout << fmt::format(
@@ -111,7 +71,7 @@ int inspect(const InspectOptions& o) {
         "seen by {}\n",
         kinematics::targetId(model.world(), seg.target), seg.edge, seg.a.x, seg.a.y, seg.b.x,
         seg.b.y, visibility::length(seg),
-        !seg.visibleBy.empty() ? cameraList(seg.visibleBy).dump() : "nobody");
+        !seg.visibleBy.empty() ? inspection::cameraNumbers(seg.visibleBy).dump() : "nobody");
   }
   if (!o.debugSvg.empty()) std::cout << fmt::format("  -> {}\n", o.debugSvg);
   return 0;

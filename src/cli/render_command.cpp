@@ -29,13 +29,8 @@ struct RenderOptions {
 int render(const RenderOptions& o) {
   viz::imageFormatOf(o.out);  // a wrong extension fails before any work
   const scene::Scene s = scene::loadScene(o.scene);
-  std::vector<geometry::Pose> cameras;
-  if (o.camerasFile.empty()) {
-    for (const auto& c : s.cameras)
-      cameras.push_back(c.initial);
-  } else {
-    cameras = scene::loadCameraPosesFor(o.camerasFile, s);
-  }
+  const std::vector<geometry::Pose> cameras =
+      o.camerasFile.empty() ? scene::initialPoses(s) : scene::loadCameraPosesFor(o.camerasFile, s);
   viz::FrameBuilder builder(s);
   viz::Frame frame;
   builder.build(o.time, cameras, frame);

@@ -62,9 +62,14 @@ std::vector<geometry::Pose> loadCameraPoses(const std::filesystem::path& file) {
 
 std::vector<geometry::Pose> loadCameraPosesFor(const std::filesystem::path& file,
                                                const Scene& scene) {
-  std::vector<geometry::Pose> poses = loadCameraPoses(file);
+  return parseCameraPosesFor(readText(file), file.string(), scene);
+}
+
+std::vector<geometry::Pose> parseCameraPosesFor(std::string_view jsonText,
+                                                const std::string& source, const Scene& scene) {
+  std::vector<geometry::Pose> poses = parseCameraPoses(jsonText, source);
   if (poses.size() > scene.cameras.size()) {
-    throw SceneError(file.string(), "",
+    throw SceneError(source, "",
                      fmt::format("{} poses, but the scene has {} cameras (pose j is camera j, "
                                  "with its field of view)",
                                  poses.size(), scene.cameras.size()));
@@ -72,10 +77,17 @@ std::vector<geometry::Pose> loadCameraPosesFor(const std::filesystem::path& file
   for (std::size_t j = 0; j < poses.size(); ++j) {
     if (geometry::locate(scene.boundary, poses[j].position()) == geometry::Containment::Outside) {
       throw SceneError(
-          file.string(), fmt::format("[{}]", j),
+          source, fmt::format("[{}]", j),
           fmt::format("({:g} {:g}) lies outside the scene's boundary", poses[j].x, poses[j].y));
     }
   }
+  return poses;
+}
+
+std::vector<geometry::Pose> initialPoses(const Scene& scene) {
+  std::vector<geometry::Pose> poses;
+  for (const CameraSpec& camera : scene.cameras)
+    poses.push_back(camera.initial);
   return poses;
 }
 

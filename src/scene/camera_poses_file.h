@@ -20,5 +20,10 @@ std::vector<geometry::Pose> parseCameraPoses(std::string_view jsonText, const st
 // file's own cameras must be.
 std::vector<geometry::Pose> loadCameraPosesFor(const std::filesystem::path& file,
                                                const Scene& scene);
+std::vector<geometry::Pose> parseCameraPosesFor(std::string_view jsonText,
+                                                const std::string& source, const Scene& scene);
+
+// Where the scene's cameras start, camera j first: the team when no poses are given.
+std::vector<geometry::Pose> initialPoses(const Scene& scene);
 
 }  // namespace camcov::scene

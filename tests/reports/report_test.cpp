@@ -274,6 +274,36 @@ TEST(Report, MergeWritesItWithAFailedJobsSection) {
   EXPECT_NE(html.find("href=\"#failures\""), std::string::npos);
 }
 
+// What `prefix"...` opens, in order, in `html`: the ids after each prefix.
+std::vector<std::string> idsAfter(const std::string& html, const std::string& prefix) {
+  std::vector<std::string> ids;
+  for (auto at = html.find(prefix); at != std::string::npos; at = html.find(prefix, at + 1)) {
+    const auto from = at + prefix.size();
+    ids.push_back(html.substr(from, html.find('"', from) - from));
+  }
+  return ids;
+}
+
+TEST(Report, TheNavigationLinksEverySectionShownAndNoOther) {
+  const ScratchDir dir;
+  ASSERT_EQ(benchFixture(dir / "results", "--no-report").exitCode, 0);
+  std::ofstream(dir / "results" / "runs" / "tiny_static-paper-seed4.error.json")
+      << R"({"format": "camcov-failure/1", "scene": "tiny_static", "method": "paper", "seed": 4,
+            "error": "planner exploded"})";
+  runCamcov("merge " + (dir / "results").string() + " --out " + (dir / "merged").string());
+  const std::string html = readFile(dir / "merged" / "report.html");
+  const auto navEnd = html.find("</nav>");
+  ASSERT_NE(navEnd, std::string::npos);
+  std::vector<std::string> linked = idsAfter(html.substr(0, navEnd), "<a href=\"#");
+  const auto main = html.find("<main>");
+  std::vector<std::string> shown =
+      idsAfter(html.substr(main, html.find("</main>") - main), "<section id=\"");
+  EXPECT_NE(std::find(shown.begin(), shown.end(), "failures"), shown.end());
+  std::sort(linked.begin(), linked.end());
+  std::sort(shown.begin(), shown.end());
+  EXPECT_EQ(linked, shown);
+}
+
 TEST(Report, SameFolderSameBytesButTheBuildContext) {
   const ScratchDir dir;
   ASSERT_EQ(benchFixture(dir / "results").exitCode, 0);
