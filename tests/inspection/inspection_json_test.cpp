@@ -26,10 +26,13 @@ nlohmann::json inspected(const std::string& sceneName, double time) {
   return inspectionJson(scene, time, cameras, model, terms);
 }
 
-TEST(CameraNumbers, ListsTheSetBitsLowestFirst) {
-  EXPECT_EQ(cameraNumbers(0b1011), nlohmann::json::array({0, 1, 3}));
-  EXPECT_EQ(cameraNumbers(0), nlohmann::json::array());
-  EXPECT_EQ(cameraNumbers(std::uint64_t{1} << 63), nlohmann::json::array({63}));
+TEST(CameraNumbers, ListsTheCamerasLowestFirst) {
+  using scene::CameraSet;
+  EXPECT_EQ(cameraNumbers(CameraSet::fromBits(0b1011)), nlohmann::json::array({0, 1, 3}));
+  EXPECT_EQ(cameraNumbers(CameraSet{}), nlohmann::json::array());
+  CameraSet farApart = CameraSet::only(127);
+  farApart.insert(63);
+  EXPECT_EQ(cameraNumbers(farApart), nlohmann::json::array({63, 127}));
 }
 
 TEST(InspectionJson, EachCameraSeesTheLengthOfTheSegmentsThatListIt) {
