@@ -125,7 +125,7 @@ def observations(episode, cameras):
 
 
 def mean_action(actor, normal, rows):
-    """The deterministic action the C++ method takes: the mean, clipped to [-1, 1]."""
+    """The deterministic action the C++ method proposes: the mean, clipped to [-1, 1]."""
     with torch.no_grad():
         x = torch.as_tensor(normal(rows), dtype=torch.float32)
         return np.clip(actor(x).numpy().astype(np.float64), -1.0, 1.0)

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "control/learned_policy.h"
 #include "environment/episode.h"
 #include "environment/episode_batch.h"
 #include "environment/method_policy.h"
@@ -323,6 +324,27 @@ void bindEnvironment(py::module_& m) {
       py::arg("sizes"),
       "(low, high): the bounds, float32, of every float of an observation padded to sizes = "
       "(cameras, targets, obstacles, vertices); the encoding clamps to them.");
+
+  m.def(
+      "learned_action",
+      [](const py::array_t<float, py::array::c_style | py::array::forcecast>& observations) {
+        const control::LearnedPolicy& policy = control::LearnedPolicy::builtIn();
+        const std::size_t size = policy.sizes().size();
+        if (observations.ndim() != 2 || static_cast<std::size_t>(observations.shape(1)) != size) {
+          throw py::value_error(
+              fmt::format("learned_action: expected observations of shape (n, {})", size));
+        }
+        std::vector<geometry::Pose> rows;
+        for (py::ssize_t i = 0; i < observations.shape(0); ++i) {
+          const auto a = policy.act(std::span(observations.data(i, 0), size));
+          rows.push_back({a[0], a[1], a[2]});
+        }
+        return posesToArray(rows);
+      },
+      py::arg("observations"),
+      "The learned method's network on each row of observations (n, size), float32: its mean "
+      "action (vx, vy, yaw rate over the camera's limits) clipped to [-1, 1], as "
+      "`--method learned` proposes it before its reward check.");
 
   py::class_<PythonMethodPolicy>(
       m, "MethodPolicy",

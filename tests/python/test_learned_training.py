@@ -1,6 +1,6 @@
 """The learned method: its training learns (a short run beats a random policy), and the weights
-it exports act in C++ (`--method learned`) as in torch, to 1e-6, on the observation the
-parallel environment's own view gives.
+it exports act in C++ (the network `--method learned` proposes steps with) as in torch, to
+1e-6, on the observation the parallel environment's own view gives.
 
 scripts/train_learned.py is imported from the source tree; torch is Debian's python3-torch.
 Gymnasium and PettingZoo's sources are in ../shared/vendor/python (as in test_env.py).
@@ -58,22 +58,29 @@ def test_the_exported_weights_act_in_cpp_as_in_torch(published):
                              targets=sizes[1], action_units="physical",
                              pad_to={"cameras": sizes[0], "vertices": sizes[3]})
     observed, _ = agents.reset(seed=1)
-    steps = 0
+    steps = followed = 0
     while not episode.finished:
         rows = train_learned.observations(episode, len(limits))
         for j, agent in enumerate(agents.agents[:len(limits)]):
             np.testing.assert_array_equal(observed[agent][:rows.shape[1]], rows[j])
             assert not observed[agent][rows.shape[1]:].any()
+        actions = camcov.learned_action(rows)
+        np.testing.assert_allclose(actions, torch_actions(policy, rows), rtol=0, atol=1e-6)
         commands = learned.decide(episode)
-        expected = torch_actions(policy, rows) * limits
-        np.testing.assert_allclose(commands, expected, rtol=0, atol=1e-6)
+        # The method takes a camera's proposal (scaled, saturated to ‖v‖ ≤ v_max) unless it
+        # would lower the reward.
+        proposed = actions * limits
+        speed = np.hypot(proposed[:, 0], proposed[:, 1])
+        proposed[:, :2] *= np.minimum(1.0, limits[:, :1] / np.maximum(speed, 1e-12)[:, None])
+        followed += np.all(np.abs(commands - proposed) <= 1e-6, axis=1).sum()
         episode.step(commands)
         # Slots past the team (padding) are agents until the first step: they are given zeros.
         observed = agents.step({a: commands[j] if j < len(limits) else np.zeros(3)
                                 for j, a in enumerate(agents.agents)})[0]
         steps += 1
     assert steps == 50
-    assert np.abs(expected).max() > 0.01, "the policy moves the cameras"
+    assert followed > 0, "the method never took the network's step"
+    assert np.abs(proposed).max() > 0.01, "the policy moves the cameras"
 
 
 def test_a_short_training_beats_a_random_policy():
