@@ -140,9 +140,10 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   for (const fs::path& file : sceneFiles(r.scenes)) {
     const scene::SceneFile s = scene::loadSceneFile(file);
     runParameters.push_back(sim::forScene(r.parameters, s.scene, file.string(), r.durationGiven));
-    const auto family = scene::familyNamedIn(s.scene.description);
-    plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family.value_or("")});
-    folderOf.push_back(family ? fs::path() : fs::absolute(file).lexically_normal().parent_path());
+    const std::string& family = s.scene.family;
+    plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family});
+    folderOf.push_back(!family.empty() ? fs::path()
+                                       : fs::absolute(file).lexically_normal().parent_path());
   }
   nameFolderGroups(plan.manifest.scenes, folderOf);
   const std::uint64_t total = plan.manifest.scenes.size() * r.methods.size() * r.seeds;

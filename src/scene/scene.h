@@ -92,6 +92,9 @@ inline constexpr double kMaxDuration = 1e4;
 struct Scene {
   std::string name;         // file stem, e.g. "dynamic9"
   std::string description;  // optional "description" key (our extension), may be empty
+  // Optional "family" key (our extension): the family of `camcov generate --family` it was
+  // drawn from (scene_families.h), which a bench groups it by; empty for any other scene.
+  std::string family;
   geometry::Ring boundary;  // B: time-invariant simple polygon, CCW
   std::vector<MovingObject> targets;
   std::vector<MovingObject> obstacles;

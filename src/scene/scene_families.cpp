@@ -20,7 +20,8 @@
 
 namespace camcov::scene {
 
-// A generated scene's description starts "family NAME seed S: " (familyNamedIn reads it back).
+// A generated scene's description starts "family NAME seed S: ", for people (a bench reads the
+// scene's "family" key).
 constexpr std::string_view kFamilyLead = "family ";
 constexpr std::string_view kSeedLead = " seed ";
 
@@ -395,15 +396,9 @@ std::string familyTable() {
   return text;
 }
 
-std::optional<std::string> familyNamedIn(std::string_view description) {
-  if (!description.starts_with(kFamilyLead)) return std::nullopt;
-  description.remove_prefix(kFamilyLead.size());
-  const std::string_view name = description.substr(0, description.find(kSeedLead));
-  if (name.size() == description.size()) return std::nullopt;
-  for (const SceneFamily& f : sceneFamilies()) {
-    if (f.name == name) return std::string(f.name);
-  }
-  return std::nullopt;
+bool isSceneFamily(std::string_view name) {
+  const auto& all = sceneFamilies();
+  return std::any_of(all.begin(), all.end(), [&](const SceneFamily& f) { return f.name == name; });
 }
 
 std::string familySceneFileName(std::string_view family, std::uint64_t seed) {
@@ -1154,6 +1149,7 @@ MovingObject movingObject(const Object& o) {
 nlohmann::json familySceneJson(const SceneFamily& f, std::uint64_t seed, const Draw& d) {
   WrittenScene scene;
   scene.description = describe(f, seed, d);
+  scene.family = f.name;
   scene.boundary = d.room.boundary;
   scene.halfFovDegrees = d.halfFovDeg;
   for (const Object& o : d.targets)

@@ -125,13 +125,13 @@ std::string familyNames();
 // its ranges.
 std::string familyTable();
 
-// The family a generated scene's description names ("family l_rooms seed 5: ..."), when it is
-// one of the table's; nullopt for any other description.
-std::optional<std::string> familyNamedIn(std::string_view description);
+// Whether `name` is one of the table's families.
+bool isSceneFamily(std::string_view name);
 
 // "<family>-<seed>.json".
 std::string familySceneFileName(std::string_view family, std::uint64_t seed);
-// The scene file's content, its description naming the family, the seed and what was drawn;
+// The scene file's content, with its family, and its description naming the family, the seed
+// and what was drawn;
 // the same family and seed give the same JSON, to the byte. Any seed is accepted.
 nlohmann::json generateFamilyScene(const SceneFamily& family, std::uint64_t seed);
 

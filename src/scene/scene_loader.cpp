@@ -13,6 +13,7 @@
 #include "scene/path_forms.h"
 #include "scene/read_text.h"
 #include "scene/scene_error.h"
+#include "scene/scene_families.h"
 #include "scene/scene_validation.h"
 #include "scene/wkt.h"
 #include "util/readable_number.h"
@@ -481,14 +482,22 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     throw SceneError(sourceName, "", e.what());
   }
   const Node root(document, "", sourceName);
-  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "pitch",
-               "duration", "imageWidth", "resolution", "knowledge", "comms"});
+  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "family",
+               "pitch", "duration", "imageWidth", "resolution", "knowledge", "comms"});
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
   Problems problems(sourceName);
   problems.attempt([&] {
     if (root.has("description")) scene.description = root.child("description").string();
+  });
+  problems.attempt([&] {
+    if (!root.has("family")) return;
+    const Node node = root.child("family");
+    scene.family = node.string();
+    if (!isSceneFamily(scene.family))
+      node.fail(fmt::format("\"{}\" is no family of `camcov generate --family list` ({})",
+                            scene.family, familyNames()));
   });
   problems.attempt([&] { scene.boundary = simpleRing(root.child("boundary")); });
   problems.attempt([&] {

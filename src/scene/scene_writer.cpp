@@ -64,6 +64,7 @@ nlohmann::json cameraJson(const CameraEntry& camera) {
 nlohmann::json sceneJson(const WrittenScene& file) {
   nlohmann::json scene;
   if (!file.description.empty()) scene["description"] = file.description;
+  if (!file.family.empty()) scene["family"] = file.family;
   scene["boundary"] = wktPolygon(file.boundary);
   if (file.pitch) scene["pitch"] = {{"length", file.pitch->length}, {"width", file.pitch->width}};
   if (file.duration) scene["duration"] = *file.duration;

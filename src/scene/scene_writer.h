@@ -31,6 +31,7 @@ struct CameraEntry {
 // the file's; a track's headings, if any, are written in degrees.
 struct WrittenScene {
   std::string description;  // written when not empty
+  std::string family;       // the family it was drawn from; written when not empty
   std::vector<geometry::Vec2> boundary;
   std::optional<Pitch> pitch;
   std::optional<double> duration;  // s: how long a run of it lasts (an imported window)

@@ -20,6 +20,7 @@
 
 #include "geometry/ring.h"
 #include "kinematics/kinematics.h"
+#include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 
@@ -150,16 +151,25 @@ TEST(SceneFamilies, TheDescriptionNamesTheFamilyTheSeedAndWhatWasDrawn) {
   }
 }
 
-TEST(SceneFamilies, AGeneratedScenesDescriptionNamesItsFamilyBackAndNoOtherTextDoes) {
-  for (const SceneFamily& f : sceneFamilies())
-    EXPECT_EQ(familyNamedIn(load(f, 7).description), std::string(f.name));
-  for (const char* other :
-       {"", "family", "family l_rooms", "family l_rooms seed", "family nosuch seed 1: a room",
-        "Family l_rooms seed 1: a room", " family l_rooms seed 1: a room", "family  seed 1: a room",
-        "the paper's Fig. 1 (family l_rooms seed 1)"}) {
-    EXPECT_EQ(familyNamedIn(other), std::nullopt) << '"' << other << '"';
+TEST(SceneFamilies, AGeneratedSceneCarriesItsFamilyAndALoaderRefusesAnUnknownOne) {
+  for (const SceneFamily& f : sceneFamilies()) {
+    EXPECT_EQ(load(f, 7).family, f.name);
+    EXPECT_TRUE(isSceneFamily(f.name));
   }
-  EXPECT_EQ(familyNamedIn("family l_rooms seed 1"), "l_rooms") << "the seed's text is not read";
+  nlohmann::json file = generateFamilyScene(sceneFamily("l_rooms"), 1);
+  file["family"] = "nosuch";
+  try {
+    parseScene(file.dump(), "renamed.json");
+    ADD_FAILURE() << "an unknown family was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("family"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("l_rooms"), std::string::npos) << "names the known ones";
+  }
+  // The description is for people: a scene that only says "family l_rooms" in it has none.
+  file.erase("family");
+  EXPECT_EQ(parseScene(file.dump(), "plain.json").family, "");
+  for (const char* other : {"", "family", "L_rooms", "l_rooms "})
+    EXPECT_FALSE(isSceneFamily(other)) << '"' << other << '"';
 }
 
 TEST(SceneFamilies, TuneAndTestSeedsAreDisjointForEveryFamily) {
