@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
+#include <string_view>
 
 #include "util/input_error.h"
 #include "util/input_file.h"
@@ -123,7 +126,41 @@ void requireSummaryOfSeries(const RunRecord& run, const std::string& source) {
   }
 }
 
-sim::RunSummary summaryFrom(const nlohmann::json& j) {
+// Refuses a key `object` (the run file's `where`) holds that no camcov writes there: a misspelled
+// key would otherwise leave its value unread, and a reader would go on without it unseen.
+void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
+                      std::string_view where, const std::string& source) {
+  if (!object.is_object()) throw InputError(fmt::format("{}: {} is not an object", source, where));
+  for (const auto& [key, value] : object.items()) {
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw InputError(fmt::format("{}: {}: unknown key \"{}\"", source, where, key));
+  }
+}
+
+sim::RunSummary summaryFrom(const nlohmann::json& j, const std::string& source) {
+  requireKnownKeys(j,
+                   {"steps",
+                    "duration",
+                    "averageCoverage",
+                    "averageUtilization",
+                    "averageReward",
+                    "finalCoverage",
+                    "minObjectDistance",
+                    "minCameraDistance",
+                    "objectCollisionTime",
+                    "cameraCollisionTime",
+                    "avoidableContactTime",
+                    "unavoidableContactTime",
+                    "avoidableContacts",
+                    "unavoidableContacts",
+                    "boundaryClamps",
+                    "stepsWithoutTargets",
+                    "averageWeightedCoverage",
+                    "finalWeightedCoverage",
+                    "averageResolutionCoverage",
+                    "finalResolutionCoverage",
+                    "messages"},
+                   "summary", source);
   sim::RunSummary s;
   s.steps = j.at("steps").get<int>();
   s.duration = j.at("duration").get<double>();
@@ -167,7 +204,6 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
                       {"averageCoverage", s.averageCoverage},
                       {"averageUtilization", s.averageUtilization},
                       {"averageReward", s.averageReward},
-                      {"finalCoverage", s.finalCoverage},
                       {"minObjectDistance", finiteOrNull(s.minObjectDistance)},
                       {"minCameraDistance", finiteOrNull(s.minCameraDistance)},
                       {"objectCollisionTime", s.objectCollisionTime},
@@ -177,6 +213,8 @@ nlohmann::json summaryJson(const sim::RunSummary& s) {
                       {"avoidableContacts", s.avoidableContacts},
                       {"unavoidableContacts", s.unavoidableContacts},
                       {"boundaryClamps", s.boundaryClamps}};
+  // A run read from a file written before final coverage was recorded has none: it stays out.
+  if (!std::isnan(s.finalCoverage)) j["finalCoverage"] = s.finalCoverage;
   // Only recorded tracks leave a scene empty; other runs keep their bytes.
   if (s.stepsWithoutTargets > 0) j["stepsWithoutTargets"] = s.stepsWithoutTargets;
   // Only weighted scenes have weighted coverage; the same.
@@ -307,9 +345,21 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     m.seed = j.at("seed").get<std::uint64_t>();
     m.parameters = params::fromJson(j.at("parameters"), source);
     m.toolVersion = j.at("tool").at("version").get<std::string>();
-    run.summary = summaryFrom(j.at("summary"));
+    requireKnownKeys(
+        j,
+        {"format", "tool", "scene", "method", "seed", "parameters", "summary", "series", "events"},
+        "the run file", source);
+    requireKnownKeys(j.at("scene"), {"name", "file", "hash"}, "scene", source);
+    requireKnownKeys(j.at("tool"), {"name", "version"}, "tool", source);
+    run.summary = summaryFrom(j.at("summary"), source);
 
     const nlohmann::json& series = j.at("series");
+    requireKnownKeys(series,
+                     {"time", "coverage", "utilization", "repulsion", "reward", "minObjectDistance",
+                      "minCameraDistance", "minObjectDistanceInStep", "minCameraDistanceInStep",
+                      "avoidableContactTime", "unavoidableContactTime", "weightedCoverage",
+                      "resolutionCoverage", "targetsPresent", "heard", "cameras", "goals"},
+                     "series", source);
     const SeriesReader read(series, source);
     const auto& time = read.column("time");
     const std::size_t steps = time.size();

@@ -114,6 +114,21 @@ TEST(RunFiles, RejectsSeriesNoRunCanRecord) {
   refused([](auto& j) { j["summary"]["steps"] = 3; }, "the summary says 3 steps");
   refused([](auto& j) { j["events"][0]["time"] = 7.0; }, "an event at 7 s of camera 0 lies");
   refused([](auto& j) { j["events"][0]["camera"] = 4; }, "of camera 4 lies outside");
+  // A key no camcov writes (here a misspelled one) would be left unread: refused, named.
+  refused([](auto& j) { j["summary"]["finalCoveHage"] = j["summary"]["finalCoverage"]; },
+          "summary: unknown key \"finalCoveHage\"");
+  refused([](auto& j) { j["series"]["coverages"] = j["series"]["coverage"]; },
+          "series: unknown key \"coverages\"");
+  refused([](auto& j) { j["scene"]["hashes"] = "0"; }, "scene: unknown key \"hashes\"");
+  refused([](auto& j) { j["comment"] = "edited"; }, "the run file: unknown key \"comment\"");
+}
+
+TEST(RunFiles, ARunWrittenBeforeFinalCoverageWasRecordedReadsAndWritesBackWithout) {
+  nlohmann::json old = runToJson(sampleRun());
+  old["summary"].erase("finalCoverage");
+  const nlohmann::json written = runToJson(runFromJson(old, "old.json"));
+  EXPECT_FALSE(written["summary"].contains("finalCoverage"));
+  EXPECT_EQ(written, old);
 }
 
 TEST(RunFiles, RejectsDocumentsThatAreNotRuns) {
