@@ -87,6 +87,9 @@ void DecentralizedController::control(const Observation& observation,
                            fmt::format("plans with cameras {}", fmt::join(members, ", ")),
                            {},
                            {}});
+        // The old loop goes before the scene it refers to (assignment would replace the scene
+        // first).
+        loops_[j].controller.reset();
         loops_[j] = makeLoop(j, std::move(members), observation.time);
       }
     }
