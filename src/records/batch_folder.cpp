@@ -6,6 +6,7 @@
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
+#include "records/known_keys.h"
 #include "records/run_files.h"
 #include "util/input_error.h"
 
@@ -61,16 +62,23 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
   try {
     if (j.at("format") != "camcov-batch/1")
       throw InputError(source + ": not a camcov batch manifest");
+    requireKnownKeys(j,
+                     {"format", "toolVersion", "parameters", "methods", "methodIdentities",
+                      "methodLooks", "seeds", "scenes", "command"},
+                     "the batch manifest", source);
     BatchManifest m;
     m.toolVersion = j.at("toolVersion").get<std::string>();
     m.parameters = params::fromJson(j.at("parameters"), source);
     m.methods = j.at("methods").get<std::vector<std::string>>();
     m.methodIdentities = j.value("methodIdentities", std::map<std::string, std::string>{});
     const nlohmann::json looks = j.value("methodLooks", nlohmann::json::object());
-    for (const auto& [method, look] : looks.items())
+    for (const auto& [method, look] : looks.items()) {
+      requireKnownKeys(look, {"description", "color"}, "methodLooks." + method, source);
       m.methodLooks[method] = {look.at("description"), look.at("color")};
+    }
     m.seeds = j.at("seeds").get<std::uint64_t>();
     for (const auto& s : j.at("scenes")) {
+      requireKnownKeys(s, {"name", "file", "hash", "group"}, "scenes[]", source);
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),
                           std::stoull(s.at("hash").get<std::string>(), nullptr, 16),
                           s.value("group", std::string())});

@@ -15,6 +15,7 @@
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
 #include "records/json_numbers.h"
+#include "records/known_keys.h"
 #include "scene/scene_validation.h"
 #include "util/readable_number.h"
 
@@ -123,17 +124,6 @@ void requireSummaryOfSeries(const RunRecord& run, const std::string& source) {
         fmt::format("{}: summary.averageCoverage = {} is not its series' average "
                     "coverage ({})",
                     source, run.summary.averageCoverage, average));
-  }
-}
-
-// Refuses a key `object` (the run file's `where`) holds that no camcov writes there: a misspelled
-// key would otherwise leave its value unread, and a reader would go on without it unseen.
-void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
-                      std::string_view where, const std::string& source) {
-  if (!object.is_object()) throw InputError(fmt::format("{}: {} is not an object", source, where));
-  for (const auto& [key, value] : object.items()) {
-    if (std::find(known.begin(), known.end(), key) == known.end())
-      throw InputError(fmt::format("{}: {}: unknown key \"{}\"", source, where, key));
   }
 }
 

@@ -1,0 +1,18 @@
+#pragma once
+// camcov's own JSON files (run files, batch manifests) are read back strictly: a key no camcov
+// writes in an object — a misspelled one, say — would otherwise leave its value unread, and the
+// reader would go on without it unseen.
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace camcov::records {
+
+// Throws InputError ("SOURCE: WHERE: unknown key \"K\"") for a key of `object` not in `known`,
+// or where `object` is not an object.
+void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
+                      std::string_view where, const std::string& source);
+
+}  // namespace camcov::records

@@ -1,0 +1,55 @@
+// camcov's own files read back strictly (records/known_keys.h): a key no camcov writes is
+// refused and named, in a batch manifest as in a run file (run_files_test.cpp).
+#include "records/known_keys.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "records/batch_folder.h"
+#include "util/input_error.h"
+
+namespace camcov::records {
+namespace {
+
+TEST(KnownKeys, RefusesAKeyOutsideTheListNamingWhereAndAcceptsTheListsOwn) {
+  const auto j = nlohmann::json::parse(R"({"a": 1, "b": 2})");
+  EXPECT_NO_THROW(requireKnownKeys(j, {"a", "b", "c"}, "x", "f.json"));
+  try {
+    requireKnownKeys(j, {"a"}, "the thing", "f.json");
+    ADD_FAILURE() << "accepted b";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "f.json: the thing: unknown key \"b\"");
+  }
+  EXPECT_THROW(requireKnownKeys(nlohmann::json::array(), {"a"}, "x", "f.json"), InputError);
+}
+
+TEST(KnownKeys, ABatchManifestHoldsOnlyWhatCamcovWrites) {
+  BatchManifest m;
+  m.toolVersion = "9.9.9";
+  m.methods = {"paper", "local"};
+  m.seeds = 3;
+  m.scenes = {{"s", "scenes/s.json", 0x12, "group"}};
+  m.methodLooks["paper"] = {"the paper's", "#123456"};
+  m.command = {"camcov", "bench"};
+  const nlohmann::json good = manifestToJson(m);
+  EXPECT_EQ(manifestToJson(manifestFromJson(good, "batch.json")), good);
+  const auto refused = [&](const std::function<void(nlohmann::json&)>& edit,
+                           const std::string& fragment) {
+    nlohmann::json j = good;
+    edit(j);
+    try {
+      manifestFromJson(j, "batch.json");
+      ADD_FAILURE() << "accepted: " << fragment;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  refused([](auto& j) { j["seed"] = 3; }, "the batch manifest: unknown key \"seed\"");
+  refused([](auto& j) { j["scenes"][0]["hashes"] = "12"; }, "scenes[]: unknown key \"hashes\"");
+  refused([](auto& j) { j["methodLooks"]["paper"]["colour"] = "#000000"; },
+          "methodLooks.paper: unknown key \"colour\"");
+}
+
+}  // namespace
+}  // namespace camcov::records
