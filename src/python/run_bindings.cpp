@@ -16,7 +16,7 @@
 #include "python/python_controller.h"
 #include "python/python_scene.h"
 #include "records/batch_folder.h"
-#include "records/batch_summary.h"
+#include "records/batch_summary_file.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
 #include "scene/scene_loader.h"
