@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "kinematics/object_overlaps.h"
+#include "records/batch_summary_file.h"
 #include "records/run_files.h"
 #include "reports/markup.h"
 #include "scene/scene_loader.h"

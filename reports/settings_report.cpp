@@ -10,7 +10,7 @@
 
 #include "records/atomic_file.h"
 #include "records/batch_folder.h"
-#include "records/batch_summary.h"
+#include "records/verdicts.h"
 #include "reports/markup.h"
 #include "reports/method_style.h"
 #include "reports/report_assets.h"

@@ -3,7 +3,7 @@
 // the same in the summary (against the reference) and between the other methods.
 #include <string>
 
-#include "records/batch_summary.h"
+#include "records/verdicts.h"
 
 namespace camcov::reports {
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "control/methods.h"
@@ -137,8 +138,10 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
   std::vector<fs::path> folderOf;  // per scene not drawn from a family, its folder; else empty
   // Per scene: with its own duration and knowledge settings, if any.
   std::vector<params::Parameters> runParameters;
+  // Per scene: its file as read here, which every job of it runs (one copy per scene).
+  std::vector<std::shared_ptr<const scene::SceneFile>> loaded;
   for (const fs::path& file : sceneFiles(r.scenes)) {
-    const scene::SceneFile s = scene::loadSceneFile(file);
+    const scene::SceneFile& s = *loaded.emplace_back(readSceneFile(file));
     runParameters.push_back(sim::forScene(r.parameters, s.scene, file.string(), r.durationGiven));
     const std::string& family = s.scene.family;
     plan.manifest.scenes.push_back({s.scene.name, file.string(), s.hash, family});
@@ -161,7 +164,7 @@ BatchPlan planBatch(const BatchRequest& r, const std::string& toolVersion) {
       const std::string& method = r.methods[m];
       for (std::uint64_t seed = 1; seed <= r.seeds; ++seed, ++i) {
         if (i % r.shard.count != r.shard.index) continue;
-        plan.jobs.push_back({{entry.file, method, seed, runParameters[s], brought[m]},
+        plan.jobs.push_back({{entry.file, method, seed, runParameters[s], brought[m], loaded[s]},
                              entry.name,
                              entry.hash,
                              records::runStem(entry.name, method, seed)});

@@ -1,6 +1,7 @@
 #pragma once
 // A batch before it runs (SPEC section 7): the scene files, read and validated up front (a
-// typo fails in a second, not after an hour), the jobs (scene × method × seed, scenes in
+// typo fails in a second, not after an hour) and only once (a job runs the plan's reading
+// while the file is unchanged: batch/run_job.h), the jobs (scene × method × seed, scenes in
 // natural order), this shard's share of them, and the folder's check that it holds no
 // results made with other parameters.
 #include <cstdint>

@@ -4,18 +4,25 @@
 
 #include "camcov/version.h"
 #include "control/methods.h"
-#include "scene/scene_loader.h"
 #include "sim/simulator.h"
 
 namespace camcov::batch {
 
+std::shared_ptr<const scene::SceneFile> readSceneFile(const std::filesystem::path& file) {
+  return std::make_shared<const scene::SceneFile>(scene::loadSceneFile(file));
+}
+
 records::RunRecord runJob(const JobSpec& job) {
   const control::Method& method =
       job.brought != nullptr ? *job.brought : control::requireMethod(job.method);
-  const scene::SceneFile file = scene::loadSceneFile(job.sceneFile);
-  const scene::Scene& scene = file.scene;
+  // Hashing the bytes again costs a small part of parsing and validating them.
+  const bool unchanged =
+      job.scene != nullptr && scene::sceneFileHash(job.sceneFile) == job.scene->hash;
+  const std::shared_ptr<const scene::SceneFile> file =
+      unchanged ? job.scene : readSceneFile(job.sceneFile);
+  const scene::Scene& scene = file->scene;
 
-  records::RunMetadata metadata{scene.name, job.sceneFile.string(), file.hash, job.method,
+  records::RunMetadata metadata{scene.name, job.sceneFile.string(), file->hash, job.method,
                                 job.seed,   job.parameters,         kVersion};
   const auto controller = method.make(scene, job.parameters, job.seed);
   return recordRun(scene, std::move(metadata), *controller);

@@ -2,12 +2,14 @@
 // One job of a batch, and `camcov run`: a scene, a method, a seed, the parameters -> a run.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "control/methods.h"
 #include "params/parameters.h"
 #include "records/run_record.h"
 #include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace camcov::batch {
 
@@ -19,7 +21,15 @@ struct JobSpec {
   // The method itself when the caller brings it (BatchRequest::extraMethods); else the name
   // is looked up in the table. Must outlive the job.
   const control::Method* brought = nullptr;
+  // The scene file as the caller already read and validated it, shared and never changed: a
+  // batch's plan reads each file once for all its jobs. runJob runs it while `sceneFile` still
+  // holds the bytes of its hash, and reads the file itself when it is null or the file changed
+  // since (edited, or broken, during a long batch: the job runs or fails as the file is now).
+  std::shared_ptr<const scene::SceneFile> scene = nullptr;
 };
+
+// Reads and validates a scene file once, to be shared by the jobs (and the caller) that use it.
+std::shared_ptr<const scene::SceneFile> readSceneFile(const std::filesystem::path& file);
 
 // Throws InputError for an unknown method or a bad scene.
 records::RunRecord runJob(const JobSpec& job);

@@ -11,7 +11,6 @@
 #include "cli/parameter_options.h"
 #include "control/methods.h"
 #include "records/run_files.h"
-#include "scene/scene_loader.h"
 #include "sim/scene_parameters.h"
 #include "util/readable_number.h"
 #include "util/run_threads.h"
@@ -34,10 +33,11 @@ struct RunOptions {
 int run(const RunOptions& o) {
   control::requireMethod(o.method);
   if (!o.video.empty()) viz::requireMp4(o.video);  // before the run, not after
-  batch::JobSpec job{o.scene, o.method, o.seed, o.parameters.resolve()};
+  // The scene read once: for its own settings, the run and the video.
+  batch::JobSpec job{
+      o.scene, o.method, o.seed, o.parameters.resolve(), nullptr, batch::readSceneFile(o.scene)};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
-  job.parameters =
-      sim::forScene(job.parameters, scene::loadScene(o.scene), o.scene, o.duration >= 0.0);
+  job.parameters = sim::forScene(job.parameters, job.scene->scene, o.scene, o.duration >= 0.0);
   setRunThreads(o.threads);
   const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);
@@ -60,8 +60,7 @@ int run(const RunOptions& o) {
         *s.averageResolutionCoverage);
   }
   if (!o.video.empty()) {
-    viz::writeRunVideo(record, scene::loadScene(job.sceneFile), o.video,
-                       viz::runVideoSettings(record));
+    viz::writeRunVideo(record, job.scene->scene, o.video, viz::runVideoSettings(record));
     std::cout << "  -> " << o.video << "\n";
   }
   return 0;

@@ -16,10 +16,9 @@
 #include "python/python_controller.h"
 #include "python/python_scene.h"
 #include "records/batch_folder.h"
-#include "records/batch_summary.h"
+#include "records/batch_summary_file.h"
 #include "records/run_files.h"
 #include "reports/report_builder.h"
-#include "scene/scene_loader.h"
 #include "sim/scene_parameters.h"
 #include "util/interruption.h"
 #include "util/person_numbers.h"
@@ -31,8 +30,8 @@ namespace {
 // has them, unless the parameters say otherwise (sim/scene_parameters.h).
 records::RunRecord runWithoutGil(batch::JobSpec job) {
   py::gil_scoped_release free;
-  job.parameters =
-      sim::forScene(job.parameters, scene::loadScene(job.sceneFile), job.sceneFile.string(), false);
+  job.scene = batch::readSceneFile(job.sceneFile);  // once: for its settings and the run
+  job.parameters = sim::forScene(job.parameters, job.scene->scene, job.sceneFile.string(), false);
   return batch::runJob(job);
 }
 

@@ -6,6 +6,7 @@
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
+#include "records/batch_summary_file.h"
 #include "records/known_keys.h"
 #include "records/run_files.h"
 #include "util/input_error.h"

@@ -1,20 +1,19 @@
 #pragma once
 // The summary of a batch (SPEC section 6): per (scene, method) the distribution over seeds
-// of average coverage and utilization, safety figures; per scene the winner and the two-sided
-// Mann-Whitney p-value of paper vs local. Built from the runs' summaries only, and written
-// with sorted keys and shortest round-trip numbers, so one process and N shards plus a merge
-// give the same bytes.
+// of average coverage and utilization, safety figures; per scene every method's verdict
+// against the reference and the others' against each other (records/verdicts.h), tallied
+// overall and per group of scenes. Built from the runs' summaries only, and sorted in natural
+// order, so one process and N shards plus a merge summarize alike; the file it is written to
+// and read back from is records/batch_summary_file.h.
 #include <cstdint>
-#include <filesystem>
 #include <map>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "records/statistics.h"
+#include "records/verdicts.h"
 #include "sim/simulator.h"
 
 namespace camcov::records {
@@ -59,63 +58,6 @@ struct MethodSummary {
   std::uint64_t bestSeed = 0;
 };
 
-// The verdict rule (docs/statistics.md), the one every table of camcov uses: on one scene,
-// one method's runs against another's, by their average coverage.
-//   undecided  the seed counts cannot reach α: even runs all above all others would give
-//              p ≥ α (3 seeds against 3: p ≥ 0.1); the verdict says how many seeds would do
-//   better / worse  the two-sided Mann-Whitney U test gives p < α AND the means differ by at
-//              least kPracticalDifference AND in the direction the test found (A12 on the
-//              same side of 1/2): a method whose runs mostly beat the other's but whose mean
-//              is lower (a few runs far below) has neither won nor lost
-//   tie        otherwise: no evidence, or a difference too small to matter
-inline constexpr double kSignificance = 0.05;  // α
-// Average coverage is a fraction of the targets' boundary: a difference below 0.2 % of it is
-// below what any reader would act on (two methods at 0.99994 and 0.99995 tie), and below the
-// smallest significant difference on the published benchmark (0.004, 20 seeds).
-inline constexpr double kPracticalDifference = 0.002;
-
-enum class Verdict { Better, Tie, Worse, Undecided };
-struct RunsComparison {
-  Verdict verdict = Verdict::Tie;
-  double pValue = 1.0;
-  bool exact = false;
-  double meanDifference = 0.0;  // mean of the runs minus the reference's
-  double a12 = 0.5;             // Vargha–Delaney: P(a run above a reference run)
-  Interval meanDifferenceCI;    // 95 %, Welch; NaN with fewer than 2 runs on a side
-  int seedsNeeded = 0;          // undecided only: seeds per method that could reach α
-};
-// The rule in one sentence, for the reports' and tables' captions (plain text).
-std::string verdictRuleText();
-// The fewest seeds per method with which the rule can decide anything (4 at α = 0.05).
-int seedsToReachSignificance();
-// Both samples must be non-empty.
-RunsComparison compareRuns(std::span<const double> runs, std::span<const double> reference);
-
-// One method against another (the reference, or for pairs the other) on one scene: the test
-// of their runs, and its verdict named.
-struct Comparison : RunsComparison {
-  std::string scene;
-  std::string method;
-  // The method, the other, "tie", "undecided", or "" when either is missing.
-  std::string winner;
-};
-
-// The verdict as the tables print it: "paper (p 0.003)", "tie (p 0.41)", "undecided: needs ≥ 4
-// seeds" (per method, for any p to reach significance), or "-" when there was no comparison.
-std::string verdictText(const Comparison& c);
-
-// How one method fared against the reference (or `against`) over the scenes where both ran.
-struct Tally {
-  std::string method;
-  int wins = 0, ties = 0, losses = 0;
-  std::string against;  // pairs only; the reference's tallies leave it empty
-  int undecided = 0;    // scenes with too few seeds to tell
-};
-
-// Counts comparison `c` of `c.method` against `against` in `tally`: a win, tie, loss or
-// undecided (nothing when `c` compared nothing).
-void count(Tally& tally, const Comparison& c, const std::string& against);
-
 // A comparison of two methods other than the reference, and its tally (BatchSummary::pairs).
 struct PairComparison {
   std::string against;
@@ -159,11 +101,5 @@ struct BatchSummary {
 BatchSummary summarize(std::vector<JobOutcome> outcomes, const std::string& reference,
                        std::span<const std::string> order = {},
                        const std::map<std::string, std::string>& groupOf = {});
-nlohmann::json summaryToJson(const BatchSummary& summary);
-// The inverse of summaryToJson, so a report shows exactly the numbers the batch wrote.
-// Throws InputError naming `source` if the document is not a camcov summary.
-BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source);
-BatchSummary loadSummaryFile(const std::filesystem::path& file);
-std::string summaryToCsv(const BatchSummary& summary);
 
 }  // namespace camcov::records

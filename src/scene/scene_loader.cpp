@@ -609,4 +609,8 @@ SceneFile loadSceneFile(const std::filesystem::path& file) {
   return {parseScene(text, file.string()), fnv1a(text)};
 }
 
+std::uint64_t sceneFileHash(const std::filesystem::path& file) {
+  return fnv1a(readText(file));
+}
+
 }  // namespace camcov::scene

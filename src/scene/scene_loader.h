@@ -19,6 +19,9 @@ struct SceneFile {
   std::uint64_t hash = 0;
 };
 SceneFile loadSceneFile(const std::filesystem::path& file);
+// The hash loadSceneFile gives `file`, from its bytes alone (nothing parsed): whether a file
+// read earlier still holds the same bytes, for a fraction of a reading's cost.
+std::uint64_t sceneFileHash(const std::filesystem::path& file);
 // `sourceName` is used in messages and, through its stem, as the scene's name.
 Scene parseScene(std::string_view jsonText, const std::string& sourceName);
 

@@ -4,13 +4,16 @@
 
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "batch/batch_plan.h"
 #include "batch/merge.h"
+#include "batch/run_job.h"
 #include "control/methods.h"
 #include "records/run_files.h"
 #include "scene/scene_families.h"
+#include "scene/scene_loader.h"
 #include "support/scratch.h"
 #include "support/test_paths.h"
 #include "util/input_error.h"
@@ -120,8 +123,10 @@ TEST(RunBatch, ASecondRunResumesWithNothingLeftAndAFailedJobIsRecorded) {
   const records::BatchFolder folder(dir / "out");
   BatchPlan plan = planBatch(tinyRequest(1), "test");
   prepareFolder(folder, plan.manifest, false);
-  // One job points at a scene file that breaks: it fails alone.
+  // One job points at a scene file that breaks, which it reads itself (handed no scene): it
+  // fails alone.
   plan.jobs[1].spec.sceneFile = dir / "missing.json";
+  plan.jobs[1].spec.scene = nullptr;
   Recorder first;
   const BatchRun run = runBatch(plan.jobs, folder, 2, first);
   EXPECT_EQ(first.alreadyDone, 0u);
@@ -138,6 +143,39 @@ TEST(RunBatch, ASecondRunResumesWithNothingLeftAndAFailedJobIsRecorded) {
   EXPECT_EQ(second.alreadyDone, 3u) << "the finished ones are kept";
   EXPECT_EQ(second.ran, std::vector<std::string>{plan.jobs[1].stem}) << "the failed one runs again";
   EXPECT_EQ(again.outcomes[0].summary.averageCoverage, run.outcomes[0].summary.averageCoverage);
+}
+
+TEST(PlanBatch, EveryJobOfASceneIsHandedTheOneReadingOfItsFile) {
+  const BatchPlan plan = planBatch(tinyRequest(2), "test");
+  ASSERT_EQ(plan.jobs.size(), 8u);
+  for (const BatchJob& job : plan.jobs) {
+    const BatchJob& first = plan.jobs[job.scene == plan.jobs.front().scene ? 0 : 4];
+    EXPECT_EQ(job.spec.scene, first.spec.scene) << job.stem << ": one copy per scene";
+    EXPECT_EQ(job.spec.scene->scene.name, job.scene) << job.stem;
+    EXPECT_EQ(job.spec.scene->hash, job.sceneHash) << job.stem;
+  }
+  EXPECT_NE(plan.jobs.front().spec.scene, plan.jobs.back().spec.scene);
+}
+
+TEST(RunJob, RunsTheSceneItIsHandedWhileItsFileHoldsThoseBytesElseTheFileAsItIsNow) {
+  const testing::ScratchDir dir;
+  const fs::path file = dir / "tiny.json";
+  fs::copy_file(testing::testDataDir() / "scenes" / "tiny_static.json", file);
+  BatchPlan plan = planBatch(tinyRequest(1), "test");
+  JobSpec job = plan.jobs.front().spec;
+  job.sceneFile = file;
+  auto handed = std::make_shared<scene::SceneFile>(*readSceneFile(file));
+  handed->scene.name = "as handed";  // tells which reading ran
+  job.scene = handed;
+  EXPECT_EQ(runJob(job).metadata.scene, "as handed") << "the file was not read again";
+
+  // Edited since the reading: the job reads the file as it is now, as one on its own would.
+  fs::copy_file(testing::testDataDir() / "scenes" / "tiny_dynamic.json", file,
+                fs::copy_options::overwrite_existing);
+  const records::RunRecord run = runJob(job);
+  EXPECT_EQ(run.metadata.scene, "tiny");
+  EXPECT_EQ(run.metadata.sceneHash, scene::sceneFileHash(file));
+  EXPECT_NE(run.metadata.sceneHash, handed->hash);
 }
 
 TEST(PrepareFolder, RefusesResultsOfOtherParametersUnlessForced) {

@@ -1,4 +1,5 @@
 #include "records/batch_summary.h"
+#include "records/batch_summary_file.h"
 
 #include <gtest/gtest.h>
 

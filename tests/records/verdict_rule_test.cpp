@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "records/batch_summary.h"
+#include "records/batch_summary_file.h"
 #include "records/statistics.h"
+#include "records/verdicts.h"
 
 namespace camcov::records {
 namespace {

@@ -87,6 +87,10 @@ TEST(LoadSceneFile, FingerprintsTheFilesBytesSoAnyEditChangesIt) {
   EXPECT_EQ(loadSceneFile(dir / "fig1_example.json").hash, original.hash);
   { std::ofstream(dir / "fig1_example.json", std::ios::app) << " "; }
   EXPECT_NE(loadSceneFile(dir / "fig1_example.json").hash, original.hash);
+  // The hash alone is the reading's, and needs no valid scene.
+  EXPECT_EQ(sceneFileHash(source), original.hash);
+  { std::ofstream(dir / "broken.json") << "foobar"; }
+  EXPECT_EQ(sceneFileHash(dir / "broken.json"), fnv1a("foobar"));
   std::filesystem::remove_all(dir);
 }
 
