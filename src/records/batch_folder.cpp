@@ -81,7 +81,7 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
     for (const auto& s : j.at("scenes")) {
       requireKnownKeys(s, {"name", "file", "hash", "group"}, "scenes[]", source);
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),
-                          std::stoull(s.at("hash").get<std::string>(), nullptr, 16),
+                          hashFrom(s.at("hash"), "scenes[].hash", source),
                           s.value("group", std::string())});
     }
     m.command = j.at("command").get<std::vector<std::string>>();

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 
 #include "util/input_error.h"
 
@@ -15,6 +17,22 @@ void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::s
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw InputError(fmt::format("{}: {}: unknown key \"{}\"", source, where, key));
   }
+}
+
+std::uint64_t hashFrom(const nlohmann::json& value, std::string_view where,
+                       const std::string& source) {
+  const auto bad = [&] {
+    return InputError(
+        fmt::format("{}: {} is not a scene hash (1 to 16 hexadecimal digits)", source, where));
+  };
+  if (!value.is_string()) throw bad();
+  const std::string& text = value.get_ref<const std::string&>();
+  if (text.empty() || text.size() > 16 ||
+      !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isxdigit(c); }))
+    throw bad();
+  std::uint64_t hash = 0;
+  std::from_chars(text.data(), text.data() + text.size(), hash, 16);
+  return hash;
 }
 
 }  // namespace camcov::records

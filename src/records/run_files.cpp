@@ -330,7 +330,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     RunMetadata& m = run.metadata;
     m.scene = j.at("scene").at("name").get<std::string>();
     m.sceneFile = j.at("scene").at("file").get<std::string>();
-    m.sceneHash = std::stoull(j.at("scene").at("hash").get<std::string>(), nullptr, 16);
+    m.sceneHash = hashFrom(j.at("scene").at("hash"), "scene.hash", source);
     m.method = j.at("method").get<std::string>();
     m.seed = j.at("seed").get<std::uint64_t>();
     m.parameters = params::fromJson(j.at("parameters"), source);

@@ -24,6 +24,23 @@ TEST(KnownKeys, RefusesAKeyOutsideTheListNamingWhereAndAcceptsTheListsOwn) {
   EXPECT_THROW(requireKnownKeys(nlohmann::json::array(), {"a"}, "x", "f.json"), InputError);
 }
 
+TEST(KnownKeys, AHashIsOneToSixteenHexDigitsAndNothingElse) {
+  EXPECT_EQ(hashFrom("7ed329df119d05cd", "h", "f.json"), 0x7ed329df119d05cdull);
+  EXPECT_EQ(hashFrom("0", "h", "f.json"), 0u);
+  EXPECT_EQ(hashFrom("FFFFFFFFFFFFFFFF", "h", "f.json"), ~std::uint64_t{0});
+  // Too long (out of range for stoull), signs, spaces, trailing text, empty, not a string.
+  for (const nlohmann::json& bad :
+       {nlohmann::json("1ffffffffffffffff"), nlohmann::json("-1"), nlohmann::json("+1"),
+        nlohmann::json(" 1"), nlohmann::json("12g"), nlohmann::json(""), nlohmann::json(12)}) {
+    try {
+      hashFrom(bad, "scene.hash", "f.json");
+      ADD_FAILURE() << "accepted " << bad.dump();
+    } catch (const InputError& e) {
+      EXPECT_STREQ(e.what(), "f.json: scene.hash is not a scene hash (1 to 16 hexadecimal digits)");
+    }
+  }
+}
+
 TEST(KnownKeys, ABatchManifestHoldsOnlyWhatCamcovWrites) {
   BatchManifest m;
   m.toolVersion = "9.9.9";
