@@ -8,6 +8,7 @@
 #include "control/event_kind.h"
 #include "control/neighbourhood.h"
 #include "control/team_belief.h"
+#include "scene/camera_poses_file.h"
 
 namespace camcov::control {
 
@@ -19,12 +20,9 @@ DecentralizedController::DecentralizedController(const scene::Scene& scene,
       seed_(seed),
       // The loops' own first global step waits one step to see whether anything moves.
       nextRegroupTime_(params.sim.dt + params.global.T1) {
-  std::vector<geometry::Pose> initial;
-  for (const scene::CameraSpec& camera : scene.cameras)
-    initial.push_back(camera.initial);
-  const auto size = static_cast<std::size_t>(std::max(1, params.camcov.neighbours));
+  const std::vector<geometry::Pose> initial = scene::initialPoses(scene);
   for (std::size_t j = 0; j < scene.cameras.size(); ++j)
-    loops_.push_back(makeLoop(j, neighbourhood(initial, j, size), 0.0));
+    loops_.push_back(makeLoop(j, neighbourhood(initial, j, neighbourhoodSize()), 0.0));
 }
 
 DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
@@ -59,7 +57,7 @@ void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
   // Neighbourhoods are chosen again when the loops' global steps are due (half a step of slack
   // against rounding, as theirs).
-  const auto size = static_cast<std::size_t>(std::max(1, params_.camcov.neighbours));
+  const std::size_t size = neighbourhoodSize();
   const bool regroup =
       size < loops_.size() && observation.time + 0.5 * params_.sim.dt >= nextRegroupTime_;
   if (regroup) nextRegroupTime_ += params_.global.T1;

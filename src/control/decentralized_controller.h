@@ -19,6 +19,7 @@
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -50,6 +51,10 @@ class DecentralizedController final : public Controller {
   // Camera j's loop for `members`, whose first instant is at `start` (a fresh loop: it plans
   // anew, one step after its first instant as camcov does).
   Loop makeLoop(std::size_t j, std::vector<std::size_t> members, double start) const;
+  // N: camcov.neighbours (at least 1, as the parameter table checks).
+  std::size_t neighbourhoodSize() const {
+    return static_cast<std::size_t>(std::max(1, params_.camcov.neighbours));
+  }
 
   const scene::Scene& scene_;
   params::Parameters params_;
