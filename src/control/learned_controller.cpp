@@ -35,10 +35,7 @@ geometry::Pose LearnedController::proposal(const Observation& observation, std::
   // Saturated as the simulator saturates it, so the pose is where the command would lead.
   const scene::CameraCommand u = camera.saturate(
       {{vx * camera.maxVelocity, vy * camera.maxVelocity}, turn * camera.maxAngularVelocity});
-  const geometry::Pose& from = observation.cameras[j];
-  const double dt = params_.sim.dt;
-  return {from.x + u.velocity.x * dt, from.y + u.velocity.y * dt,
-          geometry::wrapAngle(from.yaw + u.angularVelocity * dt)};
+  return scene::moved(observation.cameras[j], u, params_.sim.dt);
 }
 
 void LearnedController::control(const Observation& observation,
