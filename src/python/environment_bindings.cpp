@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -336,7 +337,10 @@ void bindEnvironment(py::module_& m) {
         }
         std::vector<geometry::Pose> rows;
         for (py::ssize_t i = 0; i < observations.shape(0); ++i) {
-          const auto a = policy.act(std::span(observations.data(i, 0), size));
+          const std::span<const float> row(observations.data(i, 0), size);
+          if (!std::all_of(row.begin(), row.end(), [](float v) { return std::isfinite(v); }))
+            throw py::value_error(fmt::format("learned_action: row {} is not finite", i));
+          const auto a = policy.act(row);
           rows.push_back({a[0], a[1], a[2]});
         }
         return posesToArray(rows);

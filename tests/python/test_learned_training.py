@@ -11,6 +11,7 @@ import pathlib
 import sys
 
 import numpy as np
+import pytest
 import torch
 
 import camcov
@@ -81,6 +82,13 @@ def test_the_exported_weights_act_in_cpp_as_in_torch(published):
     assert steps == 50
     assert followed > 0, "the method never took the network's step"
     assert np.abs(proposed).max() > 0.01, "the policy moves the cameras"
+    # Rows the network cannot read are refused, never read past or turned into NaN actions.
+    bad = np.array(rows[:1])
+    bad[0, 3] = np.nan
+    with pytest.raises(ValueError, match="learned_action: row 0 is not finite"):
+        camcov.learned_action(bad)
+    with pytest.raises(ValueError, match="expected observations of shape"):
+        camcov.learned_action(np.zeros((1, rows.shape[1] + 1), np.float32))
 
 
 def test_a_short_training_beats_a_random_policy():
