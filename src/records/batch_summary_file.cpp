@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "records/json_numbers.h"
+#include "records/known_keys.h"
 #include "util/input_error.h"
 
 namespace camcov::records {
@@ -32,7 +33,15 @@ nlohmann::json comparisonJson(const Comparison& c) {
   return j;
 }
 
-Comparison comparisonFrom(const nlohmann::json& c) {
+// `pair`: an entry of "pairs", the one place a comparison names what it is compared with.
+Comparison comparisonFrom(const nlohmann::json& c, bool pair, const std::string& source) {
+  const std::string_view where = pair ? "pairs[]" : "comparisons[]";
+  requireKnownKeys(c,
+                   {"scene", "method", "winner", "pValue", "exactTest", "meanCoverageDifference",
+                    "a12", "meanCoverageDifferenceCI", "seedsNeeded", "against"},
+                   where, source);
+  if (!pair && c.contains("against"))
+    throw InputError(fmt::format("{}: {}: unknown key \"against\"", source, where));
   Comparison out;
   out.scene = c.at("scene").get<std::string>();
   out.method = c.at("method").get<std::string>();
@@ -56,7 +65,9 @@ Comparison comparisonFrom(const nlohmann::json& c) {
   return out;
 }
 
-Description describedFrom(const nlohmann::json& j) {
+Description describedFrom(const nlohmann::json& j, const std::string& source) {
+  requireKnownKeys(j, {"count", "mean", "sd", "min", "q1", "median", "q3", "max"},
+                   "a description of runs", source);
   return {j.at("count").get<int>(),  j.at("mean").get<double>(), j.at("sd").get<double>(),
           j.at("min").get<double>(), j.at("q1").get<double>(),   j.at("median").get<double>(),
           j.at("q3").get<double>(),  j.at("max").get<double>()};
@@ -72,7 +83,9 @@ nlohmann::json tallyJson(const Tally& t) {
   return j;
 }
 
-Tally tallyFrom(const nlohmann::json& t) {
+Tally tallyFrom(const nlohmann::json& t, const std::string& source) {
+  requireKnownKeys(t, {"method", "wins", "ties", "losses", "undecided", "against"}, "a tally",
+                   source);
   return {t.at("method").get<std::string>(), t.at("wins").get<int>(),
           t.at("ties").get<int>(),           t.at("losses").get<int>(),
           t.value("against", std::string()), t.value("undecided", 0)};
@@ -184,20 +197,47 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
     if (j.at("format") != "camcov-summary/2") {
       throw InputError(source + ": not a camcov summary (format camcov-summary/2)");
     }
+    requireKnownKeys(j,
+                     {"format", "significance", "methods", "scenes", "reference", "comparisons",
+                      "totals", "pairs", "pairTotals", "groups", "failures"},
+                     "the summary", source);
     BatchSummary s;
     for (const auto& m : j.at("methods")) {
+      requireKnownKeys(m,
+                       {"scene",
+                        "method",
+                        "runs",
+                        "failed",
+                        "averageCoverage",
+                        "averageUtilization",
+                        "finalCoverage",
+                        "averageWeightedCoverage",
+                        "averageResolutionCoverage",
+                        "meanObjectCollisionTime",
+                        "meanCameraCollisionTime",
+                        "runsWithCollision",
+                        "meanAvoidableContactTime",
+                        "meanUnavoidableContactTime",
+                        "runsWithAvoidableContact",
+                        "runsWithUnavoidableContact",
+                        "minObjectDistance",
+                        "minCameraDistance",
+                        "medianSeed",
+                        "bestSeed"},
+                       "methods[]", source);
       MethodSummary ms;
       ms.scene = m.at("scene").get<std::string>();
       ms.method = m.at("method").get<std::string>();
       ms.runs = m.at("runs").get<int>();
       ms.failed = m.at("failed").get<int>();
-      ms.coverage = describedFrom(m.at("averageCoverage"));
-      ms.utilization = describedFrom(m.at("averageUtilization"));
-      if (m.contains("finalCoverage")) ms.finalCoverage = describedFrom(m.at("finalCoverage"));
+      ms.coverage = describedFrom(m.at("averageCoverage"), source);
+      ms.utilization = describedFrom(m.at("averageUtilization"), source);
+      if (m.contains("finalCoverage"))
+        ms.finalCoverage = describedFrom(m.at("finalCoverage"), source);
       if (m.contains("averageWeightedCoverage"))
-        ms.weightedCoverage = describedFrom(m.at("averageWeightedCoverage"));
+        ms.weightedCoverage = describedFrom(m.at("averageWeightedCoverage"), source);
       if (m.contains("averageResolutionCoverage"))
-        ms.resolutionCoverage = describedFrom(m.at("averageResolutionCoverage"));
+        ms.resolutionCoverage = describedFrom(m.at("averageResolutionCoverage"), source);
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
       ms.runsWithCollision = m.at("runsWithCollision").get<int>();
@@ -214,31 +254,36 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
     s.scenes = j.at("scenes").get<std::vector<std::string>>();
     s.reference = j.at("reference").get<std::string>();
     for (const auto& c : j.at("comparisons"))
-      s.comparisons.push_back(comparisonFrom(c));
+      s.comparisons.push_back(comparisonFrom(c, false, source));
     for (const auto& t : j.at("totals"))
-      s.tallies.push_back(tallyFrom(t));
+      s.tallies.push_back(tallyFrom(t, source));
     // Summaries written before pairwise verdicts existed have no pairs.
     for (const auto& c : j.value("pairs", nlohmann::json::array()))
-      s.pairs.push_back({c.at("against").get<std::string>(), comparisonFrom(c)});
+      s.pairs.push_back({c.at("against").get<std::string>(), comparisonFrom(c, true, source)});
     for (const auto& t : j.value("pairTotals", nlohmann::json::array()))
-      s.pairTallies.push_back(tallyFrom(t));
+      s.pairTallies.push_back(tallyFrom(t, source));
     // Summaries written before scenes had groups have none.
     for (const auto& g : j.value("groups", nlohmann::json::array())) {
+      requireKnownKeys(g, {"name", "scenes", "meanCoverage", "totals", "pairTotals"}, "groups[]",
+                       source);
       GroupSummary group{g.at("name").get<std::string>(),
                          g.at("scenes").get<std::vector<std::string>>(),
                          {},
                          {},
                          {}};
-      for (const auto& m : g.at("meanCoverage"))
+      for (const auto& m : g.at("meanCoverage")) {
+        requireKnownKeys(m, {"method", "mean"}, "groups[].meanCoverage[]", source);
         group.meanCoverage.emplace_back(m.at("method").get<std::string>(),
                                         m.at("mean").get<double>());
+      }
       for (const auto& t : g.at("totals"))
-        group.tallies.push_back(tallyFrom(t));
+        group.tallies.push_back(tallyFrom(t, source));
       for (const auto& t : g.at("pairTotals"))
-        group.pairTallies.push_back(tallyFrom(t));
+        group.pairTallies.push_back(tallyFrom(t, source));
       s.groups.push_back(std::move(group));
     }
     for (const auto& f : j.at("failures")) {
+      requireKnownKeys(f, {"scene", "method", "seed", "error"}, "failures[]", source);
       s.failures.push_back({f.at("scene").get<std::string>(),
                             f.at("method").get<std::string>(),
                             f.at("seed").get<std::uint64_t>(),

@@ -15,7 +15,8 @@ namespace camcov::records {
 
 nlohmann::json summaryToJson(const BatchSummary& summary);
 // The inverse of summaryToJson. Throws InputError naming `source` if the document is not a
-// camcov summary.
+// camcov summary, or holds a key summaryToJson does not write (a misspelled one would
+// otherwise be left unread).
 BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source);
 BatchSummary loadSummaryFile(const std::filesystem::path& file);
 std::string summaryToCsv(const BatchSummary& summary);

@@ -269,6 +269,43 @@ TEST(SummaryFile, ReadsSummariesWrittenBeforePairsAndFinalCoverage) {
   EXPECT_EQ(read.methods.at(0).finalCoverage.count, 0);
 }
 
+TEST(SummaryFile, RefusesAKeyItNeverWritesNamingTheKeyAndWhere) {
+  std::vector<JobOutcome> jobs;
+  for (std::uint64_t s = 1; s <= 4; ++s) {
+    jobs.push_back(job("a", "paper", s, 0.6));
+    jobs.push_back(job("a", "local", s, 0.4));
+  }
+  jobs.push_back({"a", "local", 5, true, "it broke", {}});
+  const std::vector<std::string> order{"paper", "local"};
+  const nlohmann::json written = summaryToJson(summarize(jobs, "local", order));
+  ASSERT_NO_THROW(summaryFromJson(written, "summary.json"));
+  // One misspelling in each kind of object the file holds.
+  const std::vector<std::pair<nlohmann::json::json_pointer, std::string>> places{
+      {nlohmann::json::json_pointer(""), "the summary"},
+      {nlohmann::json::json_pointer("/methods/0"), "methods[]"},
+      {nlohmann::json::json_pointer("/methods/0/averageCoverage"), "a description of runs"},
+      {nlohmann::json::json_pointer("/comparisons/0"), "comparisons[]"},
+      {nlohmann::json::json_pointer("/totals/0"), "a tally"},
+      {nlohmann::json::json_pointer("/failures/0"), "failures[]"}};
+  for (const auto& [where, named] : places) {
+    nlohmann::json edited = written;
+    edited[where]["meanCoverge"] = 0.9;
+    try {
+      summaryFromJson(edited, "x/summary.json");
+      ADD_FAILURE() << "accepted a misspelled key in " << named;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("x/summary.json"), std::string::npos) << message;
+      EXPECT_NE(message.find(named), std::string::npos) << message;
+      EXPECT_NE(message.find("\"meanCoverge\""), std::string::npos) << message;
+    }
+  }
+  // Only a pair names what it is compared with.
+  nlohmann::json edited = written;
+  edited["comparisons"][0]["against"] = "paper";
+  EXPECT_THROW(summaryFromJson(edited, "summary.json"), InputError);
+}
+
 TEST(SummaryFile, RejectsOtherDocumentsNamingTheFile) {
   try {
     summaryFromJson(nlohmann::json{{"format", "camcov-run/2"}}, "x/summary.json");
