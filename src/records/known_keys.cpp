@@ -12,9 +12,18 @@ namespace camcov::records {
 
 void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
                       std::string_view where, const std::string& source) {
+  requireKnownKeys(object, {std::span<const std::string_view>(known.begin(), known.size())}, where,
+                   source);
+}
+
+void requireKnownKeys(const nlohmann::json& object,
+                      std::initializer_list<std::span<const std::string_view>> known,
+                      std::string_view where, const std::string& source) {
   if (!object.is_object()) throw InputError(fmt::format("{}: {} is not an object", source, where));
   for (const auto& [key, value] : object.items()) {
-    if (std::find(known.begin(), known.end(), key) == known.end())
+    if (std::none_of(known.begin(), known.end(), [&](std::span<const std::string_view> keys) {
+          return std::find(keys.begin(), keys.end(), key) != keys.end();
+        }))
       throw InputError(fmt::format("{}: {}: unknown key \"{}\"", source, where, key));
   }
 }

@@ -4,6 +4,7 @@
 // reader would go on without it unseen.
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -14,6 +15,10 @@ namespace camcov::records {
 // Throws InputError ("SOURCE: WHERE: unknown key \"K\"") for a key of `object` not in `known`,
 // or where `object` is not an object.
 void requireKnownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
+                      std::string_view where, const std::string& source);
+// The same, with the known keys given as several lists (a format's column groups, say).
+void requireKnownKeys(const nlohmann::json& object,
+                      std::initializer_list<std::span<const std::string_view>> known,
                       std::string_view where, const std::string& source);
 
 // A scene file's hash as camcov writes it: a string of 1 to 16 hexadecimal digits. Throws

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -33,6 +34,24 @@ geometry::Pose poseFrom(const nlohmann::json& v) {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The latest time a run may record, s: far past any scene's duration (scene::kMaxDuration).
 constexpr double kMaxRecordedTime = 1e9;
+
+// The columns of a run file's "series", for the writer and the reader alike: one value a step
+// in every run; one value a step where the scene asks for it (weighted targets, a resolution,
+// targets that come and go, limited knowledge); a list a camera.
+constexpr std::array<std::string_view, 11> kStepSeries{"time",
+                                                       "coverage",
+                                                       "utilization",
+                                                       "repulsion",
+                                                       "reward",
+                                                       "minObjectDistance",
+                                                       "minCameraDistance",
+                                                       "minObjectDistanceInStep",
+                                                       "minCameraDistanceInStep",
+                                                       "avoidableContactTime",
+                                                       "unavoidableContactTime"};
+constexpr std::array<std::string_view, 4> kOptionalStepSeries{
+    "weightedCoverage", "resolutionCoverage", "targetsPresent", "heard"};
+constexpr std::array<std::string_view, 2> kCameraSeries{"cameras", "goals"};
 
 // The series of a results file, checked as they are read, so that a file edited by hand or
 // cut short is refused with the column and step named instead of drawing, encoding or
@@ -244,12 +263,8 @@ nlohmann::json runToJson(const RunRecord& run) {
 
   // The time series, column by column; poses as [x, y, yaw (rad)].
   nlohmann::json series;
-  for (const char* key :
-       {"time", "coverage", "utilization", "repulsion", "reward", "minObjectDistance",
-        "minCameraDistance", "minObjectDistanceInStep", "minCameraDistanceInStep",
-        "avoidableContactTime", "unavoidableContactTime"}) {
-    series[key] = nlohmann::json::array();
-  }
+  for (const std::string_view key : kStepSeries)
+    series[std::string(key)] = nlohmann::json::array();
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
   nlohmann::json poses = nlohmann::json::array(), goals = nlohmann::json::array();
   for (std::size_t c = 0; c < cameras; ++c) {
@@ -344,12 +359,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     run.summary = summaryFrom(j.at("summary"), source);
 
     const nlohmann::json& series = j.at("series");
-    requireKnownKeys(series,
-                     {"time", "coverage", "utilization", "repulsion", "reward", "minObjectDistance",
-                      "minCameraDistance", "minObjectDistanceInStep", "minCameraDistanceInStep",
-                      "avoidableContactTime", "unavoidableContactTime", "weightedCoverage",
-                      "resolutionCoverage", "targetsPresent", "heard", "cameras", "goals"},
-                     "series", source);
+    requireKnownKeys(series, {kStepSeries, kOptionalStepSeries, kCameraSeries}, "series", source);
     const SeriesReader read(series, source);
     const auto& time = read.column("time");
     const std::size_t steps = time.size();
