@@ -82,8 +82,8 @@ std::string sceneText(Bytes& in) {
   }
   const char* paths[] = {"\"path\": \"POINT(0 0)\"",
                          "\"path\": \"LINESTRING(-5 0,5 1)\", \"velocity\": 1.3",
-                         "\"path\": \"POLYGON((-4 -4,4 -4,4 4,-4 4))\", \"velocity\": 2, "
-                         "\"angularVelocity\": 0.7"};
+                         ("\"path\": \"POLYGON((-4 -4,4 -4,4 4,-4 4))\", \"velocity\": 2, "
+                          "\"angularVelocity\": 0.7")};
   const std::string path = paths[in.byte() % 3];
   std::string cameras;
   const int m = 1 + static_cast<int>(in.byte() % 4);
