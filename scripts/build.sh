@@ -24,6 +24,13 @@ case "$kind" in
            -DCAMCOV_SANITIZE=ON -DCAMCOV_BUILD_FUZZERS=ON -DCAMCOV_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|sanitize]" >&2; exit 2 ;;
 esac
+# Through ccache where it is installed (scripts/install_deps.sh installs it): a second tree of
+# the same sources (the tutorial test's copy of the clone, another checkout) then compiles only
+# the files that differ, since paths under each tree are hashed relative to it (CCACHE_BASEDIR).
+if command -v ccache >/dev/null; then
+  flags+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$repo}
+fi
 # Progress and errors go to stderr, so callers can take the folder from stdout and a log
 # still shows why a build failed.
 cmake -S "$repo" -B "$dir" -G Ninja "${flags[@]}" >/dev/null

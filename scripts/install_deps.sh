@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git clang-format
+  ccache                            # a second tree of the sources builds from the first's objects
   libboost-dev                      # Boost.Geometry (header-only)
   libompl-dev                       # OMPL: PRM* motion planning
   libboost-filesystem-dev libboost-serialization-dev libboost-system-dev  # linked by OMPL
