@@ -16,10 +16,14 @@ echo "COVERAGE_SCENES_DIR=${COVERAGE_SCENES_DIR:-<unset: tests on the published 
 kinds=(release sanitize)
 [ "${1:-}" = "--fast" ] && kinds=(release)
 for kind in "${kinds[@]}"; do
-  echo "== $kind build"
+  echo "== $kind build (at ${SECONDS} s)"
   dir=$("$repo/scripts/build.sh" "$kind" | tail -n 1)
-  echo "== $kind tests"
+  echo "== $kind tests (at ${SECONDS} s)"
   ctest --test-dir "$dir" --parallel "$(nproc)" --output-on-failure --timeout 900
 done
-# A short fuzz of the scene loader and the visibility sweep, same inputs every time.
-[ "${1:-}" = "--fast" ] || "$repo/scripts/fuzz.sh" 30000
+# A short fuzz of every target, the same inputs every time.
+if [ "${1:-}" != "--fast" ]; then
+  echo "== fuzz (at ${SECONDS} s)"
+  "$repo/scripts/fuzz.sh" 30000
+fi
+echo "== done in ${SECONDS} s"
