@@ -15,7 +15,14 @@ namespace camcov::batch {
 records::OptimumFile searchSceneOptimum(const std::filesystem::path& sceneFile,
                                         const params::Parameters& parameters, double time,
                                         std::int64_t budget, std::uint64_t seed) {
-  const scene::SceneFile file = scene::loadSceneFile(sceneFile);
+  return searchSceneOptimum(scene::loadSceneFile(sceneFile), sceneFile, parameters, time, budget,
+                            seed);
+}
+
+records::OptimumFile searchSceneOptimum(const scene::SceneFile& file,
+                                        const std::filesystem::path& sceneFile,
+                                        const params::Parameters& parameters, double time,
+                                        std::int64_t budget, std::uint64_t seed) {
   const scene::Scene& s = file.scene;
   const kinematics::World world = kinematics::Kinematics(s).worldAt(time);
   reward::RewardModel model(parameters.reward, scene::lenses(s));

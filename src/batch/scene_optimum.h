@@ -6,7 +6,7 @@
 
 #include "params/parameters.h"
 #include "records/optimum_file.h"
-#include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace camcov::batch {
 
@@ -14,6 +14,11 @@ namespace camcov::batch {
 // round, from `seed`. InputError for a bad scene, or if no valid pose was found for every
 // camera.
 records::OptimumFile searchSceneOptimum(const std::filesystem::path& sceneFile,
+                                        const params::Parameters& parameters, double time,
+                                        std::int64_t budget, std::uint64_t seed);
+// The same for a scene already read from `sceneFile`.
+records::OptimumFile searchSceneOptimum(const scene::SceneFile& file,
+                                        const std::filesystem::path& sceneFile,
                                         const params::Parameters& parameters, double time,
                                         std::int64_t budget, std::uint64_t seed);
 

@@ -41,32 +41,33 @@ OutputBatch writeBenchOptima(const records::BatchFolder& folder,
                              unsigned workers, BenchObserver& observer) {
   OutputBatch batch;
   if (budget <= 0) return batch;
-  std::vector<const records::SceneEntry*> pending;
+  // Each scene that holds still, with its one reading, which the search takes on.
+  std::vector<std::pair<const records::SceneEntry*, scene::SceneFile>> pending;
   OutputProblems problems;
   for (const records::SceneEntry& entry : manifest.scenes) {
     try {
-      if (!scene::loadSceneFile(entry.file).scene.holdsStill()) continue;
+      scene::SceneFile file = scene::loadSceneFile(entry.file);
+      if (!file.scene.holdsStill()) continue;
+      if (isCurrent(folder.optimumFile(entry.name), entry, manifest.parameters, budget)) {
+        ++batch.upToDate;
+      } else {
+        pending.emplace_back(&entry, std::move(file));
+      }
     } catch (const std::exception& e) {
       problems.add(fmt::format("optimum/{}.json: not written: {}", entry.name, e.what()));
-      continue;
-    }
-    if (isCurrent(folder.optimumFile(entry.name), entry, manifest.parameters, budget)) {
-      ++batch.upToDate;
-    } else {
-      pending.push_back(&entry);
     }
   }
   std::atomic<std::size_t> written{0};
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
-    const records::SceneEntry& entry = *pending[k];
+    const auto& [entry, file] = pending[k];
     try {
       const records::OptimumFile found = batch::searchSceneOptimum(
-          entry.file, manifest.parameters, 0.0, budget, batch::kBenchOptimumSeed);
-      records::writeFileAtomically(folder.optimumFile(entry.name),
+          file, entry->file, manifest.parameters, 0.0, budget, batch::kBenchOptimumSeed);
+      records::writeFileAtomically(folder.optimumFile(entry->name),
                                    records::optimumToJson(found).dump(1) + "\n");
       ++written;
     } catch (const std::exception& e) {
-      problems.add(fmt::format("optimum/{}.json: not written: {}", entry.name, e.what()));
+      problems.add(fmt::format("optimum/{}.json: not written: {}", entry->name, e.what()));
     }
   });
   batch.failed = problems.report(observer);
