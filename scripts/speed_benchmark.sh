@@ -10,6 +10,8 @@
 #                `camcov run SCENE --method M --duration 30`, for ours, the paper's and the
 #                baseline on scenes/large/crowd_100x30 (100 targets, 30 cameras), dynamic9 and
 #                scenes/large/round_4000 (one target of 4,000 vertices)
+#   memory       peak resident memory of the protocol's batch, and of one run of ours on each
+#                of those scenes
 #
 #   scripts/speed_benchmark.sh            # builds camcov if needed, prints the table
 #   SEEDS=5 scripts/speed_benchmark.sh    # a quicker protocol (the real-time rows are the same)
@@ -25,13 +27,20 @@ camcov="$repo/build/src/cli/camcov"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-# Wall seconds of a command, its output kept out of the table.
+# Wall seconds of a command, its output kept out of the table; its peak memory is left for
+# peak_mb.
 wall() {
   local start end
   start=$(date +%s.%N)
-  "$@" >"$scratch/stdout" 2>"$scratch/stderr" || { cat "$scratch/stderr" >&2; exit 1; }
+  /usr/bin/time -f %M -o "$scratch/peak_kb" "$@" >"$scratch/stdout" 2>"$scratch/stderr" ||
+    { cat "$scratch/stderr" >&2; exit 1; }
   end=$(date +%s.%N)
   awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }'
+}
+
+# The peak resident memory of the last command `wall` timed, MB.
+peak_mb() {
+  awk '{ printf "%.0f", $1 / 1024 }' "$scratch/peak_kb"
 }
 
 # Simulated seconds per wall second of a 30 s run of scene $1 with method $2, on one core (long
@@ -47,6 +56,7 @@ echo "camcov $("$camcov" --version | cut -d' ' -f2), $(nproc) cores, $(grep -m1 
 printf '%-44s %-14s %s\n' measure goal measured
 protocol=$(wall "$camcov" bench --scenes "$scenes" --seeds "$seeds" --methods paper,local \
   --videos none --explorer none --no-report --optimum-budget 0 --out "$scratch/protocol")
+protocol_mb=$(peak_mb)
 printf '%-44s %-14s %s s\n' "protocol, paper + baseline, $((32 * 2 * seeds)) runs" "<= 10 s" "$protocol"
 all=$(wall "$camcov" bench --scenes "$scenes" --seeds "$seeds" --methods paper,local,camcov \
   --videos none --explorer none --no-report --out "$scratch/all")
@@ -54,9 +64,11 @@ printf '%-44s %-14s %s s\n' "all three methods + optima, $((32 * 3 * seeds)) run
 
 crowd="$repo/scenes/large/crowd_100x30.json"
 round="$repo/scenes/large/round_4000.json"
+peaks=()  # ours, one run of each scene
 for row in "crowd_100x30:$crowd" "dynamic9:$scenes/dynamic9.json" "round_4000:$round"; do
   name=${row%%:*} file=${row#*:}
   ours=$(real_time "$file" camcov)
+  peaks+=("$name $(peak_mb)")
   paper=$(real_time "$file" paper)
   local_=$(real_time "$file" local)
   ratio=$(awk -v o="$ours" -v p="$paper" 'BEGIN { printf "%.2f", o / p }')
@@ -68,3 +80,6 @@ for row in "crowd_100x30:$crowd" "dynamic9:$scenes/dynamic9.json" "round_4000:$r
   printf '%-44s %-14s ours %sx, paper %sx, baseline %sx (ours/paper %s)\n' \
     "real time, $name, one core" "$goal" "$ours" "$paper" "$local_" "$ratio"
 done
+printf '%-44s %-14s %s MB\n' "peak memory, protocol" "< 100 MB" "$protocol_mb"
+printf '%-44s %-14s %s\n' "peak memory, ours, one run" "< 200 MB" \
+  "$(printf '%s MB, ' "${peaks[@]}" | sed 's/, $//')"
