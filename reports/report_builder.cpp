@@ -4,9 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <vector>
-
 #include "records/atomic_file.h"
 #include "records/batch_folder.h"
 #include "reports/markup.h"
@@ -16,18 +13,14 @@
 namespace camcov::reports {
 namespace {
 
-// The links of the sections that show something, each where its row places it.
+// The links of the sections that show something, in the page's order.
 std::string navigation(const ReportData& data) {
-  std::vector<const ReportSection*> byPlace;
-  for (const ReportSection& section : kReportSections)
-    byPlace.push_back(&section);
-  std::ranges::sort(byPlace, {}, &ReportSection::navigationPlace);
   std::string links;
-  for (const ReportSection* section : byPlace) {
-    const std::size_t count = section->count == nullptr ? 1 : section->count(data);
+  for (const ReportSection& section : kReportSections) {
+    const std::size_t count = section.count == nullptr ? 1 : section.count(data);
     if (count == 0) continue;
-    links += fmt::format("<li><a href=\"#{}\">{}</a></li>", section->anchor,
-                         fmt::format(fmt::runtime(section->link), count));
+    links += fmt::format("<li><a href=\"#{}\">{}</a></li>", section.anchor,
+                         fmt::format(fmt::runtime(section.link), count));
   }
   return "<nav class=\"toc\" aria-label=\"Sections\"><ul>" + links + "</ul></nav>\n";
 }
