@@ -20,7 +20,8 @@ void requireKnownKeys(const nlohmann::json& object,
                       std::initializer_list<std::span<const std::string_view>> known,
                       std::string_view where, const std::string& source) {
   if (!object.is_object()) throw InputError(fmt::format("{}: {} is not an object", source, where));
-  for (const auto& [key, value] : object.items()) {
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();
     if (std::none_of(known.begin(), known.end(), [&](std::span<const std::string_view> keys) {
           return std::find(keys.begin(), keys.end(), key) != keys.end();
         }))
