@@ -77,7 +77,7 @@ BatchManifest manifestFromJson(const nlohmann::json& j, const std::string& sourc
       requireKnownKeys(look, {"description", "color"}, "methodLooks." + method, source);
       m.methodLooks[method] = {look.at("description"), look.at("color")};
     }
-    m.seeds = j.at("seeds").get<std::uint64_t>();
+    m.seeds = wholeNumberFrom<std::uint64_t>(j.at("seeds"), "seeds", source);
     for (const auto& s : j.at("scenes")) {
       requireKnownKeys(s, {"name", "file", "hash", "group"}, "scenes[]", source);
       m.scenes.push_back({s.at("name").get<std::string>(), s.at("file").get<std::string>(),

@@ -56,7 +56,9 @@ Comparison comparisonFrom(const nlohmann::json& c, bool pair, const std::string&
     out.meanDifferenceCI = {ci->at(0).is_null() ? nan : ci->at(0).get<double>(),
                             ci->at(1).is_null() ? nan : ci->at(1).get<double>()};
   }
-  out.seedsNeeded = c.value("seedsNeeded", 0);
+  out.seedsNeeded = c.contains("seedsNeeded")
+                        ? wholeNumberFrom<int>(c.at("seedsNeeded"), "seedsNeeded", source)
+                        : 0;
   // The verdict its name stands for ("": nothing compared, left as a default-made one).
   out.verdict = out.winner == out.method                    ? Verdict::Better
                 : out.winner == "undecided"                 ? Verdict::Undecided
@@ -68,9 +70,14 @@ Comparison comparisonFrom(const nlohmann::json& c, bool pair, const std::string&
 Description describedFrom(const nlohmann::json& j, const std::string& source) {
   requireKnownKeys(j, {"count", "mean", "sd", "min", "q1", "median", "q3", "max"},
                    "a description of runs", source);
-  return {j.at("count").get<int>(),  j.at("mean").get<double>(), j.at("sd").get<double>(),
-          j.at("min").get<double>(), j.at("q1").get<double>(),   j.at("median").get<double>(),
-          j.at("q3").get<double>(),  j.at("max").get<double>()};
+  return {wholeNumberFrom<int>(j.at("count"), "count", source),
+          j.at("mean").get<double>(),
+          j.at("sd").get<double>(),
+          j.at("min").get<double>(),
+          j.at("q1").get<double>(),
+          j.at("median").get<double>(),
+          j.at("q3").get<double>(),
+          j.at("max").get<double>()};
 }
 
 nlohmann::json tallyJson(const Tally& t) {
@@ -86,9 +93,13 @@ nlohmann::json tallyJson(const Tally& t) {
 Tally tallyFrom(const nlohmann::json& t, const std::string& source) {
   requireKnownKeys(t, {"method", "wins", "ties", "losses", "undecided", "against"}, "a tally",
                    source);
-  return {t.at("method").get<std::string>(), t.at("wins").get<int>(),
-          t.at("ties").get<int>(),           t.at("losses").get<int>(),
-          t.value("against", std::string()), t.value("undecided", 0)};
+  return {
+      t.at("method").get<std::string>(),
+      wholeNumberFrom<int>(t.at("wins"), "wins", source),
+      wholeNumberFrom<int>(t.at("ties"), "ties", source),
+      wholeNumberFrom<int>(t.at("losses"), "losses", source),
+      t.value("against", std::string()),
+      t.contains("undecided") ? wholeNumberFrom<int>(t.at("undecided"), "undecided", source) : 0};
 }
 
 }  // namespace
@@ -228,8 +239,8 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       MethodSummary ms;
       ms.scene = m.at("scene").get<std::string>();
       ms.method = m.at("method").get<std::string>();
-      ms.runs = m.at("runs").get<int>();
-      ms.failed = m.at("failed").get<int>();
+      ms.runs = wholeNumberFrom<int>(m.at("runs"), "runs", source);
+      ms.failed = wholeNumberFrom<int>(m.at("failed"), "failed", source);
       ms.coverage = describedFrom(m.at("averageCoverage"), source);
       ms.utilization = describedFrom(m.at("averageUtilization"), source);
       if (m.contains("finalCoverage"))
@@ -240,15 +251,18 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
         ms.resolutionCoverage = describedFrom(m.at("averageResolutionCoverage"), source);
       ms.meanObjectCollisionTime = m.at("meanObjectCollisionTime").get<double>();
       ms.meanCameraCollisionTime = m.at("meanCameraCollisionTime").get<double>();
-      ms.runsWithCollision = m.at("runsWithCollision").get<int>();
+      ms.runsWithCollision =
+          wholeNumberFrom<int>(m.at("runsWithCollision"), "runsWithCollision", source);
       ms.meanAvoidableContactTime = m.at("meanAvoidableContactTime").get<double>();
       ms.meanUnavoidableContactTime = m.at("meanUnavoidableContactTime").get<double>();
-      ms.runsWithAvoidableContact = m.at("runsWithAvoidableContact").get<int>();
-      ms.runsWithUnavoidableContact = m.at("runsWithUnavoidableContact").get<int>();
+      ms.runsWithAvoidableContact = wholeNumberFrom<int>(m.at("runsWithAvoidableContact"),
+                                                         "runsWithAvoidableContact", source);
+      ms.runsWithUnavoidableContact = wholeNumberFrom<int>(m.at("runsWithUnavoidableContact"),
+                                                           "runsWithUnavoidableContact", source);
       ms.minObjectDistance = numberOrInfinity(m.at("minObjectDistance"));
       ms.minCameraDistance = numberOrInfinity(m.at("minCameraDistance"));
-      ms.medianSeed = m.at("medianSeed").get<std::uint64_t>();
-      ms.bestSeed = m.at("bestSeed").get<std::uint64_t>();
+      ms.medianSeed = wholeNumberFrom<std::uint64_t>(m.at("medianSeed"), "medianSeed", source);
+      ms.bestSeed = wholeNumberFrom<std::uint64_t>(m.at("bestSeed"), "bestSeed", source);
       s.methods.push_back(std::move(ms));
     }
     s.scenes = j.at("scenes").get<std::vector<std::string>>();
@@ -286,7 +300,7 @@ BatchSummary summaryFromJson(const nlohmann::json& j, const std::string& source)
       requireKnownKeys(f, {"scene", "method", "seed", "error"}, "failures[]", source);
       s.failures.push_back({f.at("scene").get<std::string>(),
                             f.at("method").get<std::string>(),
-                            f.at("seed").get<std::uint64_t>(),
+                            wholeNumberFrom<std::uint64_t>(f.at("seed"), "seed", source),
                             true,
                             f.at("error").get<std::string>(),
                             {}});

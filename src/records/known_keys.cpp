@@ -45,4 +45,10 @@ std::uint64_t hashFrom(const nlohmann::json& value, std::string_view where,
   return hash;
 }
 
+void throwNotAWholeNumber(std::string_view where, const std::string& source, std::int64_t lowest,
+                          std::uint64_t highest) {
+  throw InputError(
+      fmt::format("{}: {} is not a whole number from {} to {}", source, where, lowest, highest));
+}
+
 }  // namespace camcov::records

@@ -4,6 +4,7 @@
 
 #include "params/parameter_table.h"
 #include "records/json_numbers.h"
+#include "records/known_keys.h"
 #include "util/input_error.h"
 
 namespace camcov::records {
@@ -49,10 +50,10 @@ OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) 
     OptimumFile f;
     f.scene = j.at("scene").at("name").get<std::string>();
     f.sceneFile = j.at("scene").at("file").get<std::string>();
-    f.sceneHash = j.at("scene").at("hash").get<std::uint64_t>();
+    f.sceneHash = wholeNumberFrom<std::uint64_t>(j.at("scene").at("hash"), "scene.hash", source);
     f.time = j.at("time").get<double>();
-    f.seed = j.at("seed").get<std::uint64_t>();
-    f.budget = j.at("budget").get<std::int64_t>();
+    f.seed = wholeNumberFrom<std::uint64_t>(j.at("seed"), "seed", source);
+    f.budget = wholeNumberFrom<std::int64_t>(j.at("budget"), "budget", source);
     f.parameters = params::fromJson(j.at("parameters"), source);
     planners::OptimumResult& r = f.result;
     const auto& best = j.at("best");
@@ -64,16 +65,18 @@ OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) 
     r.terms.utilization = best.at("utilization").get<double>();
     r.terms.repulsion = best.at("repulsion").get<double>();
     r.terms.reward = best.at("reward").get<double>();
-    r.foundInRound = j.at("found").at("round").get<int>();
+    r.foundInRound = wholeNumberFrom<int>(j.at("found").at("round"), "found.round", source);
     r.foundBy = j.at("found").at("by").get<std::string>();
-    r.foundAt = j.at("found").at("evaluations").get<std::int64_t>();
-    r.rounds = j.at("rounds").get<int>();
-    r.evaluations = j.at("evaluations").get<std::int64_t>();
+    r.foundAt =
+        wholeNumberFrom<std::int64_t>(j.at("found").at("evaluations"), "found.evaluations", source);
+    r.rounds = wholeNumberFrom<int>(j.at("rounds"), "rounds", source);
+    r.evaluations = wholeNumberFrom<std::int64_t>(j.at("evaluations"), "evaluations", source);
     if (const auto t = j.find("travelTime"); t != j.end() && t->is_number())
       f.travelTime = t->get<double>();
     for (const auto& step : j.at("curve")) {
-      r.curve.push_back({step.at("evaluations").get<std::int64_t>(),
-                         step.at("reward").get<double>(), step.at("coverage").get<double>()});
+      r.curve.push_back(
+          {wholeNumberFrom<std::int64_t>(step.at("evaluations"), "evaluations", source),
+           step.at("reward").get<double>(), step.at("coverage").get<double>()});
     }
     return f;
   } catch (const nlohmann::json::exception& e) {

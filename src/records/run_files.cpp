@@ -171,7 +171,7 @@ sim::RunSummary summaryFrom(const nlohmann::json& j, const std::string& source) 
                     "messages"},
                    "summary", source);
   sim::RunSummary s;
-  s.steps = j.at("steps").get<int>();
+  s.steps = wholeNumberFrom<int>(j.at("steps"), "steps", source);
   s.duration = j.at("duration").get<double>();
   s.averageCoverage = j.at("averageCoverage").get<double>();
   s.averageUtilization = j.at("averageUtilization").get<double>();
@@ -185,10 +185,15 @@ sim::RunSummary summaryFrom(const nlohmann::json& j, const std::string& source) 
   s.cameraCollisionTime = j.at("cameraCollisionTime").get<double>();
   s.avoidableContactTime = j.at("avoidableContactTime").get<double>();
   s.unavoidableContactTime = j.at("unavoidableContactTime").get<double>();
-  s.avoidableContacts = j.at("avoidableContacts").get<int>();
-  s.unavoidableContacts = j.at("unavoidableContacts").get<int>();
-  s.boundaryClamps = j.at("boundaryClamps").get<int>();
-  s.stepsWithoutTargets = j.value("stepsWithoutTargets", 0);
+  s.avoidableContacts =
+      wholeNumberFrom<int>(j.at("avoidableContacts"), "avoidableContacts", source);
+  s.unavoidableContacts =
+      wholeNumberFrom<int>(j.at("unavoidableContacts"), "unavoidableContacts", source);
+  s.boundaryClamps = wholeNumberFrom<int>(j.at("boundaryClamps"), "boundaryClamps", source);
+  s.stepsWithoutTargets =
+      j.contains("stepsWithoutTargets")
+          ? wholeNumberFrom<int>(j.at("stepsWithoutTargets"), "stepsWithoutTargets", source)
+          : 0;
   if (j.contains("averageWeightedCoverage"))
     s.averageWeightedCoverage = j.at("averageWeightedCoverage").get<double>();
   if (j.contains("finalWeightedCoverage"))
@@ -199,8 +204,9 @@ sim::RunSummary summaryFrom(const nlohmann::json& j, const std::string& source) 
     s.finalResolutionCoverage = j.at("finalResolutionCoverage").get<double>();
   if (j.contains("messages")) {
     const nlohmann::json& m = j.at("messages");
-    s.messages = sim::MessageCounts{m.at("sent").get<int>(), m.at("delivered").get<int>(),
-                                    m.at("lost").get<int>()};
+    s.messages = sim::MessageCounts{wholeNumberFrom<int>(m.at("sent"), "sent", source),
+                                    wholeNumberFrom<int>(m.at("delivered"), "delivered", source),
+                                    wholeNumberFrom<int>(m.at("lost"), "lost", source)};
   }
   return s;
 }
@@ -347,7 +353,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     m.sceneFile = j.at("scene").at("file").get<std::string>();
     m.sceneHash = hashFrom(j.at("scene").at("hash"), "scene.hash", source);
     m.method = j.at("method").get<std::string>();
-    m.seed = j.at("seed").get<std::uint64_t>();
+    m.seed = wholeNumberFrom<std::uint64_t>(j.at("seed"), "seed", source);
     m.parameters = params::fromJson(j.at("parameters"), source);
     m.toolVersion = j.at("tool").at("version").get<std::string>();
     requireKnownKeys(
@@ -405,7 +411,9 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       if (series.contains("heard")) {
         const nlohmann::json& heard = read.entryOf("heard", k);
         for (const auto& h : heard) {
-          const sim::Hearing hearing{h.at(0).get<int>(), h.at(1).get<int>(), h.at(2).get<double>()};
+          const sim::Hearing hearing{wholeNumberFrom<int>(h.at(0), "series.heard[][0]", source),
+                                     wholeNumberFrom<int>(h.at(1), "series.heard[][1]", source),
+                                     h.at(2).get<double>()};
           if (hearing.from < 0 || hearing.to < 0 ||
               hearing.from >= static_cast<int>(cameras.size()) ||
               hearing.to >= static_cast<int>(cameras.size()) || !(hearing.sentAt <= row.time))
@@ -431,7 +439,7 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     const int cameraCount = static_cast<int>(cameras.size());
     for (const auto& e : j.at("events")) {
       const double at = e.at("time").get<double>();
-      const int camera = e.at("camera").get<int>();
+      const int camera = wholeNumberFrom<int>(e.at("camera"), "camera", source);
       if (!(at >= 0.0 && at <= lastTime) || camera < -1 || camera >= cameraCount) {
         throw InputError(fmt::format(
             "{}: an event at {} s of camera {} lies outside the run "

@@ -41,6 +41,44 @@ TEST(KnownKeys, AHashIsOneToSixteenHexDigitsAndNothingElse) {
   }
 }
 
+TEST(KnownKeys, AWholeNumberIsAJsonIntegerInItsTypesRangeAndNothingElse) {
+  EXPECT_EQ(wholeNumberFrom<int>(nlohmann::json(42), "n", "f.json"), 42);
+  EXPECT_EQ(wholeNumberFrom<int>(nlohmann::json(-7), "n", "f.json"), -7);
+  EXPECT_EQ(wholeNumberFrom<int>(nlohmann::json(2147483647), "n", "f.json"), 2147483647);
+  EXPECT_EQ(wholeNumberFrom<std::uint64_t>(nlohmann::json(~std::uint64_t{0}), "n", "f.json"),
+            ~std::uint64_t{0});
+  EXPECT_EQ(wholeNumberFrom<std::int64_t>(nlohmann::json(std::int64_t{-1} << 62), "n", "f.json"),
+            std::int64_t{-1} << 62);
+  // What get<int>() would cast with undefined behaviour (a huge or fractional number) or wrap
+  // (an integer past the type's range, a negative count as unsigned), and what is no number.
+  const auto refused = [](const nlohmann::json& bad, auto type) {
+    using T = decltype(type);
+    try {
+      wholeNumberFrom<T>(bad, "seed", "f.json");
+      return false;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("f.json: seed is not a whole number from "),
+                std::string::npos)
+          << e.what();
+      return true;
+    }
+  };
+  for (const nlohmann::json& bad :
+       {nlohmann::json::parse("5.5e109"), nlohmann::json(2.5), nlohmann::json(3.0),
+        nlohmann::json(2147483648LL), nlohmann::json(-2147483649LL), nlohmann::json("3"),
+        nlohmann::json(true), nlohmann::json()}) {
+    EXPECT_TRUE(refused(bad, int{})) << bad.dump();
+  }
+  EXPECT_TRUE(refused(nlohmann::json(-1), std::uint64_t{}));
+  EXPECT_TRUE(refused(nlohmann::json::parse("1e20"), std::uint64_t{}));
+  EXPECT_TRUE(refused(nlohmann::json(~std::uint64_t{0}), std::int64_t{}));
+  try {
+    wholeNumberFrom<int>(nlohmann::json(0.5), "steps", "r.json");
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "r.json: steps is not a whole number from -2147483648 to 2147483647");
+  }
+}
+
 TEST(KnownKeys, ABatchManifestHoldsOnlyWhatCamcovWrites) {
   BatchManifest m;
   m.toolVersion = "9.9.9";
