@@ -53,8 +53,9 @@ import camcov.env
 # 9 vertices).
 SIZES = (8, 4, 0, 12)
 VIEW, TARGETS = "own", "nearest"
-OBSERVATION_SIZE = 4 + 10 * SIZES[0] + SIZES[1] * (5 + 2 * SIZES[3])
-OWN_COVERAGE = 4 + 9  # the own view's first camera slot: its own coverage term
+OBSERVATION_SIZE = len(camcov.observation_bounds(SIZES)[0])
+# The own view's first camera slot, after the 4 global floats: its own coverage term.
+OWN_COVERAGE = 4 + camcov.camera_columns().index("coverage")
 TEAM_COVERAGE = 1
 OWN_WEIGHT = 0.5
 CLIP = 10.0

@@ -4,13 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "control/team_belief.h"
 #include "geometry/ring.h"
 #include "kinematics/world.h"
-#include "scene/camera.h"
+#include "scene/camera_keys.h"
 
 namespace camcov::control {
 namespace {
@@ -47,6 +48,49 @@ struct RoomFrame {
  private:
   static float position(double v) { return bounded(v, -kPositionBound, kPositionBound); }
 };
+
+// An observed camera table row's bounds: lengths over L, yaw rates bounded, half-angles as
+// they are. None for a quantity the encoding has no scale for (pixels).
+struct ObservedBounds {
+  float low, high;
+};
+constexpr std::optional<ObservedBounds> observedBounds(scene::CameraQuantity quantity) {
+  switch (quantity) {
+    case scene::CameraQuantity::length:
+      return ObservedBounds{0.0f, kLengthBound};
+    case scene::CameraQuantity::rate:
+      return ObservedBounds{0.0f, kRateBound};
+    case scene::CameraQuantity::angle:
+      return ObservedBounds{0.0f, std::numbers::pi_v<float>};
+    case scene::CameraQuantity::pixels:
+      break;
+  }
+  return std::nullopt;
+}
+consteval bool everyObservedKeyHasBounds() {
+  for (const scene::CameraKey& row : scene::kCameraKeys)
+    if (row.observed && !observedBounds(row.quantity)) return false;
+  return true;
+}
+static_assert(everyObservedKeyHasBounds(), "an observed camera key needs a scale here");
+
+// The value of an observed row for `camera` in the room's frame; 0 for a property the camera
+// does not carry (an unlimited range).
+float observedValue(const scene::CameraKey& row, const scene::CameraSpec& camera,
+                    const RoomFrame& frame) {
+  if (!row.carried(camera)) return 0.0f;
+  const double v = row.get(camera);
+  switch (row.quantity) {
+    case scene::CameraQuantity::length:
+      return frame.length(v);
+    case scene::CameraQuantity::rate:
+      return bounded(v, 0.0f, kRateBound);
+    case scene::CameraQuantity::angle:
+    case scene::CameraQuantity::pixels:
+      break;
+  }
+  return static_cast<float>(v);  // a half-angle, as it is
+}
 
 // Writes a ring's vertex count / V and its vertices from `at`; returns where it ended.
 float* writeRing(const geometry::Ring& ring, std::size_t vertices, const RoomFrame& frame,
@@ -132,6 +176,14 @@ EncodingSizes EncodingSizes::of(const scene::Scene& scene) {
           std::max(largestRing(scene.targets), largestRing(scene.obstacles))};
 }
 
+std::vector<std::string> cameraColumns() {
+  std::vector<std::string> names{"present", "x", "y", "cos yaw", "sin yaw"};
+  for (const scene::CameraKey& row : scene::kCameraKeys)
+    if (row.observed) names.emplace_back(row.name);
+  names.emplace_back("coverage");
+  return names;
+}
+
 void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high) {
   sizes.check();
   if (low.size() != sizes.size() || high.size() != sizes.size())
@@ -148,10 +200,12 @@ void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::sp
   for (std::size_t slot = 0; slot < sizes.cameras; ++slot, at += EncodingSizes::kPerCamera) {
     set(at + 1, 2, -kPositionBound, kPositionBound);
     set(at + 3, 2, -1.0f, 1.0f);  // cos γ, sin γ
-    set(at + 5, 1, 0.0f, kLengthBound);
-    set(at + 6, 1, 0.0f, kRateBound);
-    set(at + 7, 1, 0.0f, std::numbers::pi_v<float>);  // θ
-    set(at + 8, 1, 0.0f, kLengthBound);
+    std::size_t column = EncodingSizes::kCameraPoseColumns;
+    for (const scene::CameraKey& row : scene::kCameraKeys) {
+      if (!row.observed) continue;
+      const ObservedBounds b = *observedBounds(row.quantity);
+      set(at + column++, 1, b.low, b.high);
+    }
   }
   for (std::size_t slot = 0; slot < sizes.targets; ++slot, at += sizes.perTarget()) {
     set(at + 2, 2, -kPositionBound, kPositionBound);
@@ -201,11 +255,10 @@ void encodeInstant(const scene::Scene& scene, const params::Parameters& params,
     c[2] = frame.y(p.position());
     c[3] = static_cast<float>(std::cos(p.yaw));
     c[4] = static_cast<float>(std::sin(p.yaw));
-    c[5] = frame.length(spec.maxVelocity);
-    c[6] = bounded(spec.maxAngularVelocity, 0.0f, kRateBound);
-    c[7] = static_cast<float>(spec.lens.halfFov);
-    c[8] = spec.lens.limited() ? frame.length(spec.lens.range) : 0.0f;
-    c[9] = static_cast<float>(
+    float* column = c + EncodingSizes::kCameraPoseColumns;
+    for (const scene::CameraKey& row : scene::kCameraKeys)
+      if (row.observed) *column++ = observedValue(row, spec, frame);
+    *column = static_cast<float>(
         reward::coverageOf(reward::visibleLengthOf(o.seen, static_cast<unsigned>(j)), perimeter));
   }
   at += sizes.cameras * EncodingSizes::kPerCamera;

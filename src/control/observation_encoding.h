@@ -5,9 +5,10 @@
 //
 //   [0, 4)              t / duration, and the team's coverage, utilization and reward at t
 //                       (eq. (3), (5), (8))
-//   per camera slot     10 floats: present, x, y, cos γ, sin γ, v_max / L, γ̇_max, θ, r / L
-//                       (0: no sensing range), the share of the target boundary this camera
-//                       sees (its own coverage term)
+//   per camera slot     10 floats: present, x, y, cos γ, sin γ, then each observed row of
+//                       the camera table (scene/camera_keys.h) in its order — v_max / L, γ̇_max,
+//                       θ, r / L (0: no sensing range) — then the share of the target boundary
+//                       this camera sees (its own coverage term); cameraColumns() names them
 //   per target slot     5 + 2·V floats: present, the share of its boundary that is seen, its
 //                       centroid x, y, its vertex count / V, then V vertices x, y (zeros past
 //                       its count)
@@ -31,12 +32,14 @@
 // box they expect.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "control/controller.h"
 #include "params/parameters.h"
 #include "reward/metrics.h"
+#include "scene/camera_keys.h"
 #include "scene/scene.h"
 
 namespace camcov::control {
@@ -53,7 +56,10 @@ struct EncodingSizes {
   TargetSlots targetSlots = TargetSlots::byIndex;
 
   static constexpr std::size_t kGlobal = 4;
-  static constexpr std::size_t kPerCamera = 10;
+  // A camera slot: its flag and pose, the camera table's observed rows, its coverage term.
+  static constexpr std::size_t kCameraPoseColumns = 5;
+  static constexpr std::size_t kPerCamera =
+      kCameraPoseColumns + scene::observedCameraKeyCount() + 1;
   std::size_t perTarget() const { return 5 + 2 * vertices; }
   std::size_t perObstacle() const { return 2 + 2 * vertices; }
   std::size_t size() const {
@@ -91,6 +97,10 @@ inline constexpr float kPositionBound = 2.0f;
 inline constexpr float kLengthBound = 4.0f;
 inline constexpr float kRateBound = 10.0f;
 inline constexpr float kRewardBound = 10.0f;
+
+// The names of a camera slot's kPerCamera columns: "present", "x", "y", "cos yaw", "sin yaw",
+// the observed camera table keys ("maxVelocity", …), "coverage".
+std::vector<std::string> cameraColumns();
 
 // Writes every float's lowest and highest value into `low` and `high` (each sizes.size()).
 void observationBounds(const EncodingSizes& sizes, std::span<float> low, std::span<float> high);

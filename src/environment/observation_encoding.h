@@ -11,6 +11,7 @@
 
 namespace camcov::environment {
 
+using control::cameraColumns;
 using control::EncodingSizes;
 using control::kLengthBound;
 using control::kPositionBound;

@@ -369,12 +369,11 @@ BuiltScene buildScene(const Recording& recording, const SceneOptions& options) {
              : 0.0;
   const double range = o.sensingRange.value_or(reach);
   for (const auto& p : cameraTeam(o, box, solid)) {
-    scene.cameras.push_back({{mm(p.x), mm(p.y)},
-                             std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0,
-                             o.cameraSpeed,
-                             o.cameraTurnRate,
-                             range > 0.0 ? std::optional(range) : std::nullopt,
-                             imaged ? std::optional<double>(o.imageWidth) : std::nullopt});
+    scene::CameraEntry& camera = scene.cameras.emplace_back(scene::cameraEntry(
+        {mm(p.x), mm(p.y)}, std::round(p.yaw * 180.0 / std::numbers::pi * 100.0) / 100.0,
+        o.cameraSpeed, o.cameraTurnRate));
+    if (range > 0.0) camera[scene::CameraKeyId::sensingRange] = range;
+    if (imaged) camera[scene::CameraKeyId::imageWidth] = o.imageWidth;
   }
   if (imaged) {
     built.notes.push_back(fmt::format(

@@ -313,6 +313,11 @@ void bindEnvironment(py::module_& m) {
       "The smallest (cameras, targets, obstacles, vertices) an observation of the scene pads "
       "to.");
   m.def(
+      "camera_columns", [] { return environment::cameraColumns(); },
+      "The names of a camera slot's floats in an observation, in order: present, x, y, cos yaw, "
+      "sin yaw, the observed keys of a scene's cameras (maxVelocity, …, sensingRange), "
+      "coverage (docs/python.md).");
+  m.def(
       "observation_bounds",
       [](const std::vector<std::size_t>& sizes) {
         const EncodingSizes s = sizesFrom(sizes, "index");

@@ -126,10 +126,11 @@ void bindScene(py::module_& m) {
             return out;
           },
           "One dict per camera, as `camcov state` and the explorer show it, in the scene "
-          "file's keys and units: x, y (m), angle (initial yaw, degrees), maxVelocity (m/s), "
-          "maxAngularVelocity (rad/s), cameraFoV (the half-angle θ_j, degrees: the field of "
-          "view is 2θ_j wide) and, for a camera with a range, sensingRange (m). For radians "
-          "use initial_poses and half_fovs.")
+          "file's keys and units (the camera table, docs/scene-format.md): x, y (m), angle "
+          "(initial yaw, degrees), maxVelocity (m/s), maxAngularVelocity (rad/s), cameraFoV "
+          "(the half-angle θ_j, degrees: the field of view is 2θ_j wide) and, for a camera "
+          "that has them, sensingRange (m) and imageWidth (pixels). For radians use "
+          "initial_poses and half_fovs.")
       .def_property_readonly(
           "initial_poses",
           [](const PythonScene& s) {

@@ -2,6 +2,8 @@
 // given as numpy arrays, at one instant: the services the built-in methods use.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <mutex>
 #include <numbers>
 
@@ -9,6 +11,7 @@
 #include "python/numpy_arrays.h"
 #include "python/python_scene.h"
 #include "reward/reward_model.h"
+#include "scene/camera_keys.h"
 #include "scene/scene_validation.h"
 
 namespace camcov::python {
@@ -81,9 +84,33 @@ class Visibility {
   std::mutex mutex_;
 };
 
-// Lenses given by hand: one half-angle θ_j per camera and, optionally, one sensing range each
-// (metres; inf: unlimited).
-std::vector<scene::Lens> lensesFromArrays(const py::handle& halfFovs, const py::handle& ranges) {
+// The keyword of a sensing row of the camera table for hand-made lenses: its key in
+// snake_case, plural (sensingRange: sensing_ranges), one value per camera.
+std::string lensKeyword(const scene::CameraKey& row) {
+  std::string keyword;
+  for (const char* c = row.name; *c; ++c) {
+    if (std::isupper(static_cast<unsigned char>(*c))) keyword += '_';
+    keyword += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+  }
+  return keyword + "s";
+}
+
+// The sensing rows hand-made lenses take by keyword: all but θ, which `cameras` gives.
+bool byKeyword(const scene::CameraKey& row) {
+  return row.kind == scene::CameraKeyKind::sensing && row.id != scene::CameraKeyId::cameraFoV;
+}
+
+std::string lensKeywords() {
+  std::string names;
+  for (const scene::CameraKey& row : scene::kCameraKeys)
+    if (byKeyword(row)) names += (names.empty() ? "" : ", ") + lensKeyword(row);
+  return names;
+}
+
+// Lenses given by hand: one half-angle θ_j per camera and, optionally, per sensing key of the
+// camera table one value each in the scene file's units (sensing_ranges: metres; the value of a
+// camera without the property, e.g. inf, leaves it off).
+std::vector<scene::Lens> lensesFromArrays(const py::handle& halfFovs, const py::kwargs& keys) {
   const Array thetas = Array::ensure(halfFovs);
   if (!thetas || thetas.ndim() != 1 || thetas.shape(0) == 0)
     throw py::value_error(
@@ -94,40 +121,55 @@ std::vector<scene::Lens> lensesFromArrays(const py::handle& halfFovs, const py::
     throw py::value_error(
         fmt::format("cameras: {} cameras; at most {}", count, scene::kMaxCameras));
   }
-  std::vector<scene::Lens> lenses;
+  std::vector<scene::CameraSpec> cameras;
   for (const double theta : valuesFromArray(thetas, count, "cameras")) {
     if (!(theta > 0.0 && theta < std::numbers::pi)) {
       throw py::value_error(fmt::format("cameras: θ_{} = {} rad: a half-angle must lie in (0, π)",
-                                        lenses.size(), theta));
+                                        cameras.size(), theta));
     }
-    lenses.emplace_back(theta);
+    cameras.push_back(scene::cameraWithoutOptions());
+    cameras.back().lens.halfFov = theta;
   }
-  if (ranges.is_none()) return lenses;
-  const Array r = Array::ensure(ranges);
-  if (!r || r.ndim() != 1 || static_cast<std::size_t>(r.shape(0)) != count)
-    throw py::value_error(fmt::format("sensing_ranges: expected {} ranges (metres)", count));
-  for (std::size_t j = 0; j < count; ++j) {
-    const double metres = r.data()[j];
-    // NaN fails the comparison; +inf is the unlimited range.
-    if (!(metres > 0.0)) {
-      throw py::value_error(fmt::format(
-          "sensing_ranges: camera {}'s range {} m must be positive (inf: unlimited)", j, metres));
+  for (const auto& [key, values] : keys) {
+    const auto keyword = key.cast<std::string>();
+    const auto row = std::find_if(
+        scene::kCameraKeys.begin(), scene::kCameraKeys.end(),
+        [&](const scene::CameraKey& r) { return byKeyword(r) && lensKeyword(r) == keyword; });
+    if (row == scene::kCameraKeys.end()) {
+      throw py::type_error(fmt::format("Visibility: unexpected keyword {}; a lens takes {}",
+                                       keyword, lensKeywords()));
     }
-    lenses[j].range = metres;
+    const Array a = Array::ensure(values);
+    if (!a || a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != count) {
+      throw py::value_error(
+          fmt::format("{}: expected {} values, one per camera ({})", keyword, count, row->unit));
+    }
+    for (std::size_t j = 0; j < count; ++j) {
+      const double v = a.data()[j];
+      if (v == row->absent) continue;
+      if (const auto problem = row->problem(v))
+        throw py::value_error(fmt::format("{}: camera {}: {}", keyword, j, *problem));
+      row->set(cameras[j], row->fromFile(v));
+    }
   }
+  std::vector<scene::Lens> lenses;
+  for (const scene::CameraSpec& c : cameras)
+    lenses.push_back(c.lens);
   return lenses;
 }
 
 std::unique_ptr<Visibility> makeVisibility(const kinematics::World& world,
                                            const py::handle& cameras, const py::handle& values,
-                                           const py::handle& ranges) {
+                                           const py::kwargs& keys) {
   if (py::isinstance<PythonScene>(cameras)) {
-    if (!ranges.is_none())
-      throw py::value_error("sensing_ranges: a scene's cameras bring their own ranges");
+    if (!keys.empty()) {
+      throw py::value_error(fmt::format("{}: a scene's cameras bring their own lenses",
+                                        py::str(keys.begin()->first).cast<std::string>()));
+    }
     return std::make_unique<Visibility>(
         world, scene::lenses(cameras.cast<const PythonScene&>().scene), parametersFrom(values));
   }
-  return std::make_unique<Visibility>(world, lensesFromArrays(cameras, ranges),
+  return std::make_unique<Visibility>(world, lensesFromArrays(cameras, keys),
                                       parametersFrom(values));
 }
 
@@ -159,11 +201,12 @@ void bindVisibility(py::module_& m) {
                          "(each camera's lens: half-angle θ_j and sensing range) or lenses given "
                          "by hand.")
       .def(py::init(&makeVisibility), py::arg("world"), py::arg("cameras"),
-           py::arg("params") = py::none(), py::arg("sensing_ranges") = py::none(),
-           "Visibility(world, cameras, params=None, sensing_ranges=None): the world (a "
-           "camcov.World); the cameras' lenses: a camcov.Scene (its cameras', sensing ranges "
-           "included), or one half-angle θ_j in radians per camera, with sensing_ranges one "
-           "range each in metres (inf or leave out: unlimited); and parameters "
+           py::arg("params") = py::none(),
+           "Visibility(world, cameras, params=None, **lens): the world (a camcov.World); the "
+           "cameras' lenses: a camcov.Scene (its cameras', sensing ranges included), or one "
+           "half-angle θ_j in radians per camera, with one array per further sensing key of a "
+           "scene's cameras in the file's units (sensing_ranges: metres, inf or leave out: "
+           "unlimited; image_widths: pixels, 0: no image model); and parameters "
            "({'reward.lambda1': ...}, as camcov.parameters takes them) for the reward's "
            "weights.")
       .def(

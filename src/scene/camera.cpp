@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/ring.h"
-#include "scene/scene_writer.h"
+#include "scene/camera_keys.h"
 
 namespace camcov::scene {
 
@@ -48,14 +48,9 @@ geometry::Pose moved(const geometry::Pose& pose, const CameraCommand& u, double 
 }
 
 nlohmann::json describeCamera(const CameraSpec& camera) {
-  nlohmann::json j{{"x", camera.initial.x},
-                   {"y", camera.initial.y},
-                   {"angle", writtenDegrees(camera.initial.yaw)},
-                   {"maxVelocity", camera.maxVelocity},
-                   {"maxAngularVelocity", camera.maxAngularVelocity},
-                   {"cameraFoV", writtenDegrees(camera.lens.halfFov)}};
-  if (camera.lens.limited()) j["sensingRange"] = camera.lens.range;
-  if (camera.lens.hasImage()) j["imageWidth"] = camera.lens.imageWidth;
+  nlohmann::json j{{"x", camera.initial.x}, {"y", camera.initial.y}};
+  for (const CameraKey& row : kCameraKeys)
+    if (row.carried(camera)) j[row.name] = row.toFile(row.get(camera));
   return j;
 }
 

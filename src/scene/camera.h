@@ -95,10 +95,10 @@ struct CameraSpec {
 };
 
 // A camera as every output shows it (`camcov state`, the explorer's camera panel, Python's
-// `Scene.cameras`), in the scene file's keys and units: x and y (m), angle (yaw, degrees),
-// maxVelocity, maxAngularVelocity, cameraFoV (θ, degrees) and, for a limited lens,
-// sensingRange (m), for a camera with an image model imageWidth (pixels). One description, so a
-// property added to the camera is shown everywhere by adding it here.
+// `Scene.cameras`), in the scene file's keys and units: x and y (m), then every key of the
+// camera table (camera_keys.h) that the camera carries — angle (yaw, degrees), maxVelocity,
+// maxAngularVelocity, cameraFoV (θ, degrees), a limited lens's sensingRange (m), an image
+// model's imageWidth (pixels). A property added to the table is shown everywhere.
 nlohmann::json describeCamera(const CameraSpec& camera);
 
 // One Euler step of ṗ = u over dt, the yaw wrapped to [-π, π].

@@ -1159,7 +1159,7 @@ nlohmann::json familySceneJson(const SceneFamily& f, std::uint64_t seed, const D
       scene.obstacles.push_back(movingObject(o));
   }
   for (const Camera& c : d.cameras)
-    scene.cameras.push_back({c.position, c.yawDeg, d.cameraSpeed, d.turnRate, {}, {}});
+    scene.cameras.push_back(cameraEntry(c.position, c.yawDeg, d.cameraSpeed, d.turnRate));
   return sceneJson(scene);
 }
 

@@ -235,12 +235,8 @@ nlohmann::json generateScene(const GeneratorOptions& o) {
       p = {mm(cameraRandom.uniform(-px, px)), mm(cameraRandom.uniform(-py, py))};
     } while (taken(p));
     cameras.push_back(p);
-    scene.cameras.push_back({p,
-                             std::round(cameraRandom.uniform(0.0, 36000.0)) / 100.0,
-                             o.cameraSpeed,
-                             o.cameraTurnRate,
-                             {},
-                             {}});
+    scene.cameras.push_back(cameraEntry(p, std::round(cameraRandom.uniform(0.0, 36000.0)) / 100.0,
+                                        o.cameraSpeed, o.cameraTurnRate));
   }
   return sceneJson(scene);
 }

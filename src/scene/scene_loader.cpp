@@ -8,7 +8,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <span>
 
+#include "scene/camera_keys.h"
 #include "scene/motion_containment.h"
 #include "scene/path_forms.h"
 #include "scene/read_text.h"
@@ -48,6 +50,9 @@ class Node {
   }
 
   const json& object(std::initializer_list<const char*> allowedKeys) const {
+    return object(std::span(allowedKeys.begin(), allowedKeys.end()));
+  }
+  const json& object(std::span<const char* const> allowedKeys) const {
     if (!value_.is_object()) fail("expected an object, found " + typeName());
     // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
     for (const auto& item : value_.items()) {
@@ -404,37 +409,12 @@ std::vector<MovingObject> objects(const Node& node, Problems& problems, bool isT
   return result;
 }
 
-// θ in radians from a half-angle in degrees.
-double halfFov(const Node& node) {
-  const double degrees = node.number();
-  if (degrees <= 0.0 || degrees >= 180.0)
-    node.fail(
-        fmt::format("the half-angle θ of the field of view must be in (0, 180) degrees "
-                    "(the field of view is 2θ wide), is {}°",
-                    degrees));
-  return geometry::degToRad(degrees);
-}
-
-// A camera's sensing range r_j in metres (our extension): positive and finite. Without the
-// key the camera sees without limit, as the paper's do.
-double sensingRange(const Node& node) {
-  const double r = positive(node, "sensingRange", "m");
-  if (!std::isfinite(r))
-    node.fail(
-        fmt::format("sensingRange must be finite, is {} m; leave the key out for a camera "
-                    "that sees without limit",
-                    r));
-  return r;
-}
-
-// A camera's image width W_j in pixels (our extension, for resolution-aware coverage): a whole
-// number from 1 to kMaxImageWidth.
-double imageWidth(const Node& node) {
-  const double w = positive(node, "imageWidth", "pixels");
-  if (w != std::floor(w) || w > kMaxImageWidth)
-    node.fail(fmt::format("imageWidth must be a whole number of pixels from 1 to {}, is {}",
-                          readableNumber(kMaxImageWidth), readableNumber(w)));
-  return w;
+// The value of a camera table row (camera_keys.h) in memory (radians for the file's degrees),
+// within the row's limits.
+double cameraKeyValue(const Node& node, const CameraKey& row) {
+  const double v = node.number();
+  if (const auto problem = row.problem(v)) node.fail(*problem);
+  return row.fromFile(v);
 }
 
 // What a scene asks of its images: {"minDensity": ρ_min in pixels per metre, "proportional":
@@ -452,21 +432,17 @@ ResolutionRequirement resolutionRequirement(const Node& node) {
   return requirement;
 }
 
-// `sceneLens` is the scene's "cameraFoV" and "imageWidth", which a camera's own keys override.
-CameraSpec camera(const Node& node, const Lens& sceneLens) {
-  node.object({"pos", "angle", "maxVelocity", "maxAngularVelocity", "cameraFoV", "sensingRange",
-               "imageWidth"});
-  CameraSpec camera;
-  camera.lens = sceneLens;
-  if (node.has("cameraFoV")) camera.lens.halfFov = halfFov(node.child("cameraFoV"));
-  if (node.has("sensingRange")) camera.lens.range = sensingRange(node.child("sensingRange"));
-  if (node.has("imageWidth")) camera.lens.imageWidth = imageWidth(node.child("imageWidth"));
-  const geometry::Vec2 pos = node.child("pos").wktPoint();
-  const double yawDegrees = node.child("angle").number();
-  camera.initial = {pos.x, pos.y, geometry::wrapAngle(geometry::degToRad(yawDegrees))};
-  camera.maxVelocity = positiveSpeed(node.child("maxVelocity"), "maxVelocity", "m/s");
-  camera.maxAngularVelocity =
-      positiveSpeed(node.child("maxAngularVelocity"), "maxAngularVelocity", "rad/s");
+// `sceneCamera` holds the scene's values of the keys a camera may take from it ("cameraFoV",
+// "imageWidth"), which the camera's own keys override.
+CameraSpec camera(const Node& node, const CameraSpec& sceneCamera) {
+  node.object(cameraEntryKeys());
+  CameraSpec camera = sceneCamera;
+  const geometry::Vec2 pos = node.child(kCameraPositionKey).wktPoint();
+  camera.initial.x = pos.x;
+  camera.initial.y = pos.y;
+  for (const CameraKey& row : kCameraKeys)
+    if (node.has(row.name) || !row.optional())
+      row.set(camera, cameraKeyValue(node.child(row.name), row));
   return camera;
 }
 
@@ -482,8 +458,12 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     throw SceneError(sourceName, "", e.what());
   }
   const Node root(document, "", sourceName);
-  root.object({"boundary", "targets", "obstacles", "cameraFoV", "cameras", "description", "family",
-               "pitch", "duration", "imageWidth", "resolution", "knowledge", "comms"});
+  std::vector<const char*> rootKeys{"boundary",    "targets",   "obstacles", "cameras",
+                                    "description", "family",    "pitch",     "duration",
+                                    "resolution",  "knowledge", "comms"};
+  for (const CameraKey& row : kCameraKeys)
+    if (row.atSceneLevel()) rootKeys.push_back(row.name);
+  root.object(rootKeys);
 
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -543,13 +523,17 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
     if (root.has("obstacles")) scene.obstacles = objects(root.child("obstacles"), problems, false);
   });
 
-  // A camera without its own field of view or image width takes the scene's; if that is bad,
-  // the cameras are still read (with any valid one) for their own problems.
-  Lens sceneLens(geometry::degToRad(30.0));
-  problems.attempt([&] { sceneLens.halfFov = halfFov(root.child("cameraFoV")); });
-  problems.attempt([&] {
-    if (root.has("imageWidth")) sceneLens.imageWidth = imageWidth(root.child("imageWidth"));
-  });
+  // A camera without its own field of view or image width (the table's keys with a scene-level
+  // fallback) takes the scene's; if that is bad, the cameras are still read for their own
+  // problems.
+  CameraSpec sceneCamera = cameraWithoutOptions();
+  for (const CameraKey& row : kCameraKeys) {
+    if (!row.atSceneLevel()) continue;
+    problems.attempt([&] {
+      if (root.has(row.name) || row.fallback == CameraKeyFallback::scene)
+        row.set(sceneCamera, cameraKeyValue(root.child(row.name), row));
+    });
+  }
   problems.attempt([&] {
     if (root.has("resolution")) scene.resolution = resolutionRequirement(root.child("resolution"));
   });
@@ -563,7 +547,7 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName) {
                    std::to_string(cameraCount));
     }
     for (std::size_t i = 0; i < cameraCount; ++i)
-      problems.attempt([&] { scene.cameras.push_back(camera(cameras.element(i), sceneLens)); });
+      problems.attempt([&] { scene.cameras.push_back(camera(cameras.element(i), sceneCamera)); });
   });
   // An image model and a requirement go together: either alone would say nothing.
   problems.attempt([&] {

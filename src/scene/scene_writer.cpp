@@ -51,13 +51,19 @@ nlohmann::json objectJson(const MovingObject& object) {
   return j;
 }
 
+CameraEntry cameraEntry(geometry::Vec2 position, double yawDegrees, double maxVelocity,
+                        double maxAngularVelocity) {
+  CameraEntry entry{position, {}};
+  entry[CameraKeyId::angle] = yawDegrees;
+  entry[CameraKeyId::maxVelocity] = maxVelocity;
+  entry[CameraKeyId::maxAngularVelocity] = maxAngularVelocity;
+  return entry;
+}
+
 nlohmann::json cameraJson(const CameraEntry& camera) {
-  nlohmann::json j{{"pos", wktPoint(camera.position)},
-                   {"angle", camera.yawDegrees},
-                   {"maxVelocity", camera.maxVelocity},
-                   {"maxAngularVelocity", camera.maxAngularVelocity}};
-  if (camera.sensingRange) j["sensingRange"] = *camera.sensingRange;
-  if (camera.imageWidth) j["imageWidth"] = *camera.imageWidth;
+  nlohmann::json j{{kCameraPositionKey, wktPoint(camera.position)}};
+  for (const CameraKey& row : kCameraKeys)
+    if (camera[row.id]) j[row.name] = *camera[row.id];
   return j;
 }
 

@@ -4,6 +4,7 @@
 // are written open, as the published files write them; numbers as the shortest text that reads
 // back to the same double. Values are in the file's units: metres, seconds, m/s and rad/s,
 // but degrees for a camera's yaw and field of view (the published format's).
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -13,19 +14,26 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/vec2.h"
+#include "scene/camera_keys.h"
 #include "scene/scene.h"
 
 namespace camcov::scene {
 
-// A camera as a file gives it.
+// A camera as a file gives it: its position and, for each row of the camera table
+// (camera_keys.h), the value in the file's units (degrees for angles), written when given.
+// Without one a camera takes the scene's value or none (its fallback).
 struct CameraEntry {
   geometry::Vec2 position;
-  double yawDegrees = 0.0;
-  double maxVelocity = 0.0;            // m/s
-  double maxAngularVelocity = 0.0;     // rad/s
-  std::optional<double> sensingRange;  // m; none: sees without limit
-  std::optional<double> imageWidth;    // pixels across the field of view; none: no image model
+  std::array<std::optional<double>, kCameraKeys.size()> values;
+
+  std::optional<double>& operator[](CameraKeyId id) { return values[index(id)]; }
+  const std::optional<double>& operator[](CameraKeyId id) const { return values[index(id)]; }
 };
+
+// A camera with the keys every camera gives: where it starts, facing `yawDegrees`, and its
+// limits v_max (m/s) and γ̇_max (rad/s).
+CameraEntry cameraEntry(geometry::Vec2 position, double yawDegrees, double maxVelocity,
+                        double maxAngularVelocity);
 
 // What a written scene holds. Objects keep the in-memory form (MovingObject), whose units are
 // the file's; a track's headings, if any, are written in degrees.

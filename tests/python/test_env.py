@@ -385,6 +385,10 @@ def test_the_observation_is_the_documented_layout(tiny):
     assert camera[3:5] == pytest.approx([math.cos(pose[2]), math.sin(pose[2])], abs=1e-6)
     assert camera[5] == pytest.approx(scene.cameras[0]["maxVelocity"] / half)
     assert camera[7] == pytest.approx(scene.half_fovs[0])
+    # The names of the columns the lines above read, by the camera table's observed keys.
+    assert camcov.camera_columns() == ["present", "x", "y", "cos yaw", "sin yaw", "maxVelocity",
+                                       "maxAngularVelocity", "cameraFoV", "sensingRange",
+                                       "coverage"]
     target = observation[4 + 10 * cameras:][:5 + 2 * vertices]
     ring = world.targets[0]
     assert target[0] == 1 and target[4] == pytest.approx(len(ring) / vertices)

@@ -157,7 +157,17 @@ def test_bad_sensing_ranges_raise_value_errors(tiny):
     for bad in (-1.0, 0.0, float("nan")):
         with pytest.raises(ValueError, match="sensing_ranges: camera 0"):
             camcov.Visibility(world, [0.5], sensing_ranges=[bad])
-    with pytest.raises(ValueError, match="expected 1 ranges"):
+    with pytest.raises(ValueError, match="expected 1 values"):
         camcov.Visibility(world, [0.5], sensing_ranges=[1.0, 2.0])
     with pytest.raises(ValueError, match="bring their own"):
         camcov.Visibility(world, scene, sensing_ranges=[1.0])
+
+
+def test_hand_made_lenses_take_every_further_sensing_key_of_the_camera_table(tiny):
+    world = camcov.load_scene(tiny("tiny_static")).world_at(0.0)
+    pictured = camcov.Visibility(world, [0.5], image_widths=[640]).terms([[0.0, 0.0, 0.0]])
+    assert pictured == camcov.Visibility(world, [0.5], image_widths=[0]).terms([[0.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match="image_widths: camera 0: imageWidth must be a whole"):
+        camcov.Visibility(world, [0.5], image_widths=[640.5])
+    with pytest.raises(TypeError, match="a lens takes sensing_ranges, image_widths"):
+        camcov.Visibility(world, [0.5], min_ranges=[1.0])

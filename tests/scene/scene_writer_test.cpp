@@ -42,8 +42,8 @@ WrittenScene everyKind() {
   walking.track = Track{{0.0, 0.4, 0.8}, {{3, 4}, {3.5, 4}, {4, 4.25}}, {}};
   w.obstacles.push_back(walking);
   w.obstacles.push_back(still({{30, 2}, {32, 2}, {32, 4}, {30, 4}}, {0, 0}));
-  w.cameras.push_back({{1, 29}, -45.0, 1.5, 0.5, {}, {}});
-  w.cameras.push_back({{39, 1}, 135.0, 2.0, 1.0, {}, {}});
+  w.cameras.push_back(cameraEntry({1, 29}, -45.0, 1.5, 0.5));
+  w.cameras.push_back(cameraEntry({39, 1}, 135.0, 2.0, 1.0));
   return w;
 }
 
@@ -101,8 +101,8 @@ TEST(SceneWriter, ACameraModelReadsBackAsWritten) {
   WrittenScene w = everyKind();
   w.resolution = ResolutionRequirement{62.5, true};
   for (CameraEntry& c : w.cameras) {
-    c.sensingRange = 35.25;
-    c.imageWidth = 1920;
+    c[CameraKeyId::sensingRange] = 35.25;
+    c[CameraKeyId::imageWidth] = 1920;
   }
   const Scene s = parseScene(sceneJson(w).dump(), "camera_model.json");
   ASSERT_TRUE(s.resolution.has_value());
