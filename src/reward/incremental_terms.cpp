@@ -63,10 +63,10 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
       continue;
     }
     const auto seen = sweep.seenBy(occluders, j, cameras[j], lenses[j]);
-    if (j < kept) leave(static_cast<std::uint32_t>(j));
+    const bool samePlace = j < kept && geometry::sameBits(c.pose.position(), cameras[j].position());
     c.pose = cameras[j];
     c.lens = lenses[j];
-    see(occluders, static_cast<std::uint32_t>(j), seen);
+    see(occluders, static_cast<std::uint32_t>(j), seen, samePlace);
   }
   for (const std::uint32_t e : dirty_) {
     Edge& edge = edges_[e];
@@ -108,28 +108,75 @@ void IncrementalTerms::reset(const visibility::Occluders& occluders) {
 }
 
 void IncrementalTerms::see(const visibility::Occluders& occluders, std::uint32_t camera,
-                           std::span<const visibility::SeenInterval> seen) {
+                           std::span<const visibility::SeenInterval> seen, bool samePlace) {
   Camera& c = cameras_[camera];
-  c.seen.assign(seen.begin(), seen.end());
-  sortByEdge(c.seen);
+  nextSeen_.assign(seen.begin(), seen.end());
+  sortByEdge(nextSeen_);
+  const double angles = takeRuns(occluders, c, samePlace);
+  // Edge by edge, the camera's intervals before and after (both by edge): where they differ,
+  // the old ones out of the edge's list, the new ones in, and its union measured again.
+  const std::vector<visibility::SeenInterval>& before = c.seen;
+  const auto sameInterval = [](const visibility::SeenInterval& a,
+                               const visibility::SeenInterval& b) {
+    return geometry::sameBits(a.lo, b.lo) && geometry::sameBits(a.hi, b.hi);
+  };
+  std::size_t i = 0, k = 0;
+  while (i < before.size() || k < nextSeen_.size()) {
+    const std::uint32_t edge = k == nextSeen_.size() ? before[i].edge
+                               : i == before.size()  ? nextSeen_[k].edge
+                                                     : std::min(before[i].edge, nextSeen_[k].edge);
+    std::size_t i1 = i, k1 = k;
+    while (i1 < before.size() && before[i1].edge == edge)
+      ++i1;
+    while (k1 < nextSeen_.size() && nextSeen_[k1].edge == edge)
+      ++k1;
+    if (!std::equal(before.begin() + i, before.begin() + i1, nextSeen_.begin() + k,
+                    nextSeen_.begin() + k1, sameInterval)) {
+      auto& seenBy = edges_[edge].seenBy;  // kept by lo, for unionLength()
+      if (i1 > i)
+        std::erase_if(seenBy, [camera](const Interval& in) { return in.camera == camera; });
+      for (std::size_t n = k; n < k1; ++n) {
+        const auto at = std::upper_bound(seenBy.begin(), seenBy.end(), nextSeen_[n].lo,
+                                         [](double lo, const Interval& in) { return lo < in.lo; });
+        seenBy.insert(at, {camera, nextSeen_[n].lo, nextSeen_[n].hi});
+      }
+      markDirty(edge);
+    }
+    i = i1;
+    k = k1;
+  }
+  c.seen.swap(nextSeen_);
+  c.runs.swap(nextRuns_);
+  c.angles = angles;
+}
+
+double IncrementalTerms::takeRuns(const visibility::Occluders& occluders, const Camera& c,
+                                  bool samePlace) {
   // In the order of S, as utilization() adds them.
-  c.angles = 0.0;
+  nextRuns_.clear();
+  double angles = 0.0;
   const geometry::Vec2 p = c.pose.position();
+  std::size_t old = 0;  // the first kept run not before this one
   forEachRun(
-      std::span<const visibility::SeenInterval>(c.seen),
+      std::span<const visibility::SeenInterval>(nextSeen_),
       [](const visibility::SeenInterval& s) { return s.edge; },
       [&](std::uint32_t edge, double lo, double hi) {
         const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
         if (a == b) return;  // a repeated vertex: S has no segment there
-        c.angles += subtendedAngle(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi), p);
+        const auto& kept = c.runs;
+        while (old < kept.size() &&
+               (kept[old].edge < edge || (kept[old].edge == edge && kept[old].lo < lo)))
+          ++old;
+        const bool again = samePlace && old < kept.size() && kept[old].edge == edge &&
+                           geometry::sameBits(kept[old].lo, lo) &&
+                           geometry::sameBits(kept[old].hi, hi);
+        const double angle =
+            again ? kept[old].angle
+                  : subtendedAngle(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi), p);
+        nextRuns_.push_back({edge, lo, hi, angle});
+        angles += angle;
       });
-  for (const visibility::SeenInterval& s : c.seen) {
-    auto& seenBy = edges_[s.edge].seenBy;  // kept by lo, for unionLength()
-    const auto at = std::upper_bound(seenBy.begin(), seenBy.end(), s.lo,
-                                     [](double lo, const Interval& i) { return lo < i.lo; });
-    seenBy.insert(at, {camera, s.lo, s.hi});
-    markDirty(s.edge);
-  }
+  return angles;
 }
 
 void IncrementalTerms::leave(std::uint32_t camera) {
@@ -139,6 +186,7 @@ void IncrementalTerms::leave(std::uint32_t camera) {
     markDirty(s.edge);
   }
   cameras_[camera].seen.clear();
+  cameras_[camera].runs.clear();
   cameras_[camera].angles = 0.0;
 }
 

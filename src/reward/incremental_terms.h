@@ -11,12 +11,17 @@
 //    kept per edge in a fixed-point sum, which a changed edge updates exactly, O(1); and the
 //    same with each run's length times its edge's importance weight.
 // A call sweeps the cameras whose pose or θ changed (Sweep keeps their last sweeps), takes
-// their angles, and measures again the union of the edges their intervals leave or reach. The
+// their angles, and measures again the union of the edges where their intervals changed. The
 // terms are those of reward::coverage() and reward::utilization() on S, to the bit
 // (tests/reward/incremental_terms_test.cpp).
 //
+// A probe moves a camera a little: most edges it sees whole, before and after, and a camera
+// turned in place sees the same runs from the same point. So an edge whose intervals of the
+// moved camera are bit for bit the ones it had keeps its union (the same terms would give the
+// same sum), and a run seen again from the same position keeps its angle (the same atan2).
+//
 // Cost of a call where c cameras moved: their sweeps, O(k log k) for the k intervals they
-// see before and after, the union of the edges those touch, and O(M).
+// see before and after, the union of the edges where those differ, and O(M).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -52,11 +57,18 @@ class IncrementalTerms {
                  const Lengths& lengths);
 
  private:
+  // A run of one camera's intervals on an edge (as S joins its consecutive seen pieces), with
+  // the angle it subtends at the camera.
+  struct Run {
+    std::uint32_t edge;
+    double lo, hi, angle;
+  };
   struct Camera {
     geometry::Pose pose;
     scene::Lens lens;
     std::vector<visibility::SeenInterval> seen;  // by edge and along it
-    double angles = 0.0;                         // Σ subtendedAngle() over the runs of `seen`
+    std::vector<Run> runs;                       // of `seen`, in its order
+    double angles = 0.0;                         // Σ of the runs' angles, in their order
   };
   struct Interval {
     std::uint32_t camera;
@@ -73,8 +85,12 @@ class IncrementalTerms {
   };
 
   void reset(const visibility::Occluders& occluders);
+  // Camera `camera` (its pose and lens already set) now sees `seen`; `samePlace`: from the
+  // position of its kept runs.
   void see(const visibility::Occluders& occluders, std::uint32_t camera,
-           std::span<const visibility::SeenInterval> seen);
+           std::span<const visibility::SeenInterval> seen, bool samePlace);
+  // The runs of nextSeen_ into nextRuns_, and their angle sum.
+  double takeRuns(const visibility::Occluders& occluders, const Camera& c, bool samePlace);
   void leave(std::uint32_t camera);
   void markDirty(std::uint32_t edge);
   UnionLength unionLength(const visibility::Occluders& occluders, std::uint32_t edge,
@@ -87,6 +103,8 @@ class IncrementalTerms {
   FixedPointSum visible_;   // vis(S): Σ over edges of their union's length
   FixedPointSum weighted_;  // the same weighted
   std::vector<double> angles_;
+  std::vector<visibility::SeenInterval> nextSeen_;  // see()'s buffers
+  std::vector<Run> nextRuns_;
 };
 
 }  // namespace camcov::reward

@@ -86,6 +86,7 @@ void OcclusionCulling::run(const Occluders& occluders, Vec2 viewpoint, const Fie
   horizon2_.fill(std::numeric_limits<double>::infinity());
   horizonLowered_ = true;
   hidden_.assign(occluders.chains().size(), 1);
+  hiddenLeft_ = hidden_.size();
   kept_.clear();
 
   if (fov != nullptr) {  // out of view, counter-clockwise from the left ray to the right one
@@ -101,7 +102,7 @@ void OcclusionCulling::run(const Occluders& occluders, Vec2 viewpoint, const Fie
   const Cell centre = cellOf(p_);
   const int last = std::max({centre.x, columns_ - 1 - centre.x, centre.y, rows_ - 1 - centre.y});
   const double step = std::min(cellWidth_, cellHeight_);
-  for (int k = 0; k <= last; ++k) {
+  for (int k = 0; k <= last && hiddenLeft_ != 0; ++k) {
     const double nearest = (k - 1) * step - margin_;
     if (nearest > 0.0 && farthestHorizon2() < nearest * nearest) break;
     if (k == 0) {
@@ -143,6 +144,7 @@ void OcclusionCulling::visit(int x, int y) {
 void OcclusionCulling::keep(std::uint32_t c) {
   hidden_[c] = 0;
   kept_.push_back(c);
+  if (--hiddenLeft_ == 0) return;  // nothing left that a lower horizon could leave out
   const Chain& chain = occluders_->chains()[c];
   const geometry::Box& box = chain.box;
   const bool outside = p_.x < box.min.x - margin_ || p_.x > box.max.x + margin_ ||

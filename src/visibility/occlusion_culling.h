@@ -17,8 +17,10 @@
 //    strictly inside the piece's angular span crosses it, so beyond its farther end it is
 //    hidden.
 // Out of a camera's field of view every bin is hidden from the start. The walk stops once the
-// whole horizon is nearer than the next ring. So a chain left out has no point the viewpoint
-// sees, and the sweep of the kept chains meets the same front edge on every ray.
+// whole horizon is nearer than the next ring, or once every chain is kept (a scene of one large
+// object: its silhouette would lower a horizon that has nothing left to hide). So a chain left out
+// has no point the viewpoint sees, and the sweep of the kept chains meets the same front edge on
+// every ray.
 //
 // Conservative on purpose: bins are tested with two quanta of slack on each side, distances
 // with a margin of a few ε, and pieces whose line passes near the viewpoint lower nothing.
@@ -90,6 +92,7 @@ class OcclusionCulling {
   bool horizonLowered_ = true;            // since farthest2_ was taken
   double farthest2_ = 0.0;
   std::vector<std::uint8_t> hidden_;  // per chain: not kept (yet)
+  std::size_t hiddenLeft_ = 0;        // chains not kept yet: at 0 the horizon decides nothing
   std::vector<std::uint32_t> kept_;
 };
 

@@ -283,6 +283,7 @@ void PolarEdges::bucketSortByKey(std::vector<Event>& events, std::vector<Event>&
   // Keys now only fall out of order within a bucket (or, for a tiny few, anywhere): stable
   // insertion by key.
   for (std::size_t i = 1; i < events.size(); ++i) {
+    if (!(events[i].key < events[i - 1].key)) continue;  // in place: most are
     const Event e = events[i];
     std::size_t j = i;
     for (; j > 0 && e.key < events[j - 1].key; --j)

@@ -51,8 +51,12 @@ class PolarEdges {
     std::uint32_t ref;     // chain vertex (= the piece after), wedge, or field-of-view ray
     std::uint32_t before;  // for a vertex: the piece ending there
     EventKind kind;
-    std::uint8_t actions = 0;  // for a vertex: the k…Before / k…After flags
+    // For a vertex: the k…Before / k…After flags. Two bytes, so that an event fills its 16
+    // bytes with no padding and is copied as whole words (a 14-byte copy is two overlapping
+    // 8-byte moves, whose second load stalls on the first store in the sorts' inner loops).
+    std::uint16_t actions = 0;
   };
+  static_assert(sizeof(Event) == 16);
   // A polar edge: s comes first counter-clockwise around the viewpoint, so the viewpoint is
   // strictly left of s → e.
   struct Edge {

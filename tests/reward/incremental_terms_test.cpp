@@ -28,8 +28,8 @@ void expectSameBits(double expected, double actual, const char* what) {
       << what << ": " << expected << " made afresh, " << actual << " kept up to date";
 }
 
-// One of the optimizers' calls: a probe of one camera (ε away, or anywhere), the camera put
-// back, a camera placed or taken away at the end, one camera's θ changed.
+// One of the optimizers' calls: a probe of one camera (ε away, turned in place, or anywhere),
+// the camera put back, a camera placed or taken away at the end, one camera's θ changed.
 struct Caller {
   testing::SplitMix64 random;
   std::vector<Pose> team;
@@ -46,6 +46,9 @@ struct Caller {
       (random.uniform(0, 3) < 1   ? team[j].x
        : random.uniform(0, 2) < 1 ? team[j].y
                                   : team[j].yaw) += 1e-6;
+    } else if (what < 0.68) {
+      before = team;
+      team[j].yaw = random.uniform(-std::numbers::pi, std::numbers::pi);  // turned in place
     } else if (what < 0.8) {
       before = team;
       team[j] = randomPose(random);

@@ -5,6 +5,7 @@
 // and a long view down an aisle, so that the walk goes far.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -157,6 +158,35 @@ TEST(CulledSweep, ViewDownLongAislesMatchesTheWholeSweep) {
   culled.visibilityPolygon(occluders, {-195, -195}, gotPolygon);
   expectSamePolygon(gotPolygon, wantPolygon, 1e-9 * occluders.extent());
   EXPECT_EQ(culled.counts().culled, 2u);
+}
+
+// One round target of many vertices in a room: once the target is kept, culling has nothing
+// left to leave out and stops. What every camera sees is still the whole sweep's, to the bit.
+TEST(CulledSweep, OneLargeTargetIsSeenAsByTheWholeSweepToTheBit) {
+  Ring disc;
+  for (int k = 0; k < 3000; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 3000;
+    disc.push_back({1.0 + 4.0 * std::cos(a), -0.5 + 4.0 * std::sin(a)});
+  }
+  const Occluders occluders(camcov::testing::world(box(-15, -15, 15, 15), {disc}));
+  Sweep whole(kWhole), culled({0, 1.0});
+  testing::Random random(17);
+  for (int k = 0; k < 200; ++k) {
+    const geometry::Pose camera{random.uniform(-14.0, 14.0), random.uniform(-14.0, 14.0),
+                                random.uniform(-std::numbers::pi, std::numbers::pi)};
+    const scene::Lens lens{random.uniform(0.1, 3.0)};
+    const auto want = whole.seenBy(occluders, 0, camera, lens);
+    const std::vector<SeenInterval> kept(want.begin(), want.end());
+    const auto got = culled.seenBy(occluders, 0, camera, lens);
+    ASSERT_EQ(got.size(), kept.size()) << "camera " << k;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].edge, kept[i].edge);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(got[i].lo), std::bit_cast<std::uint64_t>(kept[i].lo));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(got[i].hi), std::bit_cast<std::uint64_t>(kept[i].hi));
+    }
+  }
+  EXPECT_EQ(culled.counts().culled, 200u);
+  EXPECT_EQ(culled.counts().chainsLeftOut, 0u);
 }
 
 }  // namespace
