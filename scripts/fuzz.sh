@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (in the sanitizer build, build-asan/: clang, ASan + UBSan) and
 # runs each one.
-# Usage: scripts/fuzz.sh [RUNS | SECONDSs]
+# Usage: scripts/fuzz.sh [RUNS | SECONDSs] [TARGET...]
 #   RUNS      inputs per target (default 30000), with a fixed seed: the same binary runs the
 #             same inputs, so a CI failure reproduces
 #   SECONDSs  e.g. 600s: run each target that long instead (exploratory, not reproducible)
+#   TARGET    only these (e.g. scene run_file: the targets a change touched); default: all
 # Targets: the scene loader, the visibility sweep, the three track importers, the run-file
 # reader (what report, video and explore read), the command
 # line's parser, weighted coverage on scenes the bytes choose, and the Python environments'
@@ -16,6 +17,7 @@
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 budget=${1:-30000}
+only=("${@:2}")
 case "$budget" in
   *s) limit=(-max_total_time="${budget%s}" -seed=0) ;;
   *) limit=(-runs="$budget" -seed=1) ;;
@@ -44,6 +46,7 @@ cp "$repo"/tests/fuzz/seeds/run_file/* "$corpus/run_file/"
 run() {
   local target=$1 log="$dir/fuzz_$1.log" code=0
   shift
+  if [ ${#only[@]} -gt 0 ] && [[ " ${only[*]} " != *" $target "* ]]; then return 0; fi
   echo "== fuzz_$target ${limit[*]}"
   "$dir/tests/fuzz/fuzz_$target" "$corpus/$target" "${limit[@]}" -timeout=20 -rss_limit_mb=4096 \
     -print_final_stats=1 -artifact_prefix="$dir/artifacts/$target-" "$@" >"$log" 2>&1 || code=$?
