@@ -21,8 +21,13 @@ DecentralizedController::DecentralizedController(const scene::Scene& scene,
       // The loops' own first global step waits one step to see whether anything moves.
       nextRegroupTime_(params.sim.dt + params.global.T1) {
   const std::vector<geometry::Pose> initial = scene::initialPoses(scene);
-  for (std::size_t j = 0; j < scene.cameras.size(); ++j)
-    loops_.push_back(makeLoop(j, neighbourhood(initial, j, neighbourhoodSize()), 0.0));
+  for (std::size_t j = 0; j < scene.cameras.size(); ++j) {
+    // With heardOnly, before any message a camera knows of no teammate to plan with.
+    loops_.push_back(makeLoop(j,
+                              heardOnly() ? neighbourhood(initial, j, neighbourhoodSize(), {})
+                                          : neighbourhood(initial, j, neighbourhoodSize()),
+                              0.0));
+  }
 }
 
 DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
@@ -53,6 +58,39 @@ void DecentralizedController::takeEvents(std::vector<ControlEvent>& out) {
   events_.clear();
 }
 
+void DecentralizedController::heardClaims(const OwnKnowledge& own, std::size_t j, double time) {
+  claims_.assign(scene_.cameras.size(), std::nullopt);
+  for (std::size_t i = 0; i < own.teammates.size(); ++i) {
+    const auto& heard = own.teammates[i];
+    if (i == j || !heard || !heard->goal || time - heard->sentAt > params_.camcov.claims) continue;
+    claims_[i] = Claim{*heard->goal, scene_.cameras[i].travelTime(heard->pose, *heard->goal)};
+  }
+}
+
+void DecentralizedController::yieldIfOutbid(std::size_t j, const geometry::Pose& pose,
+                                            double time) {
+  Loop& loop = loops_[j];
+  const auto goal = loop.controller->goal(loop.self);
+  if (!goal) return;
+  const Claim mine{*goal, scene_.cameras[j].travelTime(pose, *goal)};
+  for (std::size_t i = 0; i < claims_.size(); ++i) {
+    if (!claims_[i] ||
+        geometry::norm(claims_[i]->goal.position() - goal->position()) >= params_.reward.d2 ||
+        !outbids(claims_[i]->bid, i, mine, j)) {
+      continue;
+    }
+    events_.push_back({time,
+                       std::string(eventName(EventKind::Outbid)),
+                       static_cast<int>(j),
+                       fmt::format("camera {} claims its goal, {:.1f} s away against {:.1f} s", i,
+                                   claims_[i]->bid, mine.bid),
+                       {},
+                       {}});
+    loop.controller->giveUp(loop.self);
+    return;
+  }
+}
+
 void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
   // Neighbourhoods are chosen again when the loops' global steps are due (half a step of slack
@@ -77,8 +115,21 @@ void DecentralizedController::control(const Observation& observation,
     } else {
       believed_.assign(observation.cameras.begin(), observation.cameras.end());
     }
-    if (regroup) {
-      if (auto members = neighbourhood(believed_, j, size); members != loops_[j].members) {
+    // With heardOnly, the teammates it has heard of; it chooses again when it hears of one more.
+    scene::CameraSet heard;
+    std::size_t heardCount = 0;
+    if (heardOnly()) {
+      for (std::size_t i = 0; i < own->teammates.size(); ++i) {
+        if (i != j && own->teammates[i]) {
+          heard.insert(i);
+          ++heardCount;
+        }
+      }
+    }
+    if (regroup || heardCount != loops_[j].heard) {
+      auto members = heardOnly() ? neighbourhood(believed_, j, size, heard)
+                                 : neighbourhood(believed_, j, size);
+      if (members != loops_[j].members) {
         events_.push_back({observation.time,
                            std::string(eventName(EventKind::Neighbourhood)),
                            static_cast<int>(j),
@@ -90,8 +141,17 @@ void DecentralizedController::control(const Observation& observation,
         loops_[j].controller.reset();
         loops_[j] = makeLoop(j, std::move(members), observation.time);
       }
+      loops_[j].heard = heardCount;
     }
     Loop& loop = loops_[j];
+    if (own != nullptr && params_.camcov.claims > 0.0) {
+      heardClaims(*own, j, observation.time);
+      memberClaims_.clear();
+      for (std::size_t i : loop.members)
+        memberClaims_.push_back(claims_[i]);
+      loop.controller->setClaims(memberClaims_);
+      yieldIfOutbid(j, observation.cameras[j], observation.time);
+    }
     planned_.resize(loop.members.size());
     if (own == nullptr && !loop.scene) {
       // The whole team with the true world: the simulator's measurements serve as they are.

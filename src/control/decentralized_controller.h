@@ -16,6 +16,14 @@
 // neighbourhood changed starts a new loop for the new one (its global step runs at once and
 // judges the plan afresh), so each camera's work per step is bounded by N, not by the team.
 //
+// With camcov.claims = τ_c > 0 (docs/method.md, "Claims"), the goal a teammate last announced,
+// sent less than τ_c ago, is its claim on that spot, bid with its estimated travel time from
+// where it announced it: a camera's assignment gives a claimed spot to another camera only if
+// that one bids better (ties to the lower index), and a camera that hears a better claim on its
+// own goal gives it up and plans again at once. With camcov.heardOnly a camera plans with the
+// teammates it has heard of only (chosen again whenever it hears of one more), not with one
+// never heard believed where the scene starts it.
+//
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
@@ -47,6 +55,7 @@ class DecentralizedController final : public Controller {
     std::size_t self = 0;                       // j's place in members
     std::unique_ptr<const scene::Scene> scene;  // null: the whole scene's team
     std::unique_ptr<PaperController> controller;
+    std::size_t heard = 0;  // camcov.heardOnly: the teammates it had heard of when made
   };
   // Camera j's loop for `members`, whose first instant is at `start` (a fresh loop: it plans
   // anew, one step after its first instant as camcov does).
@@ -55,15 +64,24 @@ class DecentralizedController final : public Controller {
   std::size_t neighbourhoodSize() const {
     return static_cast<std::size_t>(std::max(1, params_.camcov.neighbours));
   }
+  // camcov.heardOnly under limited knowledge: a camera plans with the teammates it heard of.
+  bool heardOnly() const { return params_.camcov.heardOnly && params_.knowledge.limited; }
+  // The claims camera j has heard and still believes (camcov.claims), by scene camera.
+  void heardClaims(const OwnKnowledge& own, std::size_t j, double time);
+  // Camera j at `pose`, heading for its loop's goal: if a claim it heard outbids it there, it
+  // gives the goal up.
+  void yieldIfOutbid(std::size_t j, const geometry::Pose& pose, double time);
 
   const scene::Scene& scene_;
   params::Parameters params_;
   std::uint64_t seed_;
   std::vector<Loop> loops_;
-  double nextRegroupTime_;                     // when neighbourhoods are chosen again
-  std::vector<geometry::Pose> believed_;       // scratch: a camera's believedTeam
-  std::vector<geometry::Pose> memberPoses_;    // scratch: its neighbourhood's poses
-  std::vector<scene::CameraCommand> planned_;  // scratch: one loop's commands
+  double nextRegroupTime_;                          // when neighbourhoods are chosen again
+  std::vector<geometry::Pose> believed_;            // scratch: a camera's believedTeam
+  std::vector<geometry::Pose> memberPoses_;         // scratch: its neighbourhood's poses
+  std::vector<scene::CameraCommand> planned_;       // scratch: one loop's commands
+  std::vector<std::optional<Claim>> claims_;        // scratch: heardClaims, by scene camera
+  std::vector<std::optional<Claim>> memberClaims_;  // scratch: the same, by loop member
   std::vector<ControlEvent> events_;
 };
 

@@ -27,6 +27,10 @@ constexpr std::array kKinds{
                   "a controller's command is not finite: the camera holds still"},
     EventKindInfo{EventKind::Neighbourhood, "neighbourhood",
                   "camcov-dec: the teammates a camera plans with changed (its detail lists them)"},
+    EventKindInfo{
+        EventKind::Outbid, "outbid",
+        "camcov-dec: a teammate claims a camera's goal with a better bid (camcov.claims): "
+        "the camera gives it up and plans again"},
 };
 
 constexpr std::array kMarks{
@@ -73,6 +77,7 @@ EventMark markOf(const ControlEvent& event) {
     case EventKind::TargetAppears:
     case EventKind::TargetLeaves:
     case EventKind::Neighbourhood:
+    case EventKind::Outbid:  // the global step that follows marks where it goes instead
       return EventMark::None;
   }
   return EventMark::None;

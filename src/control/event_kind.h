@@ -25,6 +25,7 @@ enum class EventKind {
   TargetLeaves,        // a recorded target leaves it
   NonFiniteCommand,    // a controller's command is not a finite number: the camera holds
   Neighbourhood,       // camcov-dec: a camera plans with other teammates from now on
+  Outbid,              // camcov-dec: a teammate's better claim on its goal: it plans again
 };
 
 // How a timeline marks an event: the report's coverage plots and the explorer's timeline.

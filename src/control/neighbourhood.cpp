@@ -1,15 +1,21 @@
 #include "control/neighbourhood.h"
 
 #include <algorithm>
-#include <numeric>
 #include <utility>
 
 namespace camcov::control {
 
 std::vector<std::size_t> neighbourhood(std::span<const geometry::Pose> believed, std::size_t j,
                                        std::size_t size) {
-  std::vector<std::size_t> members(believed.size());
-  std::iota(members.begin(), members.end(), std::size_t{0});
+  return neighbourhood(believed, j, size, scene::CameraSet::firstCameras(believed.size()));
+}
+
+std::vector<std::size_t> neighbourhood(std::span<const geometry::Pose> believed, std::size_t j,
+                                       std::size_t size, const scene::CameraSet& among) {
+  std::vector<std::size_t> members;
+  for (std::size_t i = 0; i < believed.size(); ++i) {
+    if (i == j || among.contains(i)) members.push_back(i);
+  }
   if (members.size() <= size) return members;
   const geometry::Vec2 self = believed[j].position();
   // Nearest first, itself at distance 0 before any teammate at the same spot.

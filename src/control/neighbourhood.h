@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "scene/camera_set.h"
 #include "scene/scene.h"
 
 namespace camcov::control {
@@ -18,6 +19,9 @@ namespace camcov::control {
 // at most `size` cameras.
 std::vector<std::size_t> neighbourhood(std::span<const geometry::Pose> believed, std::size_t j,
                                        std::size_t size);
+// The same among j and the teammates in `among` only (camcov.heardOnly: those it has heard of).
+std::vector<std::size_t> neighbourhood(std::span<const geometry::Pose> believed, std::size_t j,
+                                       std::size_t size, const scene::CameraSet& among);
 
 // The scene as a neighbourhood plans in it: the room, the resolution required and the members'
 // cameras (in `members` order); no targets or obstacles, which a planner reads from what it

@@ -56,11 +56,20 @@ void PaperController::raise(double t, EventKind kind, int camera, std::string de
                      std::move(reason)});
 }
 
+void PaperController::giveUp(std::size_t j) {
+  executors_[j].stop();
+  globalNow_ = true;
+}
+
 std::vector<geometry::Pose> PaperController::committedTeam(
     std::span<const geometry::Pose> cameras) const {
   std::vector<geometry::Pose> team(cameras.begin(), cameras.end());
   for (std::size_t j = 0; j < team.size(); ++j) {
-    if (executors_[j].executing()) team[j] = executors_[j].goal();
+    if (const Claim* claim = claimOf(j)) {
+      team[j] = claim->goal;
+    } else if (executors_[j].executing()) {
+      team[j] = executors_[j].goal();
+    }
   }
   return team;
 }
@@ -101,12 +110,13 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   std::vector<geometry::Pose> kept = committedTeam(observation.cameras);
   scene::CameraSet idle;
   for (std::size_t j = 0; j < m; ++j) {
-    if (!executors_[j].executing()) idle.insert(j);
+    if (!executors_[j].executing() && claimOf(j) == nullptr) idle.insert(j);
   }
   double keptReward = model_.reward(kept);
   planners::TeamImprovement(model_, validity_, ours.refine).refineAll(kept, keptReward, idle);
 
-  const GoalAssignment assignment = assignGoals(scene_, observation.cameras, candidate);
+  const GoalAssignment assignment =
+      assignGoals(scene_, observation.cameras, candidate, claims_, params_.reward.d2);
   std::vector<geometry::Pose> goals(m);
   for (std::size_t j = 0; j < m; ++j)
     goals[j] = candidate[assignment.goalOf[j]];
@@ -118,9 +128,14 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
   for (std::size_t j = 0; j < m; ++j) {
     const auto& camera = scene_.cameras[j];
     const geometry::Pose& now = observation.cameras[j];
-    goPaths[j] = routes[j] ? routes[j]->poses : std::vector<geometry::Pose>{now};
-    keepPaths[j] = executors_[j].executing() ? executors_[j].pathLeft(now)
-                                             : std::vector<geometry::Pose>{now, kept[j]};
+    keepPaths[j] = executors_[j].executing() && claimOf(j) == nullptr
+                       ? executors_[j].pathLeft(now)
+                       : std::vector<geometry::Pose>{now, kept[j]};
+    // camcov-dec: a teammate that claimed a goal goes there whatever this camera decides, so
+    // the candidate is judged with it doing so.
+    goPaths[j] = claimOf(j) != nullptr ? keepPaths[j]
+                 : routes[j]           ? routes[j]->poses
+                                       : std::vector<geometry::Pose>{now};
     goTravel[j] = pathTravelTime(goPaths[j], camera);
     keepTravel[j] = pathTravelTime(keepPaths[j], camera);
     longest = std::max(longest, goTravel[j]);
@@ -282,8 +297,10 @@ void PaperController::control(const Observation& observation,
   if (ours()) moving_ = motion_.see(observation.world);
   const double t = observation.time;
   // Global optimization at t = 0 and every T1 (half a step of slack against rounding).
-  if (t + 0.5 * params_.sim.dt >= nextGlobalTime_) {
-    nextGlobalTime_ += params_.global.T1;
+  const bool due = t + 0.5 * params_.sim.dt >= nextGlobalTime_;
+  if (due) nextGlobalTime_ += params_.global.T1;
+  if (due || globalNow_) {
+    globalNow_ = false;
     globalOptimization(observation);
   }
   refineGoals(observation);

@@ -53,6 +53,15 @@ class PaperController final : public Controller {
   std::optional<geometry::Pose> goal(std::size_t camera) const override;
   void takeEvents(std::vector<ControlEvent>& out) override;
 
+  // camcov-dec: the teammates' claims on goals (goal_assignment.h), by camera of this
+  // controller's team, for the assignments of its global steps from now on. A claimed goal is
+  // also where the team is committed to have that teammate (the committed configuration is the
+  // claim, not the plan this controller made for it, which the teammate never heard of).
+  void setClaims(std::vector<std::optional<Claim>> claims) { claims_ = std::move(claims); }
+  // camcov-dec: camera j, outbid for its goal, gives it up: it stops following its plan, and
+  // the global step runs at the next instant (its period unchanged) to give it another.
+  void giveUp(std::size_t j);
+
   // Does `candidate` beat `current` by the factor τ? For a non-positive current reward any
   // increase counts (τ·current would otherwise lower the bar).
   static bool improves(double candidate, double current, double tau);
@@ -88,6 +97,10 @@ class PaperController final : public Controller {
   void raise(double t, EventKind kind, int camera, std::string detail,
              std::vector<geometry::Pose> path = {}, std::string reason = {});
   std::vector<geometry::Pose> committedTeam(std::span<const geometry::Pose> cameras) const;
+  // camcov-dec: camera j's claim, if a teammate's was heard (setClaims).
+  const Claim* claimOf(std::size_t j) const {
+    return j < claims_.size() && claims_[j] ? &*claims_[j] : nullptr;
+  }
 
   const scene::Scene& scene_;
   params::Parameters params_;
@@ -106,6 +119,8 @@ class PaperController final : public Controller {
   // The last planning event's roadmap each camera queries (shared by cameras of equal θ).
   std::vector<std::shared_ptr<planners::Roadmap>> roadmapOf_;
   double nextGlobalTime_ = 0.0;
+  bool globalNow_ = false;                    // camcov-dec: a camera gave up its goal
+  std::vector<std::optional<Claim>> claims_;  // camcov-dec: empty, or one per camera
   std::vector<ControlEvent> events_;
 };
 

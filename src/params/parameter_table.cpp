@@ -45,10 +45,12 @@ constexpr bool knowledgeIsLimited(const Parameters& p) {
   return p.knowledge.limited;
 }
 
-// camcov-dec's neighbourhood is written only where it is not the default (which binds only on
-// teams larger than any published or family scene), so that runs keep their bytes.
-constexpr bool neighboursChanged(const Parameters& p) {
-  return p.camcov.neighbours != CamcovParams{}.neighbours;
+// camcov-dec's own options are written only where they are not the default (the neighbourhood
+// binds only on teams larger than any published or family scene; claims and heardOnly only under
+// limited knowledge), so that runs keep their bytes.
+template <auto Field>
+constexpr bool camcovChanged(const Parameters& p) {
+  return p.camcov.*Field != CamcovParams{}.*Field;
 }
 
 constexpr std::array kTable{
@@ -181,7 +183,19 @@ constexpr std::array kTable{
         "camcov.neighbours", "N", "cameras",
         "camcov-dec: a camera plans for itself and at most N - 1 teammates, the nearest it "
         "believes in, chosen again every T1; a team of at most N plans as one",
-        1, 1e6, false, neighboursChanged),
+        1, 1e6, false, camcovChanged<&CamcovParams::neighbours>),
+    row<&P::camcov, &CamcovParams::claims>(
+        "camcov.claims", "", "s",
+        "camcov-dec: a teammate's announced goal is its claim on that spot (within d2) for this "
+        "long after it was sent; the assignment gives a claimed spot to another camera only if "
+        "that camera's estimated travel time to it is shorter (ties to the lower index), and a "
+        "camera outbid on its goal gives it up and plans again; 0: no claims",
+        0, kInf, true, camcovChanged<&CamcovParams::claims>),
+    row<&P::camcov, &CamcovParams::heardOnly>(
+        "camcov.heardOnly", "", "",
+        "camcov-dec: a camera plans with itself and the teammates it has heard of only, chosen "
+        "again every T1; false: a teammate never heard is believed where the scene starts it",
+        0, 1, false, camcovChanged<&CamcovParams::heardOnly>),
     row<&P::knowledge, &KnowledgeParams::limited>(
         "knowledge.limited", "", "",
         "our extension: a camera knows a target or obstacle only as it last saw it or was told "

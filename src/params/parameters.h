@@ -107,6 +107,13 @@ struct CamcovParams {
   // in (control/neighbourhood.h), so that its work is bounded by its neighbourhood, not by the
   // team. A team of at most N plans as one, as camcov does.
   int neighbours = 8;
+  // camcov-dec: a teammate's announced goal is its claim on that spot for this long after it was
+  // sent, s; a claimed spot goes to another camera only if that camera bids better (control/
+  // goal_assignment.h), and a camera outbid on its goal gives it up. 0: no claims.
+  double claims = 0.0;
+  // camcov-dec: a camera plans with the teammates it has heard of only, not with one never heard
+  // believed where the scene starts it.
+  bool heardOnly = false;
 };
 
 // What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every

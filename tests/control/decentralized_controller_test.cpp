@@ -217,6 +217,40 @@ TEST(DecentralizedController, ACameraThatKnowsNoTargetLooksRoundForOne) {
   EXPECT_GT(r->summary.finalCoverage, 0.0);
 }
 
+TEST(DecentralizedController, AClaimNobodyHearsChangesNothing) {
+  // camcov.claims: a teammate's goal is a claim only where its message arrives. Out of range
+  // (no messages at all) or lost, every command is the same bits as without claims.
+  const scene::Scene scene = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))"));
+  for (const auto& [range, loss] : {std::pair{0.0, 0.0}, std::pair{kInf, 1.0}}) {
+    SCOPED_TRACE(range);
+    params::Parameters p = limited(range, loss);
+    const auto without = run(scene, p, 4);
+    p.camcov.claims = 5.0;
+    const auto with = run(scene, p, 4);
+    EXPECT_EQ(with->recorded.of(0), without->recorded.of(0));
+    EXPECT_EQ(with->recorded.of(1), without->recorded.of(1));
+    EXPECT_EQ(with->recorded.events, without->recorded.events);
+  }
+}
+
+TEST(DecentralizedController, WithHeardOnlyACameraThatHearsNobodyPlansAlone) {
+  // camcov.heardOnly: a teammate never heard is left out instead of believed at its start, so
+  // without messages each camera plans as it does in a neighbourhood of itself alone.
+  const scene::Scene scene = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))"));
+  params::Parameters alone = limited(0.0);
+  alone.sim.duration = 11.0;  // three global steps
+  alone.camcov.neighbours = 1;
+  params::Parameters heardOnly = limited(0.0);
+  heardOnly.sim.duration = 11.0;
+  heardOnly.camcov.heardOnly = true;
+  const auto a = run(scene, alone, 5), b = run(scene, heardOnly, 5);
+  EXPECT_EQ(b->recorded.of(0), a->recorded.of(0));
+  EXPECT_EQ(b->recorded.of(1), a->recorded.of(1));
+  // Believing camera 1 at its start changes camera 0's plan (the check can fail).
+  heardOnly.camcov.heardOnly = false;
+  EXPECT_NE(run(scene, heardOnly, 5)->recorded.of(0), a->recorded.of(0));
+}
+
 // The published scenes with messages that reach everyone (`range` inf), or few of them.
 void runEveryPublishedScene(const params::Parameters& p) {
   CAMCOV_REQUIRE_PUBLISHED_SCENES();
