@@ -57,6 +57,17 @@ def camcov_environment(root):
     return env
 
 
+def compiler_cache():
+    """Where ccache keeps the clone's objects (scripts/build.sh compiles through it where it is
+    installed), found before HOME moves: a reader's second tree shares their one cache, and so
+    the copy below builds from the clone's objects rather than from nothing."""
+    if shutil.which("ccache") is None:
+        return None
+    found = subprocess.run(["ccache", "--get-config", "cache_dir"], capture_output=True,
+                           text=True)
+    return found.stdout.strip() if found.returncode == 0 and found.stdout.strip() else None
+
+
 def copy_of_the_clone(to):
     """The clone as its reader has it: its files, without build folders or what runs wrote."""
     outputs = {".git", "bench-results", "results", "out", "tour", "__pycache__"}
@@ -153,6 +164,8 @@ def test_the_tutorial_runs_as_written():
         (clone / "examples" / "hold_still_controller.cpp").write_text(SECOND_METHOD)
         body = next(body for _, marker, body in blocks(text) if marker == "after-build")
         built = dict(env)  # as step 0 has it: the clone's camcov first on PATH
+        if cache := compiler_cache():
+            built["CCACHE_DIR"] = cache
         built["PATH"] = os.pathsep.join([str(clone / "build" / "src" / "cli"), env["PATH"]])
         done = subprocess.run(["bash", "-euo", "pipefail", "-c", body], cwd=clone, env=built,
                               capture_output=True, text=True, timeout=3600)
