@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <fstream>
 #include <limits>
+#include <string_view>
 
 #include "records/json_numbers.h"
 #include "records/known_keys.h"
@@ -33,15 +35,20 @@ nlohmann::json comparisonJson(const Comparison& c) {
   return j;
 }
 
-// `pair`: an entry of "pairs", the one place a comparison names what it is compared with.
+// A comparison's keys; an entry of "pairs" also names what it is compared with.
+constexpr std::array<std::string_view, 9> kComparisonKeys{"scene",      "method",
+                                                          "winner",     "pValue",
+                                                          "exactTest",  "meanCoverageDifference",
+                                                          "a12",        "meanCoverageDifferenceCI",
+                                                          "seedsNeeded"};
+constexpr std::array<std::string_view, 1> kPairKeys{"against"};
+
 Comparison comparisonFrom(const nlohmann::json& c, bool pair, const std::string& source) {
-  const std::string_view where = pair ? "pairs[]" : "comparisons[]";
-  requireKnownKeys(c,
-                   {"scene", "method", "winner", "pValue", "exactTest", "meanCoverageDifference",
-                    "a12", "meanCoverageDifferenceCI", "seedsNeeded", "against"},
-                   where, source);
-  if (!pair && c.contains("against"))
-    throw InputError(fmt::format("{}: {}: unknown key \"against\"", source, where));
+  if (pair) {
+    requireKnownKeys(c, {kComparisonKeys, kPairKeys}, "pairs[]", source);
+  } else {
+    requireKnownKeys(c, {kComparisonKeys}, "comparisons[]", source);
+  }
   Comparison out;
   out.scene = c.at("scene").get<std::string>();
   out.method = c.at("method").get<std::string>();
