@@ -44,6 +44,7 @@ DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
   // the same draw the same samples and reach the same plan.
   loop.controller = std::make_unique<PaperController>(
       loop.scene ? *loop.scene : scene_, params_, seed_, PaperController::Variant::Camcov, start);
+  if (ownPartOnly()) loop.controller->moveOwnCameraOnly(loop.self);
   return loop;
 }
 

@@ -24,6 +24,13 @@
 // teammates it has heard of only (chosen again whenever it hears of one more), not with one
 // never heard believed where the scene starts it.
 //
+// Under limited knowledge a camera's loop moves that camera only (camcov.ownPartOnly, the
+// default): its global step still plans for the whole neighbourhood, but takes the camera's own
+// part only where that move alone, the teammates where it believes them committed, beats
+// staying, and its local optimization improves its own pose only. Planning as if the teammates
+// took their parts of a plan they never heard of sent cameras across the room at nearly every
+// global step (docs/method.md, "One camera's part").
+//
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
@@ -66,6 +73,8 @@ class DecentralizedController final : public Controller {
   }
   // camcov.heardOnly under limited knowledge: a camera plans with the teammates it heard of.
   bool heardOnly() const { return params_.camcov.heardOnly && params_.knowledge.limited; }
+  // camcov.ownPartOnly under limited knowledge: a camera's loop moves it only.
+  bool ownPartOnly() const { return params_.camcov.ownPartOnly && params_.knowledge.limited; }
   // The claims camera j has heard and still believes (camcov.claims), by scene camera.
   void heardClaims(const OwnKnowledge& own, std::size_t j, double time);
   // Camera j at `pose`, heading for its loop's goal: if a claim it heard outbids it there, it

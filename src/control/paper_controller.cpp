@@ -74,6 +74,10 @@ std::vector<geometry::Pose> PaperController::committedTeam(
   return team;
 }
 
+void PaperController::moveOwnCameraOnly(std::size_t j) {
+  own_ = j;
+}
+
 void PaperController::globalOptimization(const Observation& observation) {
   for (auto& helper : helpers_)
     helper.setInstant(model_);
@@ -133,9 +137,10 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
                        : std::vector<geometry::Pose>{now, kept[j]};
     // camcov-dec: a teammate that claimed a goal goes there whatever this camera decides, so
     // the candidate is judged with it doing so.
-    goPaths[j] = claimOf(j) != nullptr ? keepPaths[j]
-                 : routes[j]           ? routes[j]->poses
-                                       : std::vector<geometry::Pose>{now};
+    // camcov-dec: moving its own camera only, a controller judges that camera's move alone.
+    goPaths[j] = claimOf(j) != nullptr || !moves(j) ? keepPaths[j]
+                 : routes[j]                        ? routes[j]->poses
+                                                    : std::vector<geometry::Pose>{now};
     goTravel[j] = pathTravelTime(goPaths[j], camera);
     keepTravel[j] = pathTravelTime(keepPaths[j], camera);
     longest = std::max(longest, goTravel[j]);
@@ -222,6 +227,7 @@ std::vector<std::optional<PaperController::Route>> PaperController::planPaths(
   }
   std::vector<std::optional<Route>> routes(m);
   for (std::size_t j = 0; j < m; ++j) {
+    if (!moves(j)) continue;
     if (auto straight = straightPath(observation, j, goals[j])) {
       routes[j] = Route{std::move(*straight), "straight"};
       continue;
@@ -238,6 +244,7 @@ void PaperController::startPlans(const Observation& observation,
                                  std::span<const geometry::Pose> goals,
                                  std::vector<std::optional<Route>> routes) {
   for (std::size_t j = 0; j < goals.size(); ++j) {
+    if (!moves(j)) continue;
     const geometry::Pose& target = goals[j];
     if (!routes[j]) {
       executors_[j].stop();
@@ -309,6 +316,10 @@ void PaperController::control(const Observation& observation,
   scene::CameraSet idle;
   std::vector<geometry::Pose> others;
   for (std::size_t j = 0; j < team.size(); ++j) {
+    if (!moves(j)) {
+      commands[j] = {};  // a teammate moves itself
+      continue;
+    }
     planners::PlanExecutor& executor = executors_[j];
     if (executor.executing()) {
       others.assign(team.begin(), team.end());

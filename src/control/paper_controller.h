@@ -62,12 +62,21 @@ class PaperController final : public Controller {
   // the global step runs at the next instant (its period unchanged) to give it another.
   void giveUp(std::size_t j);
 
+  // camcov-dec with camcov.ownPartOnly: this controller moves camera j only, its own (the others
+  // are teammates that decide for themselves; it knows them as they last said): its global step
+  // plans for the whole team as ours does, but judges j's part of that plan as j's move alone,
+  // the teammates where the team is committed to have them, against staying; only j follows
+  // plans and optimizes locally.
+  void moveOwnCameraOnly(std::size_t j);
+
   // Does `candidate` beat `current` by the factor τ? For a non-positive current reward any
   // increase counts (τ·current would otherwise lower the bar).
   static bool improves(double candidate, double current, double tau);
 
  private:
   bool ours() const { return variant_ == Variant::Camcov; }
+  // Camera j plans and moves here: every camera, or the own one only (moveOwnCameraOnly).
+  bool moves(std::size_t j) const { return !own_ || j == *own_; }
   void globalOptimization(const Observation& observation);
   // Ours: improve the candidate, judge it over the horizon, plan if it wins.
   void judge(const Observation& observation, std::vector<geometry::Pose> candidate, double sampled);
@@ -121,6 +130,7 @@ class PaperController final : public Controller {
   double nextGlobalTime_ = 0.0;
   bool globalNow_ = false;                    // camcov-dec: a camera gave up its goal
   std::vector<std::optional<Claim>> claims_;  // camcov-dec: empty, or one per camera
+  std::optional<std::size_t> own_;            // camcov-dec: the one camera moved here, if so
   std::vector<ControlEvent> events_;
 };
 

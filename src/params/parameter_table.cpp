@@ -196,6 +196,13 @@ constexpr std::array kTable{
         "camcov-dec: a camera plans with itself and the teammates it has heard of only, chosen "
         "again every T1; false: a teammate never heard is believed where the scene starts it",
         0, 1, false, camcovChanged<&CamcovParams::heardOnly>),
+    row<&P::camcov, &CamcovParams::ownPartOnly>(
+        "camcov.ownPartOnly", "", "",
+        "camcov-dec under limited knowledge: a camera takes its own part of its neighbourhood's "
+        "plan where that move alone, its teammates where it believes them committed, beats "
+        "staying, and optimizes locally for itself only; false: it judges the plan as if every "
+        "teammate took its part",
+        0, 1, false, camcovChanged<&CamcovParams::ownPartOnly>),
     row<&P::knowledge, &KnowledgeParams::limited>(
         "knowledge.limited", "", "",
         "our extension: a camera knows a target or obstacle only as it last saw it or was told "

@@ -114,6 +114,11 @@ struct CamcovParams {
   // camcov-dec: a camera plans with the teammates it has heard of only, not with one never heard
   // believed where the scene starts it.
   bool heardOnly = false;
+  // camcov-dec under limited knowledge: a camera's loop moves it only. It takes its own part of
+  // its neighbourhood's plan where that move alone, the teammates where it believes them
+  // committed, beats staying, and optimizes locally for itself only; false: it judges the plan
+  // as if every teammate took its part, and optimizes their poses with its own.
+  bool ownPartOnly = true;
 };
 
 // What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every

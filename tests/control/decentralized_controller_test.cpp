@@ -251,6 +251,27 @@ TEST(DecentralizedController, WithHeardOnlyACameraThatHearsNobodyPlansAlone) {
   EXPECT_NE(run(scene, heardOnly, 5)->recorded.of(0), a->recorded.of(0));
 }
 
+TEST(DecentralizedController, MovingItsOwnPartOnlyChangesNothingForACameraWithoutTeammates) {
+  // camcov.ownPartOnly: a camera judges its part of its neighbourhood's plan as its move alone.
+  // In a neighbourhood of itself alone its part is the plan: every command the same bits.
+  const scene::Scene scene = testing::sceneFromJson(twoRooms("POLYGON((5 -2,5 2))"));
+  params::Parameters p = limited(kInf);
+  p.sim.duration = 11.0;  // three global steps
+  p.camcov.neighbours = 1;
+  const auto own = run(scene, p, 5);
+  p.camcov.ownPartOnly = false;
+  const auto whole = run(scene, p, 5);
+  EXPECT_EQ(own->recorded.of(0), whole->recorded.of(0));
+  EXPECT_EQ(own->recorded.of(1), whole->recorded.of(1));
+  // With a teammate in its neighbourhood, the judgement alone differs (the check can fail).
+  p.camcov.neighbours = 2;
+  const auto together = run(scene, p, 5);
+  p.camcov.ownPartOnly = true;
+  const auto alone = run(scene, p, 5);
+  EXPECT_TRUE(alone->recorded.of(0) != together->recorded.of(0) ||
+              alone->recorded.of(1) != together->recorded.of(1));
+}
+
 // The published scenes with messages that reach everyone (`range` inf), or few of them.
 void runEveryPublishedScene(const params::Parameters& p) {
   CAMCOV_REQUIRE_PUBLISHED_SCENES();

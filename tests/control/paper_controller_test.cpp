@@ -161,6 +161,41 @@ TEST(CamcovMethod, TakesAFarBetterGoalThoughTheTripOutlastsTheHorizon) {
   EXPECT_NEAR(window, travel, 0.05 + 1e-3 * travel) << global.detail;
 }
 
+TEST(CamcovMethod, MovingItsOwnCameraOnlyItSendsThatOneToSeeAndNeverMovesTheTeammate) {
+  // camcov-dec's loop of camera 1 (camcov.ownPartOnly). Both cameras look away from the target;
+  // the teammate is left where it is (no plan, no command: it decides for itself), and the own
+  // camera is sent where it sees the target.
+  const scene::Scene s = testing::sceneFromJson(testing::kOneTargetScene);
+  const params::Parameters p = quick();
+  PaperController controller(s, p, 1, PaperController::Variant::Camcov);
+  controller.moveOwnCameraOnly(1);
+  struct Log final : sim::Recorder {
+    void step(const sim::StepRecord& r) override {
+      teammate.push_back(r.cameras[0]);
+      for (const auto& e : r.events)
+        events.push_back(e);
+    }
+    std::vector<geometry::Pose> teammate;
+    std::vector<ControlEvent> events;
+  } log;
+  sim::simulate(s, p, controller, log);
+  ASSERT_FALSE(log.teammate.empty());
+  for (const geometry::Pose& pose : log.teammate)
+    EXPECT_EQ(pose, s.cameras[0].initial);
+  int plans = 0;
+  for (const auto& e : log.events) {
+    if (e.kind != "plan") continue;
+    ++plans;
+    EXPECT_EQ(e.camera, 1);
+    reward::RewardModel model(p.reward, s.cameras[1].lens.halfFov);
+    kinematics::World w;
+    kinematics::Kinematics(s).worldAt(e.time, w);
+    model.setWorld(w);
+    EXPECT_GT(model.evaluate(std::span(&e.path.back(), 1)).coverage, 0.0) << "t = " << e.time;
+  }
+  EXPECT_GE(plans, 1);
+}
+
 TEST(CamcovMethod, StaysWhereATargetIsAboutToDriveIntoView) {
   // The published dynamic1: a slow camera that sees nothing yet, a target driving east at
   // 1 m/s towards its field of view. Judged in the world as it stands, staying sees nothing and
