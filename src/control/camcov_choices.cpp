@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "reward/added_camera_bound.h"
+
 namespace camcov::control {
 
 namespace {
@@ -102,6 +104,13 @@ double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, st
   const geometry::Pose kept = team[j];
   const double reach = turnRate * std::max(0.0, timeLeft);
   double bestYaw = plannedYaw, best = -std::numeric_limits<double>::infinity();
+  // A direction whose bound (added_camera_bound.h: camera j turned there, the others as they
+  // are) cannot beat the best so far is not swept: most look away from what the camera could
+  // add. The planned yaw, swept first, leaves the model's kept terms those of this team, which
+  // the bound takes. Where the reward counts resolution no bound holds.
+  const bool bounded = !model.countsResolution();
+  reward::AddedCameraBound bound;
+  std::vector<double> terms;
   for (int k = -1; k < directions; ++k) {
     const double yaw =
         k < 0 ? plannedYaw : geometry::wrapAngle(2.0 * std::numbers::pi * k / directions);
@@ -111,8 +120,15 @@ double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, st
                       reach) {
       continue;
     }
+    if (k >= 0 && bounded && reward::AddedCameraBound::cannotBeat(bound.ofYaw(yaw), best)) {
+      continue;
+    }
     team[j].yaw = yaw;
     const double r = model.reward(team);
+    if (k < 0 && bounded) {
+      bound.prepareMoving(model, team, j);
+      bound.placeAt(kept.position(), terms);
+    }
     if (r > best) {
       best = r;
       bestYaw = yaw;

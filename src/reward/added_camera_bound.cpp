@@ -60,28 +60,57 @@ double AddedCameraBound::Target::maxAngleFrom(geometry::Vec2 p) const {
 
 void AddedCameraBound::prepare(const RewardModel& model, std::span<const geometry::Pose> team,
                                const RewardTerms& teamTerms) {
-  model_ = &model;
-  team_ = team;
-  const visibility::Occluders& occluders = model.occluders();
-  if (occluders.buildId() != build_) takeInstant(model);
-
-  halfFov_ = model.lens(team.size()).halfFov;
-  theta0_ = team.empty() ? halfFov_ : model.lens(0).halfFov;
-  weight_ = theta0_ / halfFov_;
+  takeCamera(model, team.size(), team.size() + 1);
+  others_ = team;
   // utilizationOf's sum, from its mean: Σ_j (θ_0/θ_j)·angles_j = utilization · 2θ_0 · M.
   teamAngles_ = teamTerms.utilization * (2.0 * theta0_) * static_cast<double>(team.size());
   teamRepulsion_ = teamTerms.repulsion;
 
-  for (Edge& edge : edges_)
-    edge.unseen = edge.length;
-  teamSeen_ = 0.0;
+  clearSeen();
+  const visibility::Occluders& occluders = model.occluders();
   for (const visibility::Segment& s : model.segments()) {
     if (s.visibleBy.empty()) continue;
     const std::uint32_t e = occluders.targetEdgeOffset(s.target) + s.edge;
-    const double seen = model.rewardWeight(e) * visibility::length(s);
-    edges_[e].unseen -= seen;
-    teamSeen_ += seen;
+    see(e, model.rewardWeight(e) * visibility::length(s));
   }
+  sumUnseen();
+}
+
+void AddedCameraBound::prepareMoving(const RewardModel& model, std::span<const geometry::Pose> team,
+                                     std::size_t j) {
+  takeCamera(model, j, team.size());
+  othersOfMoving_.assign(team.begin(), team.end());
+  othersOfMoving_.erase(othersOfMoving_.begin() + static_cast<std::ptrdiff_t>(j));
+  others_ = othersOfMoving_;
+  const RewardModel::Others others = model.othersThan(j, seenByOthers_);
+  teamAngles_ = others.angles;
+  teamRepulsion_ = others.repulsion;
+
+  clearSeen();
+  for (std::uint32_t e = 0; e < seenByOthers_.size(); ++e) {
+    if (seenByOthers_[e] > 0.0) see(e, model.rewardWeight(e) * seenByOthers_[e]);
+  }
+  sumUnseen();
+}
+
+void AddedCameraBound::takeCamera(const RewardModel& model, std::size_t camera,
+                                  std::size_t cameras) {
+  // Another model may weigh the same instant's edges otherwise.
+  if (model.occluders().buildId() != build_ || &model != model_) takeInstant(model);
+  model_ = &model;
+  cameraCount_ = cameras;
+  halfFov_ = model.lens(camera).halfFov;
+  theta0_ = model.lens(0).halfFov;  // q's own in a team of q alone
+  weight_ = theta0_ / halfFov_;
+}
+
+void AddedCameraBound::clearSeen() {
+  for (Edge& edge : edges_)
+    edge.unseen = edge.length;
+  teamSeen_ = 0.0;
+}
+
+void AddedCameraBound::sumUnseen() {
   for (Target& t : targets_) {
     t.unseen = 0.0;
     for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e) {
@@ -123,32 +152,25 @@ void AddedCameraBound::takeInstant(const RewardModel& model) {
   }
 }
 
-double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
-                            std::vector<double>& terms) const {
-  const bool fine = precision == Precision::Fine;
-  const geometry::Vec2 p = camera.position();
-  const ViewCone view(p, camera.yaw, halfFov_);
-  double gain = 0.0, angles = 0.0;
-  for (const Target& t : targets_) {
-    if (view.misses(t.center, t.radius)) continue;
-    const double disc = t.maxAngleFrom(p);
-    if (!fine && t.unseen == 0.0) {  // nothing to add to coverage: no edge to look at
-      angles += disc;
-      continue;
-    }
-    double edgeAngles = 0.0;
-    for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e) {
-      const Edge& edge = edges_[e];
-      if (!edge.hasTwins && t.solidSide != 0 && facesAway(edge.a, edge.b, p, t.solidSide)) continue;
-      gain += edge.unseen;
-      if (fine) edgeAngles += subtendedAngle(edge.a, edge.b, p);
-    }
-    angles += fine ? std::min(disc, edgeAngles) : disc;
+void AddedCameraBound::addShare(const Target& t, geometry::Vec2 p, bool fine, double& gain,
+                                double& angles) const {
+  const double disc = t.maxAngleFrom(p);
+  if (!fine && t.unseen == 0.0) {  // nothing to add to coverage: no edge to look at
+    angles += disc;
+    return;
   }
-  const double coverage = coverageOf(teamSeen_ + gain, model_->rewardPerimeter());
-  const double cameraAngles = weight_ * std::min(2.0 * halfFov_, angles);
-  const double utilization =
-      (teamAngles_ + cameraAngles) / (2.0 * theta0_) / static_cast<double>(team_.size() + 1);
+  double edgeAngles = 0.0;
+  for (std::uint32_t e = t.firstEdge; e < t.firstEdge + t.edgeCount; ++e) {
+    const Edge& edge = edges_[e];
+    if (!edge.hasTwins && t.solidSide != 0 && facesAway(edge.a, edge.b, p, t.solidSide)) continue;
+    gain += edge.unseen;
+    if (fine) edgeAngles += subtendedAngle(edge.a, edge.b, p);
+  }
+  angles += fine ? std::min(disc, edgeAngles) : disc;
+}
+
+double AddedCameraBound::repulsionAt(geometry::Vec2 p, bool fine,
+                                     std::vector<double>& terms) const {
   const params::RewardParams& params = model_->params();
   double repulsion = teamRepulsion_;
   if (fine) {
@@ -156,11 +178,52 @@ double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
          objectTerms(model_->world(), model_->objectBoxes(), p, params.d2, terms))
       repulsion += term;
   }
-  for (const geometry::Pose& other : team_)
+  for (const geometry::Pose& other : others_)
     repulsion += pairTerm(other.position(), p, params.d2);
-  const double bound = combine(params, coverage, utilization, repulsion);
+  return repulsion;
+}
+
+double AddedCameraBound::combined(double gain, double angles, double repulsion) const {
+  const double coverage = coverageOf(teamSeen_ + gain, model_->rewardPerimeter());
+  const double cameraAngles = weight_ * std::min(2.0 * halfFov_, angles);
+  const double utilization =
+      (teamAngles_ + cameraAngles) / (2.0 * theta0_) / static_cast<double>(cameraCount_);
+  const double bound = combine(model_->params(), coverage, utilization, repulsion);
   // No bound at all rather than NaN, which would neither order the samples nor skip one.
   return std::isnan(bound) ? std::numeric_limits<double>::infinity() : bound;
+}
+
+double AddedCameraBound::of(const geometry::Pose& camera, Precision precision,
+                            std::vector<double>& terms) const {
+  const bool fine = precision == Precision::Fine;
+  const geometry::Vec2 p = camera.position();
+  const ViewCone view(p, camera.yaw, halfFov_);
+  double gain = 0.0, angles = 0.0;
+  for (const Target& t : targets_) {
+    if (!view.misses(t.center, t.radius)) addShare(t, p, fine, gain, angles);
+  }
+  return combined(gain, angles, repulsionAt(p, fine, terms));
+}
+
+void AddedCameraBound::placeAt(geometry::Vec2 p, std::vector<double>& terms) {
+  placed_ = p;
+  shares_.resize(targets_.size());
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    shares_[i] = {};
+    addShare(targets_[i], p, true, shares_[i].gain, shares_[i].angles);
+  }
+  placedRepulsion_ = repulsionAt(p, true, terms);
+}
+
+double AddedCameraBound::ofYaw(double yaw) const {
+  const ViewCone view(placed_, yaw, halfFov_);
+  double gain = 0.0, angles = 0.0;
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    if (view.misses(targets_[i].center, targets_[i].radius)) continue;
+    gain += shares_[i].gain;
+    angles += shares_[i].angles;
+  }
+  return combined(gain, angles, placedRepulsion_);
 }
 
 bool AddedCameraBound::cannotBeat(double bound, double best) {

@@ -24,6 +24,15 @@ double IncrementalRepulsion::evaluate(const kinematics::World& world,
   return total_.value();
 }
 
+double IncrementalRepulsion::without(std::size_t j) const {
+  FixedPointSum rest = total_;
+  rest.subtract(cameras_[j].objects);
+  for (std::size_t i = 0; i < cameras_.size(); ++i) {
+    if (i != j) rest.subtract(i < j ? pair(i, j) : pair(j, i));
+  }
+  return rest.value();
+}
+
 void IncrementalRepulsion::remove(std::size_t j) {
   total_.subtract(cameras_[j].objects);
   cameras_[j].objects = 0;

@@ -29,6 +29,9 @@ class IncrementalRepulsion {
   // since the last reset().
   double evaluate(const kinematics::World& world, std::span<const geometry::Box> boxes,
                   std::span<const geometry::Pose> cameras, double d2);
+  // Repulsion of the last evaluate()'s cameras without camera j: its terms taken out of the
+  // exact sum, so the same to the bit as repulsion() of the others.
+  double without(std::size_t j) const;
 
  private:
   using Units = FixedPointSum::Units;
@@ -38,6 +41,7 @@ class IncrementalRepulsion {
   };
   // The term of cameras i < j.
   Units& pair(std::size_t i, std::size_t j) { return pairs_[j * (j - 1) / 2 + i]; }
+  Units pair(std::size_t i, std::size_t j) const { return pairs_[j * (j - 1) / 2 + i]; }
   void remove(std::size_t j);
   void place(const kinematics::World& world, std::span<const geometry::Box> boxes, std::size_t j,
              const geometry::Pose& pose, double d2);

@@ -9,19 +9,28 @@ namespace camcov::reward {
 
 namespace {
 
-// Calls f(edge, lo, hi) for each run of `sorted` (intervals by edge, then lo): the union of
-// the intervals of one edge that overlap or touch — as S joins its consecutive seen pieces.
-template <typename Interval, typename EdgeOf, typename F>
-void forEachRun(std::span<const Interval> sorted, EdgeOf edgeOf, F&& f) {
-  for (std::size_t i = 0; i < sorted.size();) {
+// Calls f(edge, lo, hi) for each run of the intervals of `sorted` (by edge, then lo) that
+// `keep` keeps: the union of the intervals of one edge that overlap or touch — as S joins its
+// consecutive seen pieces.
+template <typename Interval, typename EdgeOf, typename Keep, typename F>
+void forEachRun(std::span<const Interval> sorted, EdgeOf edgeOf, Keep keep, F&& f) {
+  std::size_t i = 0;
+  const auto skipLeftOut = [&] {
+    while (i < sorted.size() && !keep(sorted[i]))
+      ++i;
+  };
+  for (skipLeftOut(); i < sorted.size();) {
     const auto edge = edgeOf(sorted[i]);
     const double lo = sorted[i].lo;
     double hi = sorted[i].hi;
-    for (++i; i < sorted.size() && edgeOf(sorted[i]) == edge && sorted[i].lo <= hi; ++i)
+    for (++i, skipLeftOut(); i < sorted.size() && edgeOf(sorted[i]) == edge && sorted[i].lo <= hi;
+         ++i, skipLeftOut())
       hi = std::max(hi, sorted[i].hi);
     f(edge, lo, hi);
   }
 }
+
+constexpr auto keepAll = [](const auto&) { return true; };
 
 // A closure, not a function, so that the sorts below inline it.
 constexpr auto byEdge = [](const visibility::SeenInterval& a, const visibility::SeenInterval& b) {
@@ -72,7 +81,7 @@ IncrementalTerms::Terms IncrementalTerms::evaluate(const visibility::Occluders& 
     Edge& edge = edges_[e];
     visible_.subtract(edge.length);
     weighted_.subtract(edge.weighted);
-    const UnionLength now = unionLength(occluders, e, lengths.weights);
+    const UnionLength now = unionLength(occluders, e, lengths.weights, kNoCamera);
     edge.length = now.plain;
     edge.weighted = now.weighted;
     visible_.add(edge.length);
@@ -159,7 +168,7 @@ double IncrementalTerms::takeRuns(const visibility::Occluders& occluders, const 
   std::size_t old = 0;  // the first kept run not before this one
   forEachRun(
       std::span<const visibility::SeenInterval>(nextSeen_),
-      [](const visibility::SeenInterval& s) { return s.edge; },
+      [](const visibility::SeenInterval& s) { return s.edge; }, keepAll,
       [&](std::uint32_t edge, double lo, double hi) {
         const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
         if (a == b) return;  // a repeated vertex: S has no segment there
@@ -196,9 +205,30 @@ void IncrementalTerms::markDirty(std::uint32_t edge) {
   dirty_.push_back(edge);
 }
 
+void IncrementalTerms::seenWithout(const visibility::Occluders& occluders, std::uint32_t camera,
+                                   std::vector<double>& seen) const {
+  seen.assign(edges_.size(), 0.0);
+  for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+    if (edges_[e].seenBy.empty()) continue;
+    FixedPointSum length;
+    length.add(unionLength(occluders, e, {}, camera).plain);
+    seen[e] = length.value();
+  }
+}
+
+double IncrementalTerms::anglesWithout(std::uint32_t camera) const {
+  double weighted = 0.0;
+  for (std::uint32_t i = 0; i < cameras_.size(); ++i) {
+    if (i != camera)
+      weighted += cameras_[0].lens.halfFov / cameras_[i].lens.halfFov * cameras_[i].angles;
+  }
+  return weighted;
+}
+
 IncrementalTerms::UnionLength IncrementalTerms::unionLength(const visibility::Occluders& occluders,
                                                             std::uint32_t edge,
-                                                            std::span<const double> weights) {
+                                                            std::span<const double> weights,
+                                                            std::uint32_t leftOut) const {
   const geometry::Vec2 a = occluders.targetEdgeStart(edge), b = occluders.targetEdgeEnd(edge);
   if (a == b) return {};  // a repeated vertex: S has no segment there
   const auto& seenBy = edges_[edge].seenBy;
@@ -207,6 +237,7 @@ IncrementalTerms::UnionLength IncrementalTerms::unionLength(const visibility::Oc
   // Run by run, as weightedVisibleLength() adds S's runs.
   forEachRun(
       std::span<const Interval>(seenBy), [](const Interval&) { return 0; },
+      [leftOut](const Interval& in) { return in.camera != leftOut; },
       [&](int, double lo, double hi) {
         const double length =
             geometry::distance(visibility::pointAt(a, b, lo), visibility::pointAt(a, b, hi));

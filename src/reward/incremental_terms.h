@@ -23,6 +23,7 @@
 // Cost of a call where c cameras moved: their sweeps, O(k log k) for the k intervals they
 // see before and after, the union of the edges where those differ, and O(M).
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -55,6 +56,14 @@ class IncrementalTerms {
   Terms evaluate(const visibility::Occluders& occluders, visibility::Sweep& sweep,
                  std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses,
                  const Lengths& lengths);
+
+  // Of the last evaluate()'s cameras without camera `camera` (what stays while an optimizer
+  // probes that camera's poses): each target edge's length the others see, unweighted, into
+  // `seen` (global numbering), and eq. (5)'s sum of their angles as utilizationOf() weighs
+  // them, Σ_{i≠camera} (θ_0/θ_i)·angles_i.
+  void seenWithout(const visibility::Occluders& occluders, std::uint32_t camera,
+                   std::vector<double>& seen) const;
+  double anglesWithout(std::uint32_t camera) const;
 
  private:
   // A run of one camera's intervals on an edge (as S joins its consecutive seen pieces), with
@@ -93,8 +102,10 @@ class IncrementalTerms {
   double takeRuns(const visibility::Occluders& occluders, const Camera& c, bool samePlace);
   void leave(std::uint32_t camera);
   void markDirty(std::uint32_t edge);
+  // The union of the edge's intervals, leaving out those of camera `leftOut` (kNoCamera: none).
+  static constexpr std::uint32_t kNoCamera = std::numeric_limits<std::uint32_t>::max();
   UnionLength unionLength(const visibility::Occluders& occluders, std::uint32_t edge,
-                          std::span<const double> weights);
+                          std::span<const double> weights, std::uint32_t leftOut) const;
 
   std::uint64_t build_ = 0;  // Occluders::buildId() of what is kept; 0: nothing
   std::vector<Camera> cameras_;

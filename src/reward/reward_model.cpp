@@ -78,6 +78,12 @@ RewardTerms RewardModel::terms(std::span<const geometry::Pose> cameras) {
   return t;
 }
 
+RewardModel::Others RewardModel::othersThan(std::size_t j, std::vector<double>& seen) const {
+  const auto camera = static_cast<std::uint32_t>(j);
+  incremental_.seenWithout(*occluders_, camera, seen);
+  return {incremental_.anglesWithout(camera), repulsion_.without(j)};
+}
+
 double RewardModel::rewardPerimeter() const {
   return rewardWeighted() ? weightedPerimeter_ : perimeter_;
 }

@@ -57,6 +57,15 @@ class RewardModel {
   RewardTerms terms(std::span<const geometry::Pose> cameras);
   double reward(std::span<const geometry::Pose> cameras) { return terms(cameras).reward; }
   std::span<const visibility::Segment> segments() const { return segments_; }
+  // Of the team of the last terms() call (not counting resolution) without camera j: what stays
+  // while an optimizer probes camera j's poses (AddedCameraBound::prepareMoving). Each target
+  // edge's length the others see, unweighted, into `seen` (global numbering), their angles as
+  // utilizationOf() sums them, Σ_{i≠j} (θ_0/θ_i)·angles_i, and their repulsion eq. (6).
+  struct Others {
+    double angles = 0.0;
+    double repulsion = 0.0;
+  };
+  Others othersThan(std::size_t j, std::vector<double>& seen) const;
   // The reward's coverage is resolution-aware (RewardParams::resolution, in a world with a
   // requirement): terms() then measures S whole, and a camera's added coverage is no longer
   // bounded by what the team leaves unseen (AddedCameraBound does not apply).

@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "geometry/same_bits.h"
+#include "support/random_worlds.h"
 #include "support/small_worlds.h"
 
 namespace camcov::control {
@@ -105,6 +108,57 @@ TEST(LookoutYaw, LooksAtTheTargetWhenThereIsTimeAndKeepsThePlanWhenThereIsNot) {
   EXPECT_EQ(team[0], (Pose{-6, 0.5, std::numbers::pi / 2})) << "the team is restored";
   // One second left at 1 rad/s: east and back to north (π) does not fit.
   EXPECT_EQ(lookoutYaw(model, team, 0, planned, goal, 1.0, 1.0, 16), planned);
+}
+
+// lookoutYaw as its header states it, every yaw swept: the first of the highest reward among
+// the planned yaw and the reachable directions. lookoutYaw skips the yaws its bound rules out;
+// it must choose the same.
+double everyYawSwept(reward::RewardModel& model, std::vector<Pose> team, std::size_t j,
+                     double plannedYaw, double goalYaw, double timeLeft, double turnRate,
+                     int directions) {
+  const double from = team[j].yaw, reach = turnRate * std::max(0.0, timeLeft);
+  double bestYaw = plannedYaw, best = -std::numeric_limits<double>::infinity();
+  for (int k = -1; k < directions; ++k) {
+    const double yaw =
+        k < 0 ? plannedYaw : geometry::wrapAngle(2.0 * std::numbers::pi * k / directions);
+    if (k >= 0 &&
+        std::abs(geometry::wrapAngle(yaw - from)) + std::abs(geometry::wrapAngle(goalYaw - yaw)) >
+            reach)
+      continue;
+    team[j].yaw = yaw;
+    if (const double r = model.reward(team); r > best) {
+      best = r;
+      bestYaw = yaw;
+    }
+  }
+  return bestYaw;
+}
+
+TEST(LookoutYaw, ChoosesAsIfEveryYawWereSwept) {
+  int turned = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    testing::SplitMix64 random{seed};
+    const kinematics::World w = testing::randomWorld(random);
+    // Unlike lenses (camera 1 narrower than camera 0), and a team of one among the sizes.
+    reward::RewardModel model(params::RewardParams{}, {kTheta, 0.3, 0.8, 1.0});
+    model.setWorld(w);
+    for (int trial = 0; trial < 40; ++trial) {
+      std::vector<Pose> team(1 + trial % 4);
+      for (Pose& p : team)
+        p = testing::randomPose(random);
+      const std::size_t j = static_cast<std::size_t>(trial / 4) % team.size();
+      const double planned = random.uniform(-std::numbers::pi, std::numbers::pi),
+                   goal = random.uniform(-std::numbers::pi, std::numbers::pi),
+                   timeLeft = random.uniform(-1.0, 8.0);
+      const double expected = everyYawSwept(model, team, j, planned, goal, timeLeft, 1.0, 16);
+      const double chosen = lookoutYaw(model, team, j, planned, goal, timeLeft, 1.0, 16);
+      EXPECT_TRUE(geometry::sameBits(chosen, expected))
+          << "seed " << seed << ", trial " << trial << ": chose " << chosen << ", every yaw swept "
+          << expected;
+      if (!geometry::sameBits(expected, planned)) ++turned;
+    }
+  }
+  EXPECT_GT(turned, 30) << "the directions, not only the planned yaw, are chosen";
 }
 
 }  // namespace

@@ -94,6 +94,89 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
   }
 }
 
+// Moving camera j of a team (a transit's yaws): the bound of the team with camera j at q,
+// prepared from what the model's last terms() kept of the team, is never below its reward —
+// for every j, in a team of one, with lenses unlike camera 0's, at awkward poses (on edges, at
+// vertices, on the edge of no length of randomWorld()'s target with a repeated vertex); and
+// placeAt(p) then ofYaw(γ) is the fine bound of (p, γ), but for rounding.
+TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithOneCameraMoved) {
+  int turnedAway = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    SCOPED_TRACE(seed);
+    testing::SplitMix64 random{seed};
+    kinematics::World w = testing::randomWorld(random);
+    params::RewardParams params;
+    // Every other world with importance weights, which the reward takes or leaves.
+    if (seed % 2 == 0) {
+      params.weighted = seed % 4 == 2;
+      for (const geometry::Ring& ring : w.targets) {
+        w.targetEdgeWeights.emplace_back();
+        for (std::size_t e = 0; e < ring.size(); ++e)
+          w.targetEdgeWeights.back().push_back(random.uniform(0.0, 1.0));
+      }
+    }
+    // Camera 1 narrower and camera 3 wider than camera 0, whose θ varies with the seed.
+    const double theta = seed % 3 == 0 ? 0.95 * std::numbers::pi : std::numbers::pi / 6;
+    RewardModel model(params, {theta, 0.4, theta, 1.9, theta});
+    model.setWorld(w);
+    std::vector<Pose> poses = awkwardPoses(w, random);
+    for (int k = 0; k < 150; ++k)
+      poses.push_back(testing::randomPose(random));
+    AddedCameraBound bound;
+    std::vector<double> terms;
+    for (std::size_t size = 1; size <= 5; ++size) {
+      std::vector<Pose> team;
+      for (std::size_t j = 0; j < size; ++j)
+        team.push_back(testing::randomPose(random));
+      for (std::size_t j = 0; j < size; ++j) {
+        model.terms(team);
+        bound.prepareMoving(model, team, j);
+        std::vector<Pose> moved = team;
+        for (const Pose& q : poses) {
+          moved[j] = q;
+          const double reward = model.reward(moved);
+          const double coarse = bound.of(q, Precision::Coarse, terms);
+          const double fine = bound.of(q, Precision::Fine, terms);
+          bound.placeAt(q.position(), terms);
+          const double turning = bound.ofYaw(q.yaw);
+          EXPECT_FALSE(AddedCameraBound::cannotBeat(fine, reward))
+              << "camera " << j << " of " << size << " at " << q.x << " " << q.y << " " << q.yaw
+              << ": bound " << fine << " below reward " << reward;
+          EXPECT_LE(fine, coarse + 1e-12) << "the fine bound is the tighter";
+          EXPECT_NEAR(turning, fine, 1e-12 * std::max(1.0, std::abs(fine)));
+          if (HasFailure()) return;
+          // Facing the other way: the bound must rule some such poses out to be of use.
+          moved[j].yaw = geometry::wrapAngle(q.yaw + std::numbers::pi);
+          const double awayReward = model.reward(moved);
+          const double away = bound.ofYaw(moved[j].yaw);
+          EXPECT_FALSE(AddedCameraBound::cannotBeat(away, awayReward));
+          if (AddedCameraBound::cannotBeat(away, reward)) ++turnedAway;
+        }
+      }
+    }
+  }
+  EXPECT_GT(turnedAway, 100) << "the bound rules out yaws that look away";
+}
+
+// Moving the one camera of a team of one is adding it to no team: the same bound.
+TEST(AddedCameraBound, MovingTheOnlyCameraIsAddingItToNone) {
+  testing::SplitMix64 random{7};
+  const kinematics::World w = testing::randomWorld(random);
+  RewardModel model(params::RewardParams{}, std::numbers::pi / 4);
+  model.setWorld(w);
+  const std::vector<Pose> none;
+  AddedCameraBound added, moved;
+  added.prepare(model, none, model.evaluate(none));
+  const std::vector<Pose> one{testing::randomPose(random)};
+  model.terms(one);
+  moved.prepareMoving(model, one, 0);
+  std::vector<double> terms;
+  for (int k = 0; k < 100; ++k) {
+    const Pose q = testing::randomPose(random);
+    EXPECT_EQ(moved.of(q, Precision::Fine, terms), added.of(q, Precision::Fine, terms));
+  }
+}
+
 // A 2 × 2 m square about the origin in a 100 m room, cameras with θ = 30°, and the bound
 // prepared for a first camera.
 struct LoneSquare {
