@@ -20,7 +20,10 @@
 //
 // Per camera, in order of preference:
 //   1. keep δ + margin for the horizon (H ≥ dt) against objects at their observed speeds;
-//   2. keep δ over the coming step — the weakest promise that still avoids contact;
+//   2. keep δ over the coming step — the weakest promise that still avoids contact — by the
+//      contact accounting's precision where it can (step_contacts.h: a distance that only
+//      touches δ is counted as a contact by a measurement that never undercounts), else
+//      exactly;
 //   3. none exists: the contact is unavoidable; take the velocity that violates the
 //      constraints least (ORCA's fallback) and say why: "within-delta" (already closer than
 //      δ), "outpaced" (one object alone closes faster than the camera can move away) or
@@ -81,7 +84,8 @@ class SafetyFilter {
                std::span<const geometry::Vec2> velocities, std::size_t camera);
   void addObject(const geometry::Ring& ring, bool isTarget, std::size_t index,
                  geometry::Vec2 position, double reach);
-  std::vector<HalfPlane> planes(bool comfortable) const;
+  // Per threat, the half-plane of velocities that keep `clearance` over `T` seconds.
+  std::vector<HalfPlane> planes(double clearance, double T) const;
   // Why no velocity keeps δ, from the half-planes of level 2 (`hard`, one per threat).
   Verdict explain(const kinematics::World& world, std::size_t camera, double maxSpeed,
                   std::span<const HalfPlane> hard) const;

@@ -110,6 +110,24 @@ TEST(SafetyScenarios, ABarFasterThanTheCameraSweepingACorridorIsAnUnavoidableOut
   EXPECT_NE(contacts.front()->detail.find("target 0"), std::string::npos);
 }
 
+// OUTPACED, SLOWLY. The same corridor, 40 m long; the bar drives at 1 m/s from x = 2 towards
+// x = 38, and a camera of 0.5 m/s at x = 8 is commanded straight at it (as dynamic1's plan
+// drove its camera into an oncoming target). Unchecked, they would be δ apart at
+// t = (8 − 0.1 − 0.5 − 2) / 1.5 = 3.6 s. The layer holds the camera at δ + margin, then at δ
+// while it can (closing at 0.5 m/s it loses 0.05 m a step), then no velocity keeps δ, and it
+// cannot get past the bar (every point of the corridor at the bar's x is within 0.2 m of it).
+// The step that ends exactly at δ is no contact: the whole contact is unavoidable and begins
+// after 3.6 s, none of it counted as avoidable (it all was, when the last step that could keep
+// δ kept it only to rounding and the accounting, which never undercounts, saw a contact begin).
+TEST(SafetyScenarios, ACameraChasedAtTwiceItsSpeedKeepsDeltaWhileItCanThenIsOutpaced) {
+  ScriptedController careless(towards({0.0, 2.0}, 0.5));
+  const Outcome o = run("chased_at_twice_its_speed", careless, 16.0);
+  const auto contacts = onlyUnavoidableContacts(o);
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts.front()->reason, "outpaced") << contacts.front()->detail;
+  EXPECT_GE(contacts.front()->time, 3.6);
+}
+
 // CORNERED. A 10 m square room; a target 9.4 m wide (x from 0.3 to 9.7) and 2 m tall comes
 // down from y = 6..8 to y = 0.2..2.2 at 0.8 m/s and goes back; the camera (1 m/s, faster
 // than the target) starts at (5, 3), below it. Proof that contact is unavoidable: the camera
