@@ -46,6 +46,15 @@ std::vector<Pose> awkwardPoses(const kinematics::World& w, testing::SplitMix64& 
   return poses;
 }
 
+// Importance weights in [0, 1] for every edge of every target.
+void weighEdgesAtRandom(kinematics::World& w, testing::SplitMix64& random) {
+  for (const geometry::Ring& ring : w.targets) {
+    w.targetEdgeWeights.emplace_back();
+    for (std::size_t e = 0; e < ring.size(); ++e)
+      w.targetEdgeWeights.back().push_back(random.uniform(0.0, 1.0));
+  }
+}
+
 TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
   const std::vector<double> halfFovs{std::numbers::pi / 6, 0.49 * std::numbers::pi,
                                      0.6 * std::numbers::pi, 0.95 * std::numbers::pi};
@@ -55,11 +64,7 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
     kinematics::World w = testing::randomWorld(random);
     // Every other world with importance weights: the bound is of the reward as weighted.
     if (seed % 2 == 0) {
-      for (const geometry::Ring& ring : w.targets) {
-        w.targetEdgeWeights.emplace_back();
-        for (std::size_t e = 0; e < ring.size(); ++e)
-          w.targetEdgeWeights.back().push_back(random.uniform(0.0, 1.0));
-      }
+      weighEdgesAtRandom(w, random);
     }
     const double theta = halfFovs[seed % halfFovs.size()];
     RewardModel model(params::RewardParams{}, {theta, 0.4, theta, 1.2, theta});
@@ -109,11 +114,7 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithOneCameraMoved) {
     // Every other world with importance weights, which the reward takes or leaves.
     if (seed % 2 == 0) {
       params.weighted = seed % 4 == 2;
-      for (const geometry::Ring& ring : w.targets) {
-        w.targetEdgeWeights.emplace_back();
-        for (std::size_t e = 0; e < ring.size(); ++e)
-          w.targetEdgeWeights.back().push_back(random.uniform(0.0, 1.0));
-      }
+      weighEdgesAtRandom(w, random);
     }
     // Camera 1 narrower and camera 3 wider than camera 0, whose θ varies with the seed.
     const double theta = seed % 3 == 0 ? 0.95 * std::numbers::pi : std::numbers::pi / 6;
