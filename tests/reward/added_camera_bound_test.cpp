@@ -46,6 +46,14 @@ std::vector<Pose> awkwardPoses(const kinematics::World& w, testing::SplitMix64& 
   return poses;
 }
 
+// The awkward poses, then `count` random ones.
+std::vector<Pose> probePoses(const kinematics::World& w, testing::SplitMix64& random, int count) {
+  std::vector<Pose> poses = awkwardPoses(w, random);
+  for (int k = 0; k < count; ++k)
+    poses.push_back(testing::randomPose(random));
+  return poses;
+}
+
 // Importance weights in [0, 1] for every edge of every target.
 void weighEdgesAtRandom(kinematics::World& w, testing::SplitMix64& random) {
   for (const geometry::Ring& ring : w.targets) {
@@ -69,9 +77,7 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithTheCameraAdded) {
     const double theta = halfFovs[seed % halfFovs.size()];
     RewardModel model(params::RewardParams{}, {theta, 0.4, theta, 1.2, theta});
     model.setWorld(w);
-    std::vector<Pose> poses = awkwardPoses(w, random);
-    for (int k = 0; k < 300; ++k)
-      poses.push_back(testing::randomPose(random));
+    const std::vector<Pose> poses = probePoses(w, random, 300);
     AddedCameraBound bound;
     std::vector<double> terms;
     for (std::size_t size = 0; size < 5; ++size) {
@@ -120,9 +126,7 @@ TEST(AddedCameraBound, IsNeverBelowTheRewardOfTheTeamWithOneCameraMoved) {
     const double theta = seed % 3 == 0 ? 0.95 * std::numbers::pi : std::numbers::pi / 6;
     RewardModel model(params, {theta, 0.4, theta, 1.9, theta});
     model.setWorld(w);
-    std::vector<Pose> poses = awkwardPoses(w, random);
-    for (int k = 0; k < 150; ++k)
-      poses.push_back(testing::randomPose(random));
+    const std::vector<Pose> poses = probePoses(w, random, 150);
     AddedCameraBound bound;
     std::vector<double> terms;
     for (std::size_t size = 1; size <= 5; ++size) {
