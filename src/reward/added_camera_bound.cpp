@@ -101,7 +101,7 @@ void AddedCameraBound::takeCamera(const RewardModel& model, std::size_t camera,
   cameraCount_ = cameras;
   halfFov_ = model.lens(camera).halfFov;
   theta0_ = model.lens(0).halfFov;  // q's own in a team of q alone
-  weight_ = theta0_ / halfFov_;
+  weight_ = utilizationWeight(model.lens(0), model.lens(camera));
 }
 
 void AddedCameraBound::clearSeen() {

@@ -220,7 +220,7 @@ double IncrementalTerms::anglesWithout(std::uint32_t camera) const {
   double weighted = 0.0;
   for (std::uint32_t i = 0; i < cameras_.size(); ++i) {
     if (i != camera)
-      weighted += cameras_[0].lens.halfFov / cameras_[i].lens.halfFov * cameras_[i].angles;
+      weighted += utilizationWeight(cameras_[0].lens, cameras_[i].lens) * cameras_[i].angles;
   }
   return weighted;
 }

@@ -127,11 +127,10 @@ double utilizationOf(std::span<const double> angles, std::span<const scene::Lens
   // Σ_j angle_j / 2θ_j, summed as Σ_j (θ_0/θ_j) · angle_j, then over 2θ_0: for a team of
   // like cameras every weight θ_0/θ_0 is exactly 1 (IEEE division), so the sum is eq. (5)
   // as written, to the bit.
-  const double theta0 = lenses[0].halfFov;
   double weighted = 0.0;
   for (std::size_t j = 0; j < angles.size(); ++j)
-    weighted += theta0 / lenses[j].halfFov * angles[j];
-  return weighted / (2.0 * theta0) / static_cast<double>(angles.size());
+    weighted += utilizationWeight(lenses[0], lenses[j]) * angles[j];
+  return weighted / (2.0 * lenses[0].halfFov) / static_cast<double>(angles.size());
 }
 
 double utilization(std::span<const visibility::Segment> segments,

@@ -70,6 +70,11 @@ double utilization(std::span<const visibility::Segment> segments,
                    std::span<const geometry::Pose> cameras, std::span<const scene::Lens> lenses);
 // The angle ∠ a p b that a piece of target boundary from a to b subtends at p, in [0, π].
 double subtendedAngle(geometry::Vec2 a, geometry::Vec2 b, geometry::Vec2 p);
+// The weight θ_0/θ_j of camera j's angles when eq. (5) is summed over the first camera's 2θ_0
+// (`first`: camera 0's lens, `camera`: camera j's): every place that sums utilization weighs by it.
+inline double utilizationWeight(const scene::Lens& first, const scene::Lens& camera) {
+  return first.halfFov / camera.halfFov;
+}
 // Utilization from each camera's sum of subtended angles (angles[j]: camera j, θ_j of
 // lenses[j]): Σ_j (θ_0/θ_j)·angles[j] / 2θ_0 / M.
 double utilizationOf(std::span<const double> angles, std::span<const scene::Lens> lenses);
