@@ -135,9 +135,9 @@ void PaperController::judge(const Observation& observation, std::vector<geometry
     keepPaths[j] = executors_[j].executing() && claimOf(j) == nullptr
                        ? executors_[j].pathLeft(now)
                        : std::vector<geometry::Pose>{now, kept[j]};
-    // camcov-dec: a teammate that claimed a goal goes there whatever this camera decides, so
-    // the candidate is judged with it doing so.
-    // camcov-dec: moving its own camera only, a controller judges that camera's move alone.
+    // camcov-dec: a teammate that claimed a goal goes there whatever this camera decides, and a
+    // controller that moves its own camera only judges that camera's move alone: the others
+    // keep to what they are committed to in both options.
     goPaths[j] = claimOf(j) != nullptr || !moves(j) ? keepPaths[j]
                  : routes[j]                        ? routes[j]->poses
                                                     : std::vector<geometry::Pose>{now};
