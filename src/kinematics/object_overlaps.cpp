@@ -2,14 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <boost/geometry.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
 
 #include "geometry/ring.h"
+#include "kinematics/boost_rings.h"
 #include "kinematics/kinematics.h"
 
 namespace camcov::kinematics {
@@ -17,32 +16,11 @@ namespace {
 
 using geometry::Vec2;
 
-namespace bg = boost::geometry;
-using BgPoint = bg::model::d2::point_xy<double>;
-using BgPolygon = bg::model::polygon<BgPoint, /*clockwise=*/false, /*closed=*/false>;
-
-BgPolygon toPolygon(const geometry::Ring& ring) {
-  BgPolygon p;
-  for (const Vec2 v : ring)
-    p.outer().emplace_back(v.x, v.y);
-  return p;
-}
-
 // A point of the region where the interiors of `a` and `b` meet (the centroid of the largest
 // piece), if they meet in more than a sliver: touching, or a crossing thinner than rounding,
 // is not overlapping.
 std::optional<Vec2> interiorsMeet(const geometry::Ring& a, const geometry::Ring& b) {
-  std::vector<BgPolygon> pieces;
-  // GCC 12 at -O2 sees Boost 1.74's rescale policy read a factor it always sets first (clang
-  // has no such warning).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-  bg::intersection(toPolygon(a), toPolygon(b), pieces);
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+  const std::vector<BgPolygon> pieces = intersectionPieces(a, b);
   const double scale =
       std::max(std::abs(geometry::signedArea(a)), std::abs(geometry::signedArea(b)));
   const BgPolygon* largest = nullptr;
