@@ -203,7 +203,7 @@ class SharedRoadmap final : public og::PRMstar {
 
 struct Roadmap::Impl {
   Impl(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
-       std::uint64_t seed)
+       std::uint64_t seed, double share)
       : w(world, params, lens, seed), space(std::make_shared<ob::SE2StateSpace>()) {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ob::RealVectorBounds bounds(2);
@@ -225,8 +225,8 @@ struct Roadmap::Impl {
     auto problem = std::make_shared<ob::ProblemDefinition>(si);
     problem->setOptimizationObjective(objective);
     planner = std::make_shared<SharedRoadmap>(si);
-    const auto budget =
-        static_cast<std::size_t>(std::ceil(params.planner.T2 * params.planner.milestonesPerSecond));
+    const auto budget = static_cast<std::size_t>(
+        std::ceil(share * (params.planner.T2 * params.planner.milestonesPerSecond)));
     // About four milestones a cell once the roadmap is grown.
     const double area = (w.box.max.x - w.box.min.x) * (w.box.max.y - w.box.min.y);
     planner->useGridNeighbours(
@@ -247,8 +247,8 @@ struct Roadmap::Impl {
 };
 
 Roadmap::Roadmap(const kinematics::World& world, const params::Parameters& params,
-                 const scene::Lens& lens, std::uint64_t seed)
-    : impl_(std::make_unique<Impl>(world, params, lens, seed)) {}
+                 const scene::Lens& lens, std::uint64_t seed, double share)
+    : impl_(std::make_unique<Impl>(world, params, lens, seed, share)) {}
 
 Roadmap::~Roadmap() = default;
 

@@ -24,9 +24,11 @@ namespace camcov::planners {
 
 class Roadmap {
  public:
-  // Builds the roadmap now (the expensive part), sampled for a camera with `lens`.
+  // Builds the roadmap now (the expensive part), sampled for a camera with `lens`. T2's budget
+  // of milestones is for the whole room; a world that is a part of it (camcov-dec's region) is
+  // given `share` of the budget, the part's share of the room, so milestones keep their density.
   Roadmap(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
-          std::uint64_t seed);
+          std::uint64_t seed, double share = 1.0);
   ~Roadmap();
   Roadmap(const Roadmap&) = delete;
   Roadmap& operator=(const Roadmap&) = delete;

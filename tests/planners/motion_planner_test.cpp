@@ -36,6 +36,13 @@ TEST(Roadmap, PathRunsFromStartToGoalThroughValidMotionsAroundTheObstacle) {
   }
 }
 
+TEST(Roadmap, AWorldThatIsAPartOfTheRoomIsGivenItsShareOfTheMilestones) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  EXPECT_EQ(Roadmap(w, smallBudget(), kTheta, 3, 0.25).milestones(), 75u);
+  // Rounded up: a part, however small, gets a milestone.
+  EXPECT_EQ(Roadmap(w, smallBudget(), kTheta, 3, 0.251).milestones(), 76u);
+}
+
 TEST(Roadmap, SameSeedSameRoadmapAndPath) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
   Roadmap a(w, smallBudget(), kTheta, 5), b(w, smallBudget(), kTheta, 5);
