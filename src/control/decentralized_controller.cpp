@@ -4,10 +4,12 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "control/event_kind.h"
 #include "control/neighbourhood.h"
 #include "control/team_belief.h"
+#include "kinematics/world_region.h"
 #include "scene/camera_poses_file.h"
 
 namespace camcov::control {
@@ -92,6 +94,20 @@ void DecentralizedController::yieldIfOutbid(std::size_t j, const geometry::Pose&
   }
 }
 
+const kinematics::World& DecentralizedController::plannedIn(const kinematics::World& known,
+                                                            const Loop& loop) {
+  const double widen = params_.camcov.region;
+  if (!loop.scene || !std::isfinite(widen)) return known;
+  std::vector<geometry::Vec2> positions;
+  for (const geometry::Pose& p : memberPoses_)
+    positions.push_back(p.position());
+  const geometry::Box members = geometry::boundingBox(positions);
+  const double side = std::max(members.max.x - members.min.x, members.max.y - members.min.y);
+  region_ = kinematics::worldInRegion(known, geometry::grown(members, widen * side),
+                                      positions[loop.self]);
+  return region_ && !region_->targets.empty() ? *region_ : known;
+}
+
 void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
   // Neighbourhoods are chosen again when the loops' global steps are due (half a step of slack
@@ -162,7 +178,8 @@ void DecentralizedController::control(const Observation& observation,
       for (std::size_t i : loop.members)
         memberPoses_.push_back(believed_[i]);
       // Nothing measured for this camera's world or team: its loop sweeps it itself.
-      const Observation mine{observation.time, own != nullptr ? own->world : observation.world,
+      const Observation mine{observation.time,
+                             plannedIn(own != nullptr ? own->world : observation.world, loop),
                              memberPoses_};
       loop.controller->control(mine, planned_);
     }

@@ -31,16 +31,25 @@
 // took their parts of a plan they never heard of sent cameras across the room at nearly every
 // global step (docs/method.md, "One camera's part").
 //
+// In a team larger than N, a camera's loop plans in its neighbourhood's region
+// (camcov.region, kinematics/world_region.h): the box around its members, widened by half its
+// larger side, the room clipped to it and the objects within. In the whole room it knew, a
+// camera sampled poses across the room, sent itself there past the teammates nearer to them, and
+// swept every object it had heard of; in its region its work follows its neighbourhood, not the
+// team or the room (docs/method.md, "A neighbourhood's region").
+//
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
 // Holds a reference to `scene`: the scene must outlive the controller.
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "control/controller.h"
 #include "control/paper_controller.h"
+#include "kinematics/world.h"
 #include "params/parameters.h"
 #include "scene/scene.h"
 
@@ -81,6 +90,10 @@ class DecentralizedController final : public Controller {
   // gives the goal up.
   void yieldIfOutbid(std::size_t j, const geometry::Pose& pose, double time);
 
+  // What camera j's loop plans in, the members at memberPoses_: in a team larger than N, its
+  // neighbourhood's region (camcov.region) where that holds a target it knows, else `known`.
+  const kinematics::World& plannedIn(const kinematics::World& known, const Loop& loop);
+
   const scene::Scene& scene_;
   params::Parameters params_;
   std::uint64_t seed_;
@@ -91,6 +104,7 @@ class DecentralizedController final : public Controller {
   std::vector<scene::CameraCommand> planned_;       // scratch: one loop's commands
   std::vector<std::optional<Claim>> claims_;        // scratch: heardClaims, by scene camera
   std::vector<std::optional<Claim>> memberClaims_;  // scratch: the same, by loop member
+  std::optional<kinematics::World> region_;         // scratch: plannedIn's region
   std::vector<ControlEvent> events_;
 };
 

@@ -198,8 +198,15 @@ planners::Roadmap& PaperController::roadmap(const Observation& observation, std:
       if (i != j && roadmapOf_[i] && scene_.cameras[i].lens == lens) roadmapOf_[j] = roadmapOf_[i];
     }
     if (!roadmapOf_[j]) {
-      roadmapOf_[j] =
-          std::make_shared<planners::Roadmap>(observation.world, params_, lens, random_.fork());
+      // A world that is a part of the room (camcov-dec's region) gets its share of T2's
+      // milestones.
+      const auto area = [](const geometry::Ring& ring) {
+        const geometry::Box box = geometry::boundingBox(ring);
+        return (box.max.x - box.min.x) * (box.max.y - box.min.y);
+      };
+      const double share = std::min(1.0, area(observation.world.boundary) / area(scene_.boundary));
+      roadmapOf_[j] = std::make_shared<planners::Roadmap>(observation.world, params_, lens,
+                                                          random_.fork(), share);
     }
   }
   return *roadmapOf_[j];

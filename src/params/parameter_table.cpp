@@ -203,6 +203,13 @@ constexpr std::array kTable{
         "staying, and optimizes locally for itself only; false: it judges the plan as if every "
         "teammate took its part",
         0, 1, false, camcovChanged<&CamcovParams::ownPartOnly>),
+    row<&P::camcov, &CamcovParams::region>(
+        "camcov.region", "", "",
+        "camcov-dec in a team larger than N: a camera plans in its neighbourhood's region only, "
+        "the box around its members as it believes them widened on every side by this many "
+        "times its larger side (the room clipped to it, the objects within); where that holds "
+        "no target it knows, or with inf, in everything it knows",
+        0, kInf, true, camcovChanged<&CamcovParams::region>),
     row<&P::knowledge, &KnowledgeParams::limited>(
         "knowledge.limited", "", "",
         "our extension: a camera knows a target or obstacle only as it last saw it or was told "

@@ -119,6 +119,10 @@ struct CamcovParams {
   // committed, beats staying, and optimizes locally for itself only; false: it judges the plan
   // as if every teammate took its part, and optimizes their poses with its own.
   bool ownPartOnly = true;
+  // camcov-dec in a team larger than N: a camera plans in its neighbourhood's region only
+  // (kinematics/world_region.h), the box around its members as it believes them, widened on
+  // every side by this many times the box's larger side. inf: in everything it knows.
+  double region = 0.5;
 };
 
 // What each camera knows (our extension; docs/method.md, "What a camera knows"). Full: every

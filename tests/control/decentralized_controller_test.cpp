@@ -190,6 +190,43 @@ TEST(DecentralizedController, ALargerTeamPlansInNeighbourhoodsOfItsNearestChosen
   EXPECT_EQ(r->summary.avoidableContacts, 0);
 }
 
+// A 60 m hall: cameras 0 and 1 and a standing target in the west, cameras 2 and 3 and a target
+// driving along `eastPath` in the east.
+std::string westAndEast(const std::string& eastPath) {
+  return R"js({
+  "boundary": "POLYGON((-30 -6,30 -6,30 6,-30 6))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-20 3))"},
+              {"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": ")js" +
+         eastPath + R"js("}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-25 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(-22 -2)", "angle": 90, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(22 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(25 2)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1}]})js";
+}
+
+TEST(DecentralizedController, InATeamLargerThanItsNeighbourhoodACameraPlansInItsRegionOnly) {
+  // Neighbourhoods of two: cameras 0 and 1 plan in the west, where their region (their box
+  // widened by twice its larger side) holds the west target only. Though every camera knows
+  // everything, what the east target does changes nothing cameras 0 and 1 do.
+  const scene::Scene along = testing::sceneFromJson(westAndEast("POLYGON((10 -3,10 3))"));
+  const scene::Scene across = testing::sceneFromJson(westAndEast("POLYGON((5 0,15 1,12 -3))"));
+  params::Parameters p;
+  p.sim.duration = 11.0;  // three global steps
+  p.global.K = 100;
+  p.camcov.neighbours = 2;
+  p.camcov.region = 2.0;
+  const auto a = run(along, p, 4), b = run(across, p, 4);
+  EXPECT_EQ(a->recorded.of(0), b->recorded.of(0));
+  EXPECT_EQ(a->recorded.of(1), b->recorded.of(1));
+  EXPECT_NE(a->recorded.of(2), b->recorded.of(2));
+  // Planning in the whole hall they do differ (the check can fail).
+  p.camcov.region = kInf;
+  const auto wholeA = run(along, p, 4), wholeB = run(across, p, 4);
+  EXPECT_NE(wholeA->recorded.of(0), wholeB->recorded.of(0));
+  EXPECT_EQ(a->summary.avoidableContacts + b->summary.avoidableContacts, 0);
+}
+
 TEST(DecentralizedController, ACameraIgnoresWhatItNeitherSawNorHeard) {
   // Target 1 moves along one path or another in the east room. Camera 0, in the west, never
   // sees it; without messages it never hears of it either, so its commands are the same
