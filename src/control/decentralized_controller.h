@@ -32,11 +32,12 @@
 // global step (docs/method.md, "One camera's part").
 //
 // In a team larger than N, a camera's loop plans in its neighbourhood's region
-// (camcov.region, kinematics/world_region.h): the box around its members, widened by half its
-// larger side, the room clipped to it and the objects within. In the whole room it knew, a
-// camera sampled poses across the room, sent itself there past the teammates nearer to them, and
-// swept every object it had heard of; in its region its work follows its neighbourhood, not the
-// team or the room (docs/method.md, "A neighbourhood's region").
+// (camcov.region, kinematics/world_region.h): the box around its members, widened on every side
+// by camcov.region times its larger side, the room clipped to it and the objects within. In the
+// whole room it knew, a camera sampled poses across the room, sent itself there past the
+// teammates nearer to them, and swept every object it had heard of; in its region its work
+// follows its neighbourhood, not the team or the room (docs/method.md, "A neighbourhood's
+// region").
 //
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //

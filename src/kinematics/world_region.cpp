@@ -51,8 +51,14 @@ std::optional<World> worldInRegion(const World& world, geometry::Box region,
 
   // A room that is not convex may fall into several pieces in the box: the anchor's is the
   // part it can reach without leaving the box.
+  std::vector<BgPolygon> pieces;
+  try {
+    pieces = intersectionPieces(world.boundary, ringOf(region));
+  } catch (const bg::exception&) {
+    return std::nullopt;  // a room Boost cannot cut (it is stricter than our loader): all of it
+  }
   std::optional<geometry::Ring> piece;
-  for (const BgPolygon& p : intersectionPieces(world.boundary, ringOf(region))) {
+  for (const BgPolygon& p : pieces) {
     if (!bg::covered_by(BgPoint(anchor.x, anchor.y), p)) continue;
     geometry::Ring ring;
     for (const BgPoint& v : p.outer())

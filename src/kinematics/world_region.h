@@ -15,7 +15,8 @@ namespace camcov::kinematics {
 // `world` cut to the box `region`: the room clipped to the box (the piece that holds `anchor`),
 // with the targets and obstacles inside that piece, their ids and edge weights kept. No object is
 // cut: the box first grows to hold, with a centimetre to spare, every object it meets. Nullopt
-// where the grown box holds the whole room (the part is the world), or `anchor` lies in no piece.
+// where the grown box holds the whole room (the part is the world), where `anchor` lies in no
+// piece, or where Boost.Geometry cannot cut the room.
 std::optional<World> worldInRegion(const World& world, geometry::Box region, geometry::Vec2 anchor);
 
 }  // namespace camcov::kinematics

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "geometry/ring.h"
+#include "util/random.h"
 
 namespace camcov::kinematics {
 namespace {
@@ -125,6 +127,41 @@ TEST(WorldInRegion, ABoxSharingTheRoomsWallsClipsToTheRoom) {
   EXPECT_DOUBLE_EQ(room.max.y, -45);
   EXPECT_NEAR(geometry::signedArea(part->boundary), 100.0 * 5.0, 1e-9);
   EXPECT_TRUE(part->targets.empty());
+}
+
+TEST(WorldInRegion, OverRandomStarRoomsKeepsASimpleRoomHoldingTheAnchorAndEveryObjectKept) {
+  // Star-shaped rooms of 12 spikes, small squares at random free places, random boxes: every
+  // part is a simple counter-clockwise ring that holds the anchor, with every object kept
+  // strictly inside it; a part never holds more objects than the world.
+  Random random(11);
+  int parts = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    World w;
+    for (int k = 0; k < 12; ++k) {
+      const double angle = 2.0 * std::numbers::pi * k / 12, radius = random.uniform(10, 50);
+      w.boundary.push_back({radius * std::cos(angle), radius * std::sin(angle)});
+    }
+    for (int i = 0; i < 40; ++i) {
+      const Ring t = square({random.uniform(-40, 40), random.uniform(-40, 40)}, 0.5);
+      bool inside = true;
+      for (const Vec2 v : t)
+        inside = inside && geometry::locate(w.boundary, v) == geometry::Containment::Inside;
+      if (inside) w.targets.push_back(t);
+    }
+    const Vec2 anchor{random.uniform(-20, 20), random.uniform(-20, 20)};
+    const double half = random.uniform(1, 30);
+    const auto part = worldInRegion(w, geometry::grown(Box{anchor, anchor}, half), anchor);
+    if (!part) continue;
+    ++parts;
+    SCOPED_TRACE(trial);
+    EXPECT_FALSE(geometry::findSelfIntersection(part->boundary).found());
+    EXPECT_GT(geometry::signedArea(part->boundary), 0.0);
+    EXPECT_NE(geometry::locate(part->boundary, anchor, 1e-9), geometry::Containment::Outside);
+    EXPECT_LE(part->targets.size(), w.targets.size());
+    for (const Ring& object : part->targets)
+      expectStrictlyInside(part->boundary, object);
+  }
+  EXPECT_GT(parts, 100);
 }
 
 }  // namespace
