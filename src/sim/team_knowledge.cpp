@@ -59,10 +59,10 @@ void TeamKnowledge::update(const kinematics::World& world, std::span<const geome
   see(world, poses);
   communication_.send(world.time, poses, cameras_, goals);
   heard_ = communication_.deliver(world.time, cameras_);
-  known_ = knownWorld(unionOf(cameras_), world, weighted_);
+  knownWorld(unionOf(cameras_), world, weighted_, known_);
   own_.resize(cameras_.size());
   for (std::size_t j = 0; j < cameras_.size(); ++j) {
-    own_[j].world = knownWorld(cameras_[j], world, weighted_);
+    knownWorld(cameras_[j], world, weighted_, own_[j].world);
     const auto heard = cameras_[j].teammates();
     own_[j].teammates.assign(heard.begin(), heard.end());
     own_[j].teammates.resize(cameras_.size());
