@@ -51,14 +51,6 @@ const KnownObject* Knowledge::find(ObjectKind kind, std::uint32_t id) const {
                                                                                      : nullptr;
 }
 
-std::vector<KnownObject> Knowledge::newestFirst(std::size_t limit) const {
-  std::vector<KnownObject> entries = objects_;
-  std::stable_sort(entries.begin(), entries.end(),
-                   [](const KnownObject& a, const KnownObject& b) { return a.seenAt > b.seenAt; });
-  if (limit > 0 && entries.size() > limit) entries.resize(limit);
-  return entries;
-}
-
 void Knowledge::hearTeammate(std::size_t teammate, const control::HeardTeammate& news) {
   if (teammates_.size() <= teammate) teammates_.resize(teammate + 1);
   std::optional<control::HeardTeammate>& known = teammates_[teammate];

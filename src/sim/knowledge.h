@@ -39,9 +39,6 @@ class Knowledge {
   // Every object known, targets then obstacles, each by ascending id.
   std::span<const KnownObject> objects() const { return objects_; }
   const KnownObject* find(ObjectKind kind, std::uint32_t id) const;
-  // What a message carries: the entries seen most recently first (ties: in objects() order),
-  // at most `limit` of them (0: all).
-  std::vector<KnownObject> newestFirst(std::size_t limit) const;
   // What a message tells of camera `teammate` (its pose and goal at `news.sentAt`, from itself
   // or passed on): kept where it is later than the latest known of it.
   void hearTeammate(std::size_t teammate, const control::HeardTeammate& news);

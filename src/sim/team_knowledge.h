@@ -46,7 +46,7 @@ class TeamKnowledge {
   bool weighted_ = false;
   kinematics::World known_;
   std::vector<control::OwnKnowledge> own_;
-  std::vector<Hearing> heard_;
+  std::span<const Hearing> heard_;
 };
 
 }  // namespace camcov::sim

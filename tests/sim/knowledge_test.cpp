@@ -146,7 +146,7 @@ struct Pair {
     knowledge[1].see(entry(ObjectKind::target, 1, 0.0));
   }
   // Sends and delivers at instant k of steps of 0.1 s.
-  std::vector<Hearing> step(Communication& c, int k) {
+  std::span<const Hearing> step(Communication& c, int k) {
     c.send(0.1 * k, poses, knowledge);
     return c.deliver(0.1 * k, knowledge);
   }
@@ -287,6 +287,26 @@ TEST(Communication, AMessageCarriesAtMostSizeLimitEntriesTheNewestFirst) {
   EXPECT_NE(knowledge[1].find(ObjectKind::target, 0), nullptr);
   EXPECT_NE(knowledge[1].find(ObjectKind::obstacle, 0), nullptr);
   EXPECT_NE(knowledge[1].find(ObjectKind::target, 1), nullptr);
+}
+
+TEST(Communication, EntriesSeenAtOnceFillASizeLimitInTheirKnownOrder) {
+  // Five targets all seen at 0.2 and an obstacle at 0.3: the obstacle, then the first two
+  // targets by id.
+  std::vector<Knowledge> knowledge(2);
+  for (std::uint32_t id : {4U, 0U, 3U, 1U, 2U})
+    knowledge[0].see(entry(ObjectKind::target, id, 0.2));
+  knowledge[0].see(entry(ObjectKind::obstacle, 7, 0.3));
+  params::CommsParams p = comms(kInf);
+  p.sizeLimit = 3;
+  Communication c(p, 0.1, 2, 1);
+  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+  std::vector<std::uint32_t> targets;
+  for (const KnownObject& o : knowledge[1].objects())
+    if (o.kind == ObjectKind::target) targets.push_back(o.id);
+  EXPECT_EQ(targets, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_NE(knowledge[1].find(ObjectKind::obstacle, 7), nullptr);
 }
 
 }  // namespace
