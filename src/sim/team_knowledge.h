@@ -11,10 +11,12 @@
 
 #include "kinematics/world.h"
 #include "params/parameters.h"
-#include "reward/reward_model.h"
 #include "scene/scene.h"
 #include "sim/communication.h"
 #include "sim/knowledge.h"
+#include "visibility/occluders.h"
+#include "visibility/segment.h"
+#include "visibility/sweep.h"
 
 namespace camcov::sim {
 
@@ -39,7 +41,14 @@ class TeamKnowledge {
 
  private:
   void see(const kinematics::World& world, std::span<const geometry::Pose> poses);
-  reward::RewardModel sight_;  // sweeps every object's boundary; weights play no part
+  // Every object's boundary swept as a target's (weights play no part): what each camera sees.
+  const std::vector<scene::Lens> lenses_;
+  kinematics::World everything_;  // the true world's targets, then its obstacles, as targets
+  visibility::Occluders occluders_;
+  visibility::Sweep sweep_;
+  std::vector<visibility::Segment> segments_;
+  std::vector<scene::CameraSet> seenBy_;  // per object of everything_
+  KnownObject sighting_;                  // the object seen, as each of its seers keeps it
   Communication communication_;
   std::vector<Knowledge> cameras_;
   kinematics::World before_;  // the true world one step before, for the objects' velocities
