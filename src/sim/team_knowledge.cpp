@@ -47,6 +47,7 @@ void TeamKnowledge::see(const kinematics::World& world, std::span<const geometry
     else
       object.edgeWeights.clear();
     seenBy_[i].forEach([&](std::size_t j) { cameras_[j].see(object); });
+    team_.see(object);
   }
   before_ = world;
 }
@@ -56,7 +57,7 @@ void TeamKnowledge::update(const kinematics::World& world, std::span<const geome
   see(world, poses);
   communication_.send(world.time, poses, cameras_, goals);
   heard_ = communication_.deliver(world.time, cameras_);
-  knownWorld(unionOf(cameras_), world, weighted_, known_);
+  knownWorld(team_, world, weighted_, known_);
   for (std::size_t j = 0; j < cameras_.size(); ++j) {
     knownWorld(cameras_[j], world, weighted_, own_[j].world);
     const auto heard = cameras_[j].teammates();

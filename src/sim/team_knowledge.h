@@ -51,6 +51,9 @@ class TeamKnowledge {
   KnownObject sighting_;                  // the object seen, as each of its seers keeps it
   Communication communication_;
   std::vector<Knowledge> cameras_;
+  // The union of cameras(), kept as it grows: of each object its last sighting by anyone, for
+  // whatever a camera knows of an object was seen by someone then, and no later.
+  Knowledge team_;
   kinematics::World before_;  // the true world one step before, for the objects' velocities
   bool weighted_ = false;
   kinematics::World known_;

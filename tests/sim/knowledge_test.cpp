@@ -120,6 +120,28 @@ TEST(Knowledge, EveryCameraKnowsTheUnionWhenEveryoneHearsEveryoneAtOnce) {
   }
 }
 
+TEST(Knowledge, TheKnownWorldIsTheUnionOfWhatTheCamerasKnow) {
+  // Late and lost messages, and camera 0 looking away for a while: the cameras' knowledge
+  // differs, and the team's is of each object the entry seen last among theirs.
+  params::Parameters p = limited();
+  p.comms.latency = 0.2;
+  p.comms.loss = 0.3;
+  TeamKnowledge team(twoLookers(), p, 1);
+  const std::vector<geometry::Pose> away = {{-5, 0, kPi}, kLooking[1]};
+  for (int k = 0; k < 12; ++k) {
+    const kinematics::World now = worldAt(0.1 * k, {0, 0.1 * k});
+    team.update(now, k >= 4 && k < 8 ? away : kLooking);
+    kinematics::World expected;
+    knownWorld(unionOf(team.cameras()), now, false, expected);
+    const kinematics::World& known = team.known();
+    EXPECT_EQ(known.time, expected.time);
+    EXPECT_EQ(known.targets, expected.targets);
+    EXPECT_EQ(known.targetIds, expected.targetIds);
+    EXPECT_EQ(known.obstacles, expected.obstacles);
+    EXPECT_EQ(known.obstacleIds, expected.obstacleIds);
+  }
+}
+
 TEST(Knowledge, AHeardEntryReplacesOnlyAnOlderOne) {
   Knowledge k;
   k.see(entry(ObjectKind::target, 3, 2.0));
