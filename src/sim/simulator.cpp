@@ -198,7 +198,7 @@ void Simulation::measure() {
         s.measure.segments(), cameras_, s.lenses, *s.scene.resolution, s.measure.perimeter());
   }
   if (s.team) {
-    s.team->update(s.world, cameras_, s.goals);
+    s.team->update(s.world, cameras_, s.goals, s.measure.segments());
     s.knownMeasure->setWorld(s.team->known());
     s.knownTerms = s.knownMeasure->evaluate(cameras_);
   }

@@ -6,6 +6,7 @@
 // of j) in the sweep of eq. (1) over the true world, with the obstacles' boundaries swept as
 // the targets' are: the same occlusion, field of view and sensing range that coverage counts.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,9 +27,12 @@ class TeamKnowledge {
   TeamKnowledge(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed);
   // The instant of `world`, the true one, with the cameras at `poses` heading for `goals` (as
   // the method last gave them; empty: none): each camera sees, then whoever is due sends, then
-  // every message due is heard; known() and own() follow.
+  // every message due is heard; known() and own() follow. `measured`: S of `world` for `poses`
+  // as the simulator swept it (visibility::Sweep with the scene's lenses), if at hand: in a
+  // world without obstacles that is the sweep of every object's boundary, not made again.
   void update(const kinematics::World& world, std::span<const geometry::Pose> poses,
-              std::span<const std::optional<geometry::Pose>> goals = {});
+              std::span<const std::optional<geometry::Pose>> goals = {},
+              std::optional<std::span<const visibility::Segment>> measured = std::nullopt);
   // What each camera knows, in camera order.
   std::span<const Knowledge> cameras() const { return cameras_; }
   // What the team knows (unionOf of cameras()), as the world the centralized methods read.
@@ -40,7 +44,8 @@ class TeamKnowledge {
   std::span<const Hearing> heard() const { return heard_; }
 
  private:
-  void see(const kinematics::World& world, std::span<const geometry::Pose> poses);
+  void see(const kinematics::World& world, std::span<const geometry::Pose> poses,
+           std::optional<std::span<const visibility::Segment>> measured);
   // Every object's boundary swept as a target's (weights play no part): what each camera sees.
   const std::vector<scene::Lens> lenses_;
   kinematics::World everything_;  // the true world's targets, then its obstacles, as targets

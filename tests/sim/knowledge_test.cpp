@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "reward/reward_model.h"
 #include "sim/communication.h"
 #include "sim/knowledge.h"
 #include "sim/team_knowledge.h"
@@ -140,6 +141,35 @@ TEST(Knowledge, TheKnownWorldIsTheUnionOfWhatTheCamerasKnow) {
     EXPECT_EQ(known.obstacles, expected.obstacles);
     EXPECT_EQ(known.obstacleIds, expected.obstacleIds);
   }
+}
+
+TEST(Knowledge, WithoutObstaclesTheSimulatorsSweepTellsWhatEachCameraSees) {
+  // The same instants, once swept by the team itself and once read from S as the simulator
+  // measured it: every camera comes to know the same.
+  TeamKnowledge sweeping(twoLookers(), limited(0.0), 1);
+  TeamKnowledge reading(twoLookers(), limited(0.0), 1);
+  reward::RewardModel simulator(params::RewardParams{}, scene::lenses(twoLookers()));
+  for (int k = 0; k < 4; ++k) {
+    kinematics::World now = worldAt(0.1 * k, {0, 0.1 * k});
+    now.obstacles.clear();
+    now.obstacleIds.clear();
+    simulator.setWorld(now);
+    simulator.evaluate(kLooking);
+    sweeping.update(now, kLooking);
+    reading.update(now, kLooking, {}, simulator.segments());
+    for (std::size_t j = 0; j < 2; ++j) {
+      const auto swept = sweeping.cameras()[j].objects();
+      const auto read = reading.cameras()[j].objects();
+      ASSERT_EQ(read.size(), swept.size());
+      for (std::size_t i = 0; i < swept.size(); ++i) {
+        EXPECT_EQ(read[i].id, swept[i].id);
+        EXPECT_EQ(read[i].seenAt, swept[i].seenAt);
+        EXPECT_EQ(read[i].shape, swept[i].shape);
+      }
+    }
+  }
+  EXPECT_NE(reading.cameras()[0].find(ObjectKind::target, 0), nullptr);
+  EXPECT_EQ(reading.cameras()[1].find(ObjectKind::target, 0), nullptr);
 }
 
 TEST(Knowledge, AHeardEntryReplacesOnlyAnOlderOne) {
