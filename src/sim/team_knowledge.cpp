@@ -68,6 +68,9 @@ void TeamKnowledge::update(const kinematics::World& world, std::span<const geome
   communication_.send(world.time, poses, cameras_, goals);
   heard_ = communication_.deliver(world.time, cameras_);
   knownWorld(team_, world, weighted_, known_);
+  knowsTheWorld_ = known_.targets == world.targets && known_.targetIds == world.targetIds &&
+                   known_.obstacles == world.obstacles && known_.obstacleIds == world.obstacleIds &&
+                   known_.targetEdgeWeights == world.targetEdgeWeights;
   for (std::size_t j = 0; j < cameras_.size(); ++j) {
     knownWorld(cameras_[j], world, weighted_, own_[j].world);
     const auto heard = cameras_[j].teammates();

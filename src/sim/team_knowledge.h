@@ -37,6 +37,10 @@ class TeamKnowledge {
   std::span<const Knowledge> cameras() const { return cameras_; }
   // What the team knows (unionOf of cameras()), as the world the centralized methods read.
   const kinematics::World& known() const { return known_; }
+  // Whether known() is the true world of the last update, object for object (its time,
+  // boundary and what coverage asks are the true world's anyway): as when every object is seen
+  // then and none known has gone. Whatever is measured in the one is then measured in the other.
+  bool knowsTheWorld() const { return knowsTheWorld_; }
   // What each camera knows on its own, as the world it reads and its teammates as last heard.
   std::span<const control::OwnKnowledge> own() const { return own_; }
   const MessageCounts& messages() const { return communication_.counts(); }
@@ -62,6 +66,7 @@ class TeamKnowledge {
   kinematics::World before_;  // the true world one step before, for the objects' velocities
   bool weighted_ = false;
   kinematics::World known_;
+  bool knowsTheWorld_ = false;
   std::vector<control::OwnKnowledge> own_;
   std::span<const Hearing> heard_;
 };

@@ -102,6 +102,22 @@ TEST(Knowledge, ATargetSeenThenHiddenIsRememberedWhereAndWhenLastSeen) {
   EXPECT_EQ(known_world.targetIds, std::vector<std::uint32_t>{0});
 }
 
+TEST(Knowledge, TheTeamKnowsTheWorldWhileEveryObjectIsWhereItIsKnown) {
+  TeamKnowledge team(twoLookers(), limited(0.0), 1);
+  team.update(worldAt(0.0, {0, 0}), kLooking);
+  EXPECT_TRUE(team.knowsTheWorld());  // camera 0 sees the target, camera 1 the obstacle
+  // Camera 0 turns away; the target moves on unseen, then comes back to where it was seen.
+  const std::vector<geometry::Pose> away = {{-5, 0, kPi}, kLooking[1]};
+  team.update(worldAt(0.1, {0, 0.3}), away);
+  EXPECT_FALSE(team.knowsTheWorld());
+  team.update(worldAt(0.2, {0, 0}), away);
+  EXPECT_TRUE(team.knowsTheWorld());  // unseen, but known as it is
+  team.update(worldAt(0.3, {0, 0.3}), away);
+  EXPECT_FALSE(team.knowsTheWorld());
+  team.update(worldAt(0.4, {0, 0.3}), kLooking);
+  EXPECT_TRUE(team.knowsTheWorld());
+}
+
 TEST(Knowledge, EveryCameraKnowsTheUnionWhenEveryoneHearsEveryoneAtOnce) {
   // Range inf, no loss, no latency, a message every step.
   TeamKnowledge team(twoLookers(), limited(), 1);
