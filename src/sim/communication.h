@@ -10,7 +10,6 @@
 // stream of their own seeded from the run's seed, so a run is deterministic and the methods'
 // random draws do not shift with them.
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -47,22 +46,36 @@ class Communication {
   void send(double time, std::span<const geometry::Pose> poses,
             std::span<const Knowledge> knowledge,
             std::span<const std::optional<geometry::Pose>> goals = {});
-  // Hands every message due by `time` to its receiver, in the order sent; who heard whom.
-  std::vector<Hearing> deliver(double time, std::span<Knowledge> knowledge);
+  // Hands every message due by `time` to its receiver, in the order sent; who heard whom,
+  // valid until the next call.
+  std::span<const Hearing> deliver(double time, std::span<Knowledge> knowledge);
   const MessageCounts& counts() const { return counts_; }
 
  private:
+  // What one camera told at one instant, read by each of its receivers. Kept for the next
+  // message once all have heard it: its buffers are reused, so that a run's messages,
+  // thousands a step in a large team, allocate nothing once the first have gone round.
+  struct Message {
+    std::vector<KnownObject> entries;  // in Knowledge::objects() order
+    // What the sender told of the team: itself now, the others as it last heard them.
+    std::vector<std::optional<control::HeardTeammate>> team;
+    int unheard = 0;  // receivers it has not reached yet
+  };
   struct InFlight {
     Hearing hearing;
     double due = 0.0;
-    std::shared_ptr<const std::vector<KnownObject>> entries;  // one message, shared by receivers
-    // What the sender told of the team: itself now, the others as it last heard them.
-    std::shared_ptr<const std::vector<std::optional<control::HeardTeammate>>> team;
+    std::size_t message = 0;  // in messages_
   };
+  // A message slot free for the next message.
+  std::size_t freeMessage();
   const params::CommsParams params_;
   const double dt_;
   std::vector<double> lastSent_;  // per camera; −infinity before its first message
   std::vector<InFlight> inFlight_;
+  std::vector<Message> messages_;
+  std::vector<std::size_t> free_;      // slots of messages_ that every receiver has heard
+  std::vector<std::uint32_t> newest_;  // scratch: entries by how recently they were seen
+  std::vector<Hearing> heard_;         // of the last deliver()
   Random random_;
   MessageCounts counts_;
 };

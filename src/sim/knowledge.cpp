@@ -12,38 +12,43 @@ bool before(const KnownObject& a, ObjectKind kind, std::uint32_t id) {
 
 }  // namespace
 
-void Knowledge::put(KnownObject object, bool onlyIfNewer) {
-  const auto at = std::lower_bound(
-      objects_.begin(), objects_.end(), object,
-      [](const KnownObject& a, const KnownObject& b) { return before(a, b.kind, b.id); });
-  if (at == objects_.end() || at->kind != object.kind || at->id != object.id) {
-    objects_.insert(at, std::move(object));
-  } else if (!onlyIfNewer || object.seenAt > at->seenAt) {
-    *at = std::move(object);
+std::size_t Knowledge::placeOf(ObjectKind kind, std::uint32_t id) const {
+  const auto at = std::lower_bound(objects_.begin(), objects_.end(), 0,
+                                   [&](const KnownObject& a, int) { return before(a, kind, id); });
+  return static_cast<std::size_t>(at - objects_.begin());
+}
+
+void Knowledge::put(std::size_t at, const KnownObject& object, bool onlyIfNewer) {
+  if (at == objects_.size() || objects_[at].kind != object.kind || objects_[at].id != object.id) {
+    objects_.insert(objects_.begin() + static_cast<std::ptrdiff_t>(at), object);
+  } else if (!onlyIfNewer || object.seenAt > objects_[at].seenAt) {
+    objects_[at] = object;
   }
 }
 
-void Knowledge::see(KnownObject object) {
-  put(std::move(object), false);
+void Knowledge::see(const KnownObject& object) {
+  put(placeOf(object.kind, object.id), object, false);
 }
 
 void Knowledge::hear(std::span<const KnownObject> told) {
-  for (const KnownObject& object : told)
-    put(object, true);
+  // Every entry before `at` comes before the one told: while `told` ascends, its place is
+  // found by walking on from the last one's.
+  std::size_t at = 0;
+  for (const KnownObject& object : told) {
+    if (at > 0 && !before(objects_[at - 1], object.kind, object.id)) {
+      at = placeOf(object.kind, object.id);
+    } else {
+      while (at < objects_.size() && before(objects_[at], object.kind, object.id))
+        ++at;
+    }
+    put(at, object, true);
+  }
 }
 
 const KnownObject* Knowledge::find(ObjectKind kind, std::uint32_t id) const {
-  const auto at = std::lower_bound(objects_.begin(), objects_.end(), 0,
-                                   [&](const KnownObject& a, int) { return before(a, kind, id); });
-  return at != objects_.end() && at->kind == kind && at->id == id ? &*at : nullptr;
-}
-
-std::vector<KnownObject> Knowledge::newestFirst(std::size_t limit) const {
-  std::vector<KnownObject> entries = objects_;
-  std::stable_sort(entries.begin(), entries.end(),
-                   [](const KnownObject& a, const KnownObject& b) { return a.seenAt > b.seenAt; });
-  if (limit > 0 && entries.size() > limit) entries.resize(limit);
-  return entries;
+  const std::size_t at = placeOf(kind, id);
+  return at != objects_.size() && objects_[at].kind == kind && objects_[at].id == id ? &objects_[at]
+                                                                                     : nullptr;
 }
 
 void Knowledge::hearTeammate(std::size_t teammate, const control::HeardTeammate& news) {
@@ -59,23 +64,32 @@ Knowledge unionOf(std::span<const Knowledge> team) {
   return all;
 }
 
-kinematics::World knownWorld(const Knowledge& knowledge, const kinematics::World& now,
-                             bool weighted) {
-  kinematics::World world;
-  world.time = now.time;
-  world.boundary = now.boundary;
-  world.resolution = now.resolution;
-  for (const KnownObject& object : knowledge.objects()) {
-    if (object.kind == ObjectKind::target) {
-      world.targets.push_back(object.shape);
-      world.targetIds.push_back(object.id);
-      if (weighted) world.targetEdgeWeights.push_back(object.edgeWeights);
-    } else {
-      world.obstacles.push_back(object.shape);
-      world.obstacleIds.push_back(object.id);
-    }
+void knownWorld(const Knowledge& knowledge, const kinematics::World& now, bool weighted,
+                kinematics::World& out) {
+  out.time = now.time;
+  out.boundary = now.boundary;
+  out.resolution = now.resolution;
+  const std::span<const KnownObject> objects = knowledge.objects();
+  const auto firstObstacle =
+      std::partition_point(objects.begin(), objects.end(),
+                           [](const KnownObject& o) { return o.kind == ObjectKind::target; });
+  const std::span<const KnownObject> targets(objects.begin(), firstObstacle);
+  const std::span<const KnownObject> obstacles(firstObstacle, objects.end());
+  // Resized, then assigned in place: a ring assigned over one as long keeps its buffer.
+  out.targets.resize(targets.size());
+  out.targetIds.resize(targets.size());
+  out.targetEdgeWeights.resize(weighted ? targets.size() : 0);
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    out.targets[i] = targets[i].shape;
+    out.targetIds[i] = targets[i].id;
+    if (weighted) out.targetEdgeWeights[i] = targets[i].edgeWeights;
   }
-  return world;
+  out.obstacles.resize(obstacles.size());
+  out.obstacleIds.resize(obstacles.size());
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    out.obstacles[i] = obstacles[i].shape;
+    out.obstacleIds[i] = obstacles[i].id;
+  }
 }
 
 }  // namespace camcov::sim

@@ -32,15 +32,13 @@ struct KnownObject {
 class Knowledge {
  public:
   // The camera sees `object` now: its entry is replaced.
-  void see(KnownObject object);
-  // What a message tells: an entry replaces the one known only if it was seen later.
+  void see(const KnownObject& object);
+  // What a message tells: an entry replaces the one known only if it was seen later. Fastest
+  // when `told` is in objects() order, as messages are: one walk along both.
   void hear(std::span<const KnownObject> told);
   // Every object known, targets then obstacles, each by ascending id.
   std::span<const KnownObject> objects() const { return objects_; }
   const KnownObject* find(ObjectKind kind, std::uint32_t id) const;
-  // What a message carries: the entries seen most recently first (ties: in objects() order),
-  // at most `limit` of them (0: all).
-  std::vector<KnownObject> newestFirst(std::size_t limit) const;
   // What a message tells of camera `teammate` (its pose and goal at `news.sentAt`, from itself
   // or passed on): kept where it is later than the latest known of it.
   void hearTeammate(std::size_t teammate, const control::HeardTeammate& news);
@@ -48,9 +46,11 @@ class Knowledge {
   std::span<const std::optional<control::HeardTeammate>> teammates() const { return teammates_; }
 
  private:
-  // Replaces or inserts at the place of its kind and id; `onlyIfNewer`: keeps an entry seen
-  // at the same time or later.
-  void put(KnownObject object, bool onlyIfNewer);
+  // Replaces or inserts `object` at `at`, the place of its kind and id (an entry replaced keeps
+  // its buffers: no allocation); `onlyIfNewer`: keeps an entry seen at the same time or later.
+  void put(std::size_t at, const KnownObject& object, bool onlyIfNewer);
+  // Where an entry of `kind` and `id` is or would go.
+  std::size_t placeOf(ObjectKind kind, std::uint32_t id) const;
   std::vector<KnownObject> objects_;  // targets then obstacles, by id
   std::vector<std::optional<control::HeardTeammate>> teammates_;
 };
@@ -61,8 +61,9 @@ Knowledge unionOf(std::span<const Knowledge> team);
 // The world a method reads at the instant `now` (the true world: its time, boundary and what
 // coverage asks, nothing of its objects): every known object where and as it was last seen (not
 // carried on: docs/method.md says why), those never seen absent. Edge weights are carried
-// where `weighted` (the true world has them).
-kinematics::World knownWorld(const Knowledge& knowledge, const kinematics::World& now,
-                             bool weighted);
+// where `weighted` (the true world has them). Written into `out`, whose buffers are reused:
+// made again every step for every camera, it allocates only when what is known grows.
+void knownWorld(const Knowledge& knowledge, const kinematics::World& now, bool weighted,
+                kinematics::World& out);
 
 }  // namespace camcov::sim

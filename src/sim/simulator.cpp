@@ -170,6 +170,11 @@ double Simulation::time() const {
 control::Observation Simulation::observation() const {
   const State& s = *state_;
   if (!s.team) return scored();
+  if (s.team->knowsTheWorld()) {
+    // The known world's S and terms are the true world's, measured once (measure()).
+    return {time(),         s.team->known(), cameras_,     s.measure.segments(),
+            s.record.terms, &s.measure,      s.team->own()};
+  }
   return {time(),       s.team->known(),  cameras_,     s.knownMeasure->segments(),
           s.knownTerms, &*s.knownMeasure, s.team->own()};
 }
@@ -198,9 +203,12 @@ void Simulation::measure() {
         s.measure.segments(), cameras_, s.lenses, *s.scene.resolution, s.measure.perimeter());
   }
   if (s.team) {
-    s.team->update(s.world, cameras_, s.goals);
-    s.knownMeasure->setWorld(s.team->known());
-    s.knownTerms = s.knownMeasure->evaluate(cameras_);
+    s.team->update(s.world, cameras_, s.goals, s.measure.segments());
+    // A team that knows the world as it is would only measure again what was just measured.
+    if (!s.team->knowsTheWorld()) {
+      s.knownMeasure->setWorld(s.team->known());
+      s.knownTerms = s.knownMeasure->evaluate(cameras_);
+    }
   }
   RunSummary& summary = s.summary;
   if (s.comesAndGoes) {

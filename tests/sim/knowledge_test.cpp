@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "reward/reward_model.h"
 #include "sim/communication.h"
 #include "sim/knowledge.h"
 #include "sim/team_knowledge.h"
@@ -101,6 +102,22 @@ TEST(Knowledge, ATargetSeenThenHiddenIsRememberedWhereAndWhenLastSeen) {
   EXPECT_EQ(known_world.targetIds, std::vector<std::uint32_t>{0});
 }
 
+TEST(Knowledge, TheTeamKnowsTheWorldWhileEveryObjectIsWhereItIsKnown) {
+  TeamKnowledge team(twoLookers(), limited(0.0), 1);
+  team.update(worldAt(0.0, {0, 0}), kLooking);
+  EXPECT_TRUE(team.knowsTheWorld());  // camera 0 sees the target, camera 1 the obstacle
+  // Camera 0 turns away; the target moves on unseen, then comes back to where it was seen.
+  const std::vector<geometry::Pose> away = {{-5, 0, kPi}, kLooking[1]};
+  team.update(worldAt(0.1, {0, 0.3}), away);
+  EXPECT_FALSE(team.knowsTheWorld());
+  team.update(worldAt(0.2, {0, 0}), away);
+  EXPECT_TRUE(team.knowsTheWorld());  // unseen, but known as it is
+  team.update(worldAt(0.3, {0, 0.3}), away);
+  EXPECT_FALSE(team.knowsTheWorld());
+  team.update(worldAt(0.4, {0, 0.3}), kLooking);
+  EXPECT_TRUE(team.knowsTheWorld());
+}
+
 TEST(Knowledge, EveryCameraKnowsTheUnionWhenEveryoneHearsEveryoneAtOnce) {
   // Range inf, no loss, no latency, a message every step.
   TeamKnowledge team(twoLookers(), limited(), 1);
@@ -118,6 +135,57 @@ TEST(Knowledge, EveryCameraKnowsTheUnionWhenEveryoneHearsEveryoneAtOnce) {
     }
     EXPECT_EQ(all.objects().size(), 2U);  // the target from camera 0, the obstacle from 1
   }
+}
+
+TEST(Knowledge, TheKnownWorldIsTheUnionOfWhatTheCamerasKnow) {
+  // Late and lost messages, and camera 0 looking away for a while: the cameras' knowledge
+  // differs, and the team's is of each object the entry seen last among theirs.
+  params::Parameters p = limited();
+  p.comms.latency = 0.2;
+  p.comms.loss = 0.3;
+  TeamKnowledge team(twoLookers(), p, 1);
+  const std::vector<geometry::Pose> away = {{-5, 0, kPi}, kLooking[1]};
+  for (int k = 0; k < 12; ++k) {
+    const kinematics::World now = worldAt(0.1 * k, {0, 0.1 * k});
+    team.update(now, k >= 4 && k < 8 ? away : kLooking);
+    kinematics::World expected;
+    knownWorld(unionOf(team.cameras()), now, false, expected);
+    const kinematics::World& known = team.known();
+    EXPECT_EQ(known.time, expected.time);
+    EXPECT_EQ(known.targets, expected.targets);
+    EXPECT_EQ(known.targetIds, expected.targetIds);
+    EXPECT_EQ(known.obstacles, expected.obstacles);
+    EXPECT_EQ(known.obstacleIds, expected.obstacleIds);
+  }
+}
+
+TEST(Knowledge, WithoutObstaclesTheSimulatorsSweepTellsWhatEachCameraSees) {
+  // The same instants, once swept by the team itself and once read from S as the simulator
+  // measured it: every camera comes to know the same.
+  TeamKnowledge sweeping(twoLookers(), limited(0.0), 1);
+  TeamKnowledge reading(twoLookers(), limited(0.0), 1);
+  reward::RewardModel simulator(params::RewardParams{}, scene::lenses(twoLookers()));
+  for (int k = 0; k < 4; ++k) {
+    kinematics::World now = worldAt(0.1 * k, {0, 0.1 * k});
+    now.obstacles.clear();
+    now.obstacleIds.clear();
+    simulator.setWorld(now);
+    simulator.evaluate(kLooking);
+    sweeping.update(now, kLooking);
+    reading.update(now, kLooking, {}, simulator.segments());
+    for (std::size_t j = 0; j < 2; ++j) {
+      const auto swept = sweeping.cameras()[j].objects();
+      const auto read = reading.cameras()[j].objects();
+      ASSERT_EQ(read.size(), swept.size());
+      for (std::size_t i = 0; i < swept.size(); ++i) {
+        EXPECT_EQ(read[i].id, swept[i].id);
+        EXPECT_EQ(read[i].seenAt, swept[i].seenAt);
+        EXPECT_EQ(read[i].shape, swept[i].shape);
+      }
+    }
+  }
+  EXPECT_NE(reading.cameras()[0].find(ObjectKind::target, 0), nullptr);
+  EXPECT_EQ(reading.cameras()[1].find(ObjectKind::target, 0), nullptr);
 }
 
 TEST(Knowledge, AHeardEntryReplacesOnlyAnOlderOne) {
@@ -146,7 +214,7 @@ struct Pair {
     knowledge[1].see(entry(ObjectKind::target, 1, 0.0));
   }
   // Sends and delivers at instant k of steps of 0.1 s.
-  std::vector<Hearing> step(Communication& c, int k) {
+  std::span<const Hearing> step(Communication& c, int k) {
     c.send(0.1 * k, poses, knowledge);
     return c.deliver(0.1 * k, knowledge);
   }
@@ -287,6 +355,26 @@ TEST(Communication, AMessageCarriesAtMostSizeLimitEntriesTheNewestFirst) {
   EXPECT_NE(knowledge[1].find(ObjectKind::target, 0), nullptr);
   EXPECT_NE(knowledge[1].find(ObjectKind::obstacle, 0), nullptr);
   EXPECT_NE(knowledge[1].find(ObjectKind::target, 1), nullptr);
+}
+
+TEST(Communication, EntriesSeenAtOnceFillASizeLimitInTheirKnownOrder) {
+  // Five targets all seen at 0.2 and an obstacle at 0.3: the obstacle, then the first two
+  // targets by id.
+  std::vector<Knowledge> knowledge(2);
+  for (std::uint32_t id : {4U, 0U, 3U, 1U, 2U})
+    knowledge[0].see(entry(ObjectKind::target, id, 0.2));
+  knowledge[0].see(entry(ObjectKind::obstacle, 7, 0.3));
+  params::CommsParams p = comms(kInf);
+  p.sizeLimit = 3;
+  Communication c(p, 0.1, 2, 1);
+  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+  std::vector<std::uint32_t> targets;
+  for (const KnownObject& o : knowledge[1].objects())
+    if (o.kind == ObjectKind::target) targets.push_back(o.id);
+  EXPECT_EQ(targets, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_NE(knowledge[1].find(ObjectKind::obstacle, 7), nullptr);
 }
 
 }  // namespace
