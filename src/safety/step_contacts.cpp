@@ -68,34 +68,44 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
     return h > 0.0 ? geometry::distance(from.cameras[j], to.cameras[j]) / h : 0.0;
   };
 
+  // Every pair in one order (camera j: the objects, then the cameras before it), made as it is
+  // visited: at 100 cameras there are 15,000 of them, of which a handful are ever searched, and
+  // keeping them all cost a 2 MB list each step.
   const std::size_t objectCount = targetBounds_.size() + obstacleBounds_.size();
-  std::vector<Pair> pairs;
-  for (std::size_t j = 0; j < from.cameras.size(); ++j) {
-    for (std::size_t o = 0; o < objectCount; ++o) {
-      const bool isTarget = o < targetBounds_.size();
-      const std::size_t i = isTarget ? o : o - targetBounds_.size();
-      const double speed = (isTarget ? targetBounds_[i] : obstacleBounds_[i]).pointSpeed();
-      const Sampled s{{},
-                      h,
-                      from.objectDistances[j * objectCount + o],
-                      to.objectDistances[j * objectCount + o],
-                      cameraSpeed(j) + speed,
-                      {}};
-      pairs.push_back({j, -1, isTarget, i, s});
+  auto forEachPair = [&](auto&& visit) {
+    for (std::size_t j = 0; j < from.cameras.size(); ++j) {
+      for (std::size_t o = 0; o < objectCount; ++o) {
+        const bool isTarget = o < targetBounds_.size();
+        const std::size_t i = isTarget ? o : o - targetBounds_.size();
+        const double speed = (isTarget ? targetBounds_[i] : obstacleBounds_[i]).pointSpeed();
+        visit(Pair{j,
+                   -1,
+                   isTarget,
+                   i,
+                   {{},
+                    h,
+                    from.objectDistances[j * objectCount + o],
+                    to.objectDistances[j * objectCount + o],
+                    cameraSpeed(j) + speed,
+                    {}}});
+      }
+      for (std::size_t i = 0; i < j; ++i) {
+        // Both move linearly, so their offset r does too: slope ≤ |r1 − r0|/h.
+        const geometry::Vec2 r0 = from.cameras[j] - from.cameras[i];
+        const geometry::Vec2 r1 = to.cameras[j] - to.cameras[i];
+        visit(Pair{j,
+                   static_cast<std::ptrdiff_t>(i),
+                   false,
+                   0,
+                   {{},
+                    h,
+                    geometry::norm(r0),
+                    geometry::norm(r1),
+                    h > 0.0 ? geometry::distance(r0, r1) / h : 0.0,
+                    {}}});
+      }
     }
-    for (std::size_t i = 0; i < j; ++i) {
-      // Both move linearly, so their offset does too: |r(τ)| with r linear, slope ≤ |r1 − r0|/h.
-      const geometry::Vec2 r0 = from.cameras[j] - from.cameras[i];
-      const geometry::Vec2 r1 = to.cameras[j] - to.cameras[i];
-      const Sampled s{{},
-                      h,
-                      geometry::norm(r0),
-                      geometry::norm(r1),
-                      h > 0.0 ? geometry::distance(r0, r1) / h : 0.0,
-                      {}};
-      pairs.push_back({j, static_cast<std::ptrdiff_t>(i), false, 0, s});
-    }
-  }
+  };
   // The distance between the step's ends, for a pair about to be searched.
   auto follow = [&](Pair& p) -> const Sampled& {
     if (p.distance.f) return p.distance;
@@ -144,27 +154,31 @@ StepContacts StepAccounting::measure(const Sample& from, const Sample& to) const
   result.contactStart.assign(from.cameras.size(), -1.0);
   auto lowerBound = [](const Sampled& s) { return 0.5 * (s.f0 + s.f1 - s.lipschitz * s.h); };
   // Minimum distances: start from the samples, then search only pairs that might beat them.
-  for (const Pair& p : pairs) {
+  forEachPair([&](const Pair& p) {
     double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
     best = std::min({best, p.distance.f0, p.distance.f1});
-  }
-  for (Pair& p : pairs) {
+  });
+  forEachPair([&](Pair p) {
     double& best = p.withCamera() ? result.minCameraDistance : result.minObjectDistance;
     if (lowerBound(p.distance) < best - kDistanceTolerance)
       best = std::min(best, std::max(0.0, lipschitzMinimum(follow(p), kDistanceTolerance, best)));
-  }
+  });
 
   // Contacts: only pairs that may come below δ take part.
-  std::vector<const Sampled*> objects, cameras, all;
-  for (Pair& p : pairs) {
-    if (lowerBound(p.distance) >= delta_) continue;
+  std::vector<Pair> touching;
+  forEachPair([&](Pair p) {
+    if (lowerBound(p.distance) >= delta_) return;
     const double first = firstBelow(follow(p), delta_, kContactDepth);
-    if (first < 0.0) continue;
+    if (first < 0.0) return;
     for (const std::ptrdiff_t c : {static_cast<std::ptrdiff_t>(p.camera), p.other}) {
       if (c < 0) continue;
       double& start = result.contactStart[static_cast<std::size_t>(c)];
       start = start < 0.0 ? first : std::min(start, first);
     }
+    touching.push_back(std::move(p));
+  });
+  std::vector<const Sampled*> objects, cameras, all;
+  for (const Pair& p : touching) {
     (p.withCamera() ? cameras : objects).push_back(&p.distance);
     all.push_back(&p.distance);
   }
