@@ -339,17 +339,23 @@ TEST(Communication, LossIsDeterministicForASeedAndNearItsProbability) {
   EXPECT_NEAR(static_cast<double>(a.lost) / a.sent, loss, 0.016);
 }
 
+// Camera 0 sends what it knows to camera 1, 1 m away, once, in messages of at most `sizeLimit`
+// entries.
+void sendOnce(std::vector<Knowledge>& knowledge, int sizeLimit) {
+  params::CommsParams p = comms(kInf);
+  p.sizeLimit = sizeLimit;
+  Communication c(p, 0.1, 2, 1);
+  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
+  c.send(0.0, poses, knowledge);
+  c.deliver(0.0, knowledge);
+}
+
 TEST(Communication, AMessageCarriesAtMostSizeLimitEntriesTheNewestFirst) {
   std::vector<Knowledge> knowledge(2);
   for (std::uint32_t id = 0; id < 5; ++id)  // seen at 0.4, 0.3, 0.2, 0.1, 0.0
     knowledge[0].see(entry(ObjectKind::target, id, 0.1 * (4 - id)));
   knowledge[0].see(entry(ObjectKind::obstacle, 0, 0.35));
-  params::CommsParams p = comms(kInf);
-  p.sizeLimit = 3;
-  Communication c(p, 0.1, 2, 1);
-  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
-  c.send(0.0, poses, knowledge);
-  c.deliver(0.0, knowledge);
+  sendOnce(knowledge, 3);
   const auto& heard = knowledge[1].objects();
   ASSERT_EQ(heard.size(), 3U);
   EXPECT_NE(knowledge[1].find(ObjectKind::target, 0), nullptr);
@@ -364,12 +370,7 @@ TEST(Communication, EntriesSeenAtOnceFillASizeLimitInTheirKnownOrder) {
   for (std::uint32_t id : {4U, 0U, 3U, 1U, 2U})
     knowledge[0].see(entry(ObjectKind::target, id, 0.2));
   knowledge[0].see(entry(ObjectKind::obstacle, 7, 0.3));
-  params::CommsParams p = comms(kInf);
-  p.sizeLimit = 3;
-  Communication c(p, 0.1, 2, 1);
-  const std::vector<geometry::Pose> poses = {{0, 0, 0}, {1, 0, 0}};
-  c.send(0.0, poses, knowledge);
-  c.deliver(0.0, knowledge);
+  sendOnce(knowledge, 3);
   std::vector<std::uint32_t> targets;
   for (const KnownObject& o : knowledge[1].objects())
     if (o.kind == ObjectKind::target) targets.push_back(o.id);
