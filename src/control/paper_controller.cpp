@@ -200,11 +200,9 @@ planners::Roadmap& PaperController::roadmap(const Observation& observation, std:
     if (!roadmapOf_[j]) {
       // A world that is a part of the room (camcov-dec's region) gets its share of T2's
       // milestones.
-      const auto area = [](const geometry::Ring& ring) {
-        const geometry::Box box = geometry::boundingBox(ring);
-        return (box.max.x - box.min.x) * (box.max.y - box.min.y);
-      };
-      const double share = std::min(1.0, area(observation.world.boundary) / area(scene_.boundary));
+      const double share =
+          std::min(1.0, geometry::area(geometry::boundingBox(observation.world.boundary)) /
+                            geometry::area(geometry::boundingBox(scene_.boundary)));
       roadmapOf_[j] = std::make_shared<planners::Roadmap>(observation.world, params_, lens,
                                                           random_.fork(), share);
     }

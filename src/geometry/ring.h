@@ -84,5 +84,12 @@ inline bool contains(const Box& box, Vec2 p) {
 inline bool contains(const Box& outer, const Box& inner) {
   return contains(outer, inner.min) && contains(outer, inner.max);
 }
+inline double area(const Box& box) {
+  return (box.max.x - box.min.x) * (box.max.y - box.min.y);
+}
+// The box as a counter-clockwise ring, from its lower left corner.
+inline Ring ringOf(const Box& box) {
+  return {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+}
 
 }  // namespace camcov::geometry

@@ -17,10 +17,6 @@ geometry::Box enclosing(const geometry::Box& a, const geometry::Box& b) {
           {std::max(a.max.x, b.max.x), std::max(a.max.y, b.max.y)}};
 }
 
-geometry::Ring ringOf(const geometry::Box& box) {
-  return {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
-}
-
 // Grows `region` until every object box it meets lies inside it with kObjectSpare around.
 geometry::Box grownOverObjects(geometry::Box region, const std::vector<geometry::Box>& objects) {
   for (bool grew = true; grew;) {
@@ -53,7 +49,7 @@ std::optional<World> worldInRegion(const World& world, geometry::Box region,
   // part it can reach without leaving the box.
   std::vector<BgPolygon> pieces;
   try {
-    pieces = intersectionPieces(world.boundary, ringOf(region));
+    pieces = intersectionPieces(world.boundary, geometry::ringOf(region));
   } catch (const bg::exception&) {
     return std::nullopt;  // a room Boost cannot cut (it is stricter than our loader): all of it
   }

@@ -76,8 +76,7 @@ void LabelPlacer::avoidArea(std::span<const Vec2> ring) {
 }
 
 void LabelPlacer::avoidBox(const Box& box) {
-  const std::vector<Vec2> corners{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
-  avoidArea(corners);
+  avoidArea(geometry::ringOf(box));
 }
 
 bool LabelPlacer::clear(const Box& box) const {

@@ -228,9 +228,8 @@ struct Roadmap::Impl {
     const auto budget = static_cast<std::size_t>(
         std::ceil(share * (params.planner.T2 * params.planner.milestonesPerSecond)));
     // About four milestones a cell once the roadmap is grown.
-    const double area = (w.box.max.x - w.box.min.x) * (w.box.max.y - w.box.min.y);
-    planner->useGridNeighbours(
-        std::sqrt(4.0 * area / static_cast<double>(std::max<std::size_t>(budget, 1))));
+    planner->useGridNeighbours(std::sqrt(4.0 * geometry::area(w.box) /
+                                         static_cast<double>(std::max<std::size_t>(budget, 1))));
     planner->setProblemDefinition(problem);
     planner->setup();
     planner->growRoadmap(ob::PlannerTerminationCondition([this, budget] {

@@ -10,10 +10,6 @@
 
 namespace camcov::testing {
 
-inline std::vector<geometry::Vec2> cornersOf(const geometry::Box& b) {
-  return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
-}
-
 inline bool boxesTouch(const geometry::Box& a, const geometry::Box& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
 }
@@ -24,7 +20,7 @@ inline bool boxHolds(const geometry::Box& b, geometry::Vec2 p) {
 
 // The segment crosses a side of the box or lies in it.
 inline bool boxMeetsSegment(const geometry::Box& b, geometry::Vec2 p, geometry::Vec2 q) {
-  const auto c = cornersOf(b);
+  const auto c = geometry::ringOf(b);
   for (std::size_t i = 0; i < 4; ++i) {
     if (geometry::segmentsIntersect(p, q, c[i], c[(i + 1) % 4])) return true;
   }
@@ -45,7 +41,7 @@ inline bool boxMeetsLine(const geometry::Box& b, const std::vector<geometry::Vec
 inline bool boxMeetsArea(const geometry::Box& b, const std::vector<geometry::Vec2>& ring) {
   if (ring.empty()) return false;
   if (boxMeetsLine(b, ring, true)) return true;
-  for (const geometry::Vec2 c : cornersOf(b)) {
+  for (const geometry::Vec2 c : geometry::ringOf(b)) {
     if (geometry::locate(ring, c) != geometry::Containment::Outside) return true;
   }
   return boxHolds(b, ring.front());
