@@ -57,13 +57,6 @@ void Knowledge::hearTeammate(std::size_t teammate, const control::HeardTeammate&
   if (!known || news.sentAt > known->sentAt) known = news;
 }
 
-Knowledge unionOf(std::span<const Knowledge> team) {
-  Knowledge all;
-  for (const Knowledge& camera : team)
-    all.hear(camera.objects());
-  return all;
-}
-
 void knownWorld(const Knowledge& knowledge, const kinematics::World& now, bool weighted,
                 kinematics::World& out) {
   out.time = now.time;

@@ -2,7 +2,8 @@
 // What one camera knows of the targets and obstacles under limited knowledge (docs/method.md,
 // "What a camera knows"): each object as it was when last seen — by the camera itself or by
 // whoever told it — with that time. Kept per camera, so that a method of one camera can read
-// its own; the union (unionOf) is what the team knows, which the centralized methods read.
+// its own; their union (of each object the entry seen last) is what the team knows, which the
+// centralized methods read (TeamKnowledge::known()).
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -54,9 +55,6 @@ class Knowledge {
   std::vector<KnownObject> objects_;  // targets then obstacles, by id
   std::vector<std::optional<control::HeardTeammate>> teammates_;
 };
-
-// Of each object, the entry seen last among `team`'s.
-Knowledge unionOf(std::span<const Knowledge> team);
 
 // The world a method reads at the instant `now` (the true world: its time, boundary and what
 // coverage asks, nothing of its objects): every known object where and as it was last seen (not

@@ -35,7 +35,8 @@ class TeamKnowledge {
               std::optional<std::span<const visibility::Segment>> measured = std::nullopt);
   // What each camera knows, in camera order.
   std::span<const Knowledge> cameras() const { return cameras_; }
-  // What the team knows (unionOf of cameras()), as the world the centralized methods read.
+  // What the team knows (of each object the entry of cameras() seen last), as the world the
+  // centralized methods read.
   const kinematics::World& known() const { return known_; }
   // Whether known() is the true world of the last update, object for object (its time,
   // boundary and what coverage asks are the true world's anyway): as when every object is seen

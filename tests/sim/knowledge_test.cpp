@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "reward/reward_model.h"
@@ -18,6 +19,15 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The reference for what the team knows: of each object, the entry seen last among the
+// cameras', gathered afresh.
+Knowledge unionOf(std::span<const Knowledge> team) {
+  Knowledge all;
+  for (const Knowledge& camera : team)
+    all.hear(camera.objects());
+  return all;
+}
 
 // A 1 m square target at the origin and a 2 x 1 m obstacle at (6, 0). Camera 0 at (-5, 0)
 // faces the target along +x; the target hides the obstacle from it (from (-5, 0) the target
