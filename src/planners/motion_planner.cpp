@@ -11,7 +11,9 @@
 #include <ompl/util/Console.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <unordered_map>
 
@@ -161,10 +163,17 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
     double x, y, yaw;
     bool operator==(const PoseKey&) const = default;
   };
+  // The three coordinates' bits mixed (a multiply and a shift each): std::hash<double> runs
+  // a byte-wise hash over each, a tenth of the roadmap's cost lookups. −0 hashes as 0, which
+  // it equals.
   struct PoseHash {
     std::size_t operator()(const PoseKey& k) const {
-      const std::hash<double> h;
-      return h(k.x) ^ (h(k.y) * 0x9e3779b97f4a7c15ull) ^ (h(k.yaw) * 0xc2b2ae3d27d4eb4full);
+      std::uint64_t h = 0;
+      for (const double v : {k.x, k.y, k.yaw}) {
+        h = (h ^ std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v)) * 0x9e3779b97f4a7c15ull;
+        h ^= h >> 29;
+      }
+      return static_cast<std::size_t>(h);
     }
   };
 
@@ -180,15 +189,12 @@ class SharedRoadmap final : public og::PRMstar {
  public:
   using PRMstar::PRMstar;
 
-  // Exact neighbours from a grid of cells of side `cell` (m), with no random pivots (GNAT's);
-  // before setup(), which hands them to PRM*'s connection strategy.
-  void useGridNeighbours(double cell) {
-    nn_ = std::make_shared<GridNearestNeighbors<Vertex>>(cell, [this](const Vertex v) {
-      const auto* s = stateProperty_[v]->as<ob::SE2StateSpace::StateType>();
-      return geometry::Vec2{s->getX(), s->getY()};
-    });
-    nn_->setDistanceFunction(
-        [this](const Vertex a, const Vertex b) { return distanceFunction(a, b); });
+  // Exact neighbours from a grid of cells of side `cell` (m) over `box`, with no random pivots
+  // (GNAT's); before setup(), which hands them to PRM*'s connection strategy. The grid works
+  // out the SE(2) distance itself, as PRM's distanceFunction would.
+  void useGridNeighbours(double cell, const geometry::Box& box) {
+    nn_ = std::make_shared<GridNearestNeighbors<Vertex>>(
+        cell, box, [this](const Vertex v) { return toPose(stateProperty_[v]); });
   }
 
   ob::PathPtr connect(const ob::State* start, const ob::State* goal) {
@@ -229,7 +235,8 @@ struct Roadmap::Impl {
         std::ceil(share * (params.planner.T2 * params.planner.milestonesPerSecond)));
     // About four milestones a cell once the roadmap is grown.
     planner->useGridNeighbours(std::sqrt(4.0 * geometry::area(w.box) /
-                                         static_cast<double>(std::max<std::size_t>(budget, 1))));
+                                         static_cast<double>(std::max<std::size_t>(budget, 1))),
+                               w.box);
     planner->setProblemDefinition(problem);
     planner->setup();
     planner->growRoadmap(ob::PlannerTerminationCondition([this, budget] {

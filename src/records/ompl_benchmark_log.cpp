@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <exception>
 #include <map>
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
 #include "records/run_files.h"
+#include "util/worker_pool.h"
 
 namespace camcov::records {
 
@@ -96,9 +98,10 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
 }
 
 std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
-                                             const params::Parameters& parameters) {
+                                             const params::Parameters& parameters,
+                                             unsigned workers) {
   // Stems are "<scene>-<method>-seed<N>" (runStem); methods and seeds have no dashes, so
-  // the scene is everything before the last two. One scene in memory at a time.
+  // the scene is everything before the last two. One scene a worker in memory at a time.
   std::map<std::string, std::vector<fs::path>> byScene;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder.runsDir(), ec)) {
@@ -111,19 +114,29 @@ std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
     if (methodDash != std::string::npos) byScene[stem.substr(0, methodDash)].push_back(p);
   }
   const auto timings = folder.readTimings();
-  std::vector<fs::path> written;
-  for (auto& [scene, files] : byScene) {
-    std::sort(files.begin(), files.end());
-    std::vector<RunRecord> runs;
-    for (const auto& file : files)
-      runs.push_back(loadRunFile(file));
-    std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) {
-      return std::tie(a.metadata.method, a.metadata.seed) <
-             std::tie(b.metadata.method, b.metadata.seed);
-    });
-    const fs::path file = folder.omplDir() / (scene + ".log");
-    writeFileAtomically(file, omplBenchmarkLog(scene, runs, timings, parameters));
-    written.push_back(file);
+  std::vector<std::pair<std::string, std::vector<fs::path>>> scenes(byScene.begin(), byScene.end());
+  std::vector<fs::path> written(scenes.size());
+  std::vector<std::exception_ptr> errors(scenes.size());
+  forEachOnWorkers(scenes.size(), workers, [&](std::size_t i) {
+    try {
+      auto& [scene, files] = scenes[i];
+      std::sort(files.begin(), files.end());
+      std::vector<RunRecord> runs;
+      for (const auto& file : files)
+        runs.push_back(loadRunFile(file));
+      std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) {
+        return std::tie(a.metadata.method, a.metadata.seed) <
+               std::tie(b.metadata.method, b.metadata.seed);
+      });
+      written[i] = folder.omplDir() / (scene + ".log");
+      writeFileAtomically(written[i], omplBenchmarkLog(scene, runs, timings, parameters));
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
+  // The first scene's error in scene order, as one worker would have met it.
+  for (const auto& error : errors) {
+    if (error) std::rethrow_exception(error);
   }
   return written;
 }

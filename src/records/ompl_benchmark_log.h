@@ -17,8 +17,10 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
                              const std::map<std::string, JobTiming>& timings,
                              const params::Parameters& parameters);
 
-// Writes <out>/ompl/<scene>.log for every scene with runs in the folder; returns the files.
+// Writes <out>/ompl/<scene>.log for every scene with runs in the folder, `workers` scenes at a
+// time (reading a scene's run files back is most of the time); returns the files in scene order.
 std::vector<std::filesystem::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
-                                                          const params::Parameters& parameters);
+                                                          const params::Parameters& parameters,
+                                                          unsigned workers = 1);
 
 }  // namespace camcov::records

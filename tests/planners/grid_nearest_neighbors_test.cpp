@@ -1,11 +1,13 @@
-// The roadmap's grid neighbours against OMPL's exhaustive search, the independent reference:
-// the same neighbours in the same order, for k-nearest and radius queries, under the SE(2)
-// distance PRM* uses (‖Δxy‖ + ½|Δγ|), with points clustered, spread, off the grid's cells and
-// coincident in the plane.
+// The roadmap's grid neighbours against OMPL's exhaustive search under OMPL's own SE(2)
+// distance, the independent reference: the same distances to the bit, the same neighbours in
+// the same order, for k-nearest and radius queries, with points clustered, spread, off the
+// grid's cells, far outside the box it was laid out over, and coincident in the plane.
 #include "planners/grid_nearest_neighbors.h"
 
 #include <gtest/gtest.h>
 
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/datastructures/NearestNeighborsLinear.h>
 
 #include <cmath>
@@ -17,29 +19,43 @@
 namespace camcov::planners {
 namespace {
 
-struct Pose {
-  double x, y, yaw;
-};
+using geometry::Pose;
+namespace ob = ompl::base;
 
-double se2(const Pose& a, const Pose& b) {
-  const double d = std::abs(a.yaw - b.yaw);
-  return std::hypot(a.x - b.x, a.y - b.y) +
-         0.5 * (d > std::numbers::pi ? 2 * std::numbers::pi - d : d);
+// OMPL's SE(2) distance between two poses, as PRM* measures its milestones.
+double omplDistance(const Pose& a, const Pose& b) {
+  static const auto space = std::make_shared<ob::SE2StateSpace>();
+  ob::ScopedState<ob::SE2StateSpace> s(space), t(space);
+  s->setXY(a.x, a.y);
+  s->setYaw(a.yaw);
+  t->setXY(b.x, b.y);
+  t->setYaw(b.yaw);
+  return space->distance(s.get(), t.get());
+}
+
+TEST(GridNearestNeighbors, MeasuresTheSe2DistanceToTheBitAsOmplDoes) {
+  testing::SplitMix64 random{5};
+  for (int i = 0; i < 100000; ++i) {
+    const Pose a{random.uniform(-1e3, 1e3), random.uniform(-1e-3, 1e-3),
+                 random.uniform(-std::numbers::pi, std::numbers::pi)};
+    const Pose b{a.x + random.uniform(-50, 50), random.uniform(-1e3, 1e3),
+                 i % 7 == 0 ? a.yaw : random.uniform(-std::numbers::pi, std::numbers::pi)};
+    ASSERT_EQ(GridNearestNeighbors<int>::se2Distance(a, b), omplDistance(a, b))
+        << a.x << " " << a.y << " " << a.yaw << " / " << b.x << " " << b.y << " " << b.yaw;
+  }
 }
 
 TEST(GridNearestNeighbors, FindsWhatTheExhaustiveSearchFindsInTheSameOrder) {
   testing::SplitMix64 random{17};
   std::vector<Pose> poses;
-  const auto distance = [&poses](std::size_t a, std::size_t b) { return se2(poses[a], poses[b]); };
   for (const double cell : {0.5, 3.0, 40.0}) {
     SCOPED_TRACE(cell);
     poses.clear();
-    GridNearestNeighbors<std::size_t> grid(cell, [&poses](std::size_t i) {
-      return geometry::Vec2{poses[i].x, poses[i].y};
-    });
+    GridNearestNeighbors<std::size_t> grid(cell, geometry::Box{{-30, -30}, {30, 30}},
+                                           [&poses](std::size_t i) { return poses[i]; });
     ompl::NearestNeighborsLinear<std::size_t> linear;
-    grid.setDistanceFunction(distance);
-    linear.setDistanceFunction(distance);
+    linear.setDistanceFunction(
+        [&poses](std::size_t a, std::size_t b) { return omplDistance(poses[a], poses[b]); });
     std::vector<std::size_t> fromGrid, fromLinear;
     for (std::size_t i = 0; i < 1500; ++i) {
       // Most spread over a 60 m square, some in a tight cluster, a few far outside it, some on

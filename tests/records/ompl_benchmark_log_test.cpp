@@ -1,0 +1,84 @@
+// The OMPL benchmark logs of a batch folder: one per scene, the same bytes whether one worker
+// or several read the run files back, and a broken run file reported as one worker meets it.
+#include "records/ompl_benchmark_log.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "records/run_files.h"
+#include "support/scratch.h"
+
+namespace camcov::records {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A run of `scene` by `method` with `seed`, whose coverage tells them apart.
+RunRecord runOf(const std::string& scene, const std::string& method, std::uint64_t seed) {
+  RunRecord run;
+  run.metadata = {scene, "scenes/" + scene + ".json", 0x42, method, seed, {}, "9.9.9"};
+  run.summary.steps = 3;
+  run.summary.duration = 0.3;
+  const double coverage = 0.125 * static_cast<double>(seed) + (method == "paper" ? 0.5 : 0.0);
+  run.summary.averageCoverage = coverage;
+  run.summary.averageUtilization = 0.5;
+  for (int k = 0; k < 3; ++k) {
+    StepRow row;
+    row.time = 0.1 * k;
+    row.terms.coverage = row.terms.weightedCoverage = coverage;
+    row.terms.utilization = 0.5;
+    row.cameras = {{1.0, 2.0, 0.5}};
+    row.goals = {std::nullopt};
+    run.steps.push_back(row);
+  }
+  return run;
+}
+
+// The batch folder `dir` with seven scenes, two methods and three seeds each.
+BatchFolder batchWithRuns(const fs::path& dir) {
+  const BatchFolder folder(dir);
+  fs::create_directories(folder.runsDir());
+  for (int s = 0; s < 7; ++s) {
+    for (const char* method : {"paper", "local"}) {
+      for (std::uint64_t seed = 1; seed <= 3; ++seed)
+        writeRunFiles(runOf("scene_" + std::to_string(s), method, seed), folder.runsDir());
+    }
+  }
+  return folder;
+}
+
+TEST(OmplBenchmarkLogs, AreTheSameBytesWhateverTheNumberOfWorkers) {
+  const BatchFolder one = batchWithRuns(testing::freshDir("one"));
+  const BatchFolder three = batchWithRuns(testing::freshDir("three"));
+  const params::Parameters parameters;
+  const auto fromOne = writeOmplBenchmarkLogs(one, parameters, 1);
+  const auto fromThree = writeOmplBenchmarkLogs(three, parameters, 3);
+  ASSERT_EQ(fromOne.size(), 7u);
+  ASSERT_EQ(fromThree.size(), 7u);
+  for (std::size_t i = 0; i < fromOne.size(); ++i) {
+    EXPECT_EQ(fromOne[i].filename(), fromThree[i].filename());
+    EXPECT_EQ(fromOne[i].filename(), "scene_" + std::to_string(i) + ".log");
+    const std::string text = testing::readFile(fromOne[i]);
+    EXPECT_NE(text.find("2 planners"), std::string::npos);
+    EXPECT_EQ(text, testing::readFile(fromThree[i]));
+  }
+}
+
+TEST(OmplBenchmarkLogs, ABrokenRunFileIsReportedAsOneWorkerMeetsIt) {
+  for (const unsigned workers : {1u, 4u}) {
+    SCOPED_TRACE(workers);
+    const BatchFolder folder = batchWithRuns(testing::freshDir("broken"));
+    for (const char* stem : {"scene_2-local-seed2", "scene_5-paper-seed1"})
+      std::ofstream(folder.runFile(stem)) << "{ not json";
+    try {
+      writeOmplBenchmarkLogs(folder, params::Parameters{}, workers);
+      ADD_FAILURE() << "no error";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find("scene_2-local-seed2"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace camcov::records
