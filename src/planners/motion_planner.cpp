@@ -15,9 +15,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <unordered_map>
+#include <optional>
 
 #include "planners/grid_nearest_neighbors.h"
+#include "planners/pose_memo.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
 #include "reward/reward_model.h"
@@ -49,6 +50,13 @@ void fromPose(const geometry::Pose& p, ob::State* s) {
   se2->setYaw(yaw >= std::numbers::pi ? yaw - 2.0 * std::numbers::pi : yaw);
 }
 
+// What the roadmap has worked out about a pose: eq. (10)'s state cost, and whether it lies
+// strictly inside the room; each at most once.
+struct PoseFacts {
+  std::optional<double> cost;
+  std::optional<bool> inside;
+};
+
 // Everything the planner's callbacks share: the world at the planning instant.
 struct PlanningWorld {
   PlanningWorld(const kinematics::World& w, const params::Parameters& params,
@@ -76,6 +84,7 @@ struct PlanningWorld {
   std::vector<geometry::Ring> objects;
   VisibilitySampler sampler;
   std::size_t samplesDrawn = 0;
+  PoseMemo<PoseFacts> facts;
 };
 
 // The sampler of section V-C: uniform with probability p, otherwise a pose that sees a point
@@ -112,13 +121,14 @@ class CoverageSampler final : public ob::ValidStateSampler {
 
 // Motions checked exactly against the objects (StateValidity::isValidMotion) instead of
 // OMPL's sampling at a resolution: faster, and no thin object slips between two samples.
+// Whether a milestone is inside the room is worked out once, not once per edge tried.
 class ExactMotionValidator final : public ob::MotionValidator {
  public:
-  ExactMotionValidator(ob::SpaceInformation* si, const StateValidity& validity)
-      : MotionValidator(si), validity_(validity) {}
+  ExactMotionValidator(ob::SpaceInformation* si, PlanningWorld& w) : MotionValidator(si), w_(w) {}
 
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
-    const bool ok = validity_.isValidMotion(toPose(s1).position(), toPose(s2).position());
+    const geometry::Pose a = toPose(s1), b = toPose(s2);
+    const bool ok = inside(a) && inside(b) && w_.validity.staysClear(a.position(), b.position());
     ok ? ++valid_ : ++invalid_;
     return ok;
   }
@@ -134,12 +144,17 @@ class ExactMotionValidator final : public ob::MotionValidator {
   }
 
  private:
-  const StateValidity& validity_;
+  bool inside(const geometry::Pose& p) const {
+    PoseFacts& facts = w_.facts[p];
+    if (!facts.inside) facts.inside = w_.validity.insideBoundary(p.position());
+    return *facts.inside;
+  }
+
+  PlanningWorld& w_;
 };
 
 // eq. (10): cost(p1, p2) = ½(1/reward({p1}) + 1/reward({p2})) · (‖Δxy‖ + ½|Δγ|), after OMPL's
-// StateCostIntegralObjective. A state's cost is computed once per distinct pose: the cache
-// is keyed by the pose itself, not the State pointer, since OMPL also passes short-lived copies.
+// StateCostIntegralObjective. A state's cost is computed once per distinct pose (PoseFacts).
 class CoverageCostObjective final : public ob::OptimizationObjective {
  public:
   CoverageCostObjective(const ob::SpaceInformationPtr& si, PlanningWorld& w)
@@ -149,9 +164,9 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
 
   ob::Cost stateCost(const ob::State* s) const override {
     const geometry::Pose p = toPose(s);
-    const auto [it, fresh] = cache_.try_emplace(PoseKey{p.x, p.y, p.yaw}, 0.0);
-    if (fresh) it->second = 1.0 / std::max(w_.reward.reward(std::span(&p, 1)), kMinReward);
-    return ob::Cost(it->second);
+    PoseFacts& facts = w_.facts[p];
+    if (!facts.cost) facts.cost = 1.0 / std::max(w_.reward.reward(std::span(&p, 1)), kMinReward);
+    return ob::Cost(*facts.cost);
   }
 
   ob::Cost motionCost(const ob::State* a, const ob::State* b) const override {
@@ -159,26 +174,7 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
   }
 
  private:
-  struct PoseKey {
-    double x, y, yaw;
-    bool operator==(const PoseKey&) const = default;
-  };
-  // The three coordinates' bits mixed (a multiply and a shift each): std::hash<double> runs
-  // a byte-wise hash over each, a tenth of the roadmap's cost lookups. −0 hashes as 0, which
-  // it equals.
-  struct PoseHash {
-    std::size_t operator()(const PoseKey& k) const {
-      std::uint64_t h = 0;
-      for (const double v : {k.x, k.y, k.yaw}) {
-        h = (h ^ std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v)) * 0x9e3779b97f4a7c15ull;
-        h ^= h >> 29;
-      }
-      return static_cast<std::size_t>(h);
-    }
-  };
-
   PlanningWorld& w_;
-  mutable std::unordered_map<PoseKey, double, PoseHash> cache_;
 };
 
 // PRM* whose roadmap is grown once and then queried by every camera: start and goal join the
@@ -223,7 +219,7 @@ struct Roadmap::Impl {
       const auto p = toPose(s);
       return w.validity.isValid(p.position());
     });
-    si->setMotionValidator(std::make_shared<ExactMotionValidator>(si.get(), w.validity));
+    si->setMotionValidator(std::make_shared<ExactMotionValidator>(si.get(), w));
     si->setValidStateSamplerAllocator(
         [this](const ob::SpaceInformation* s) { return std::make_shared<CoverageSampler>(s, w); });
     si->setup();

@@ -41,8 +41,7 @@ bool StateValidity::insideBoundary(geometry::Vec2 p) const {
   return geometry::locate(world_->boundary, p, 0.0) == geometry::Containment::Inside;
 }
 
-bool StateValidity::isValidMotion(geometry::Vec2 a, geometry::Vec2 b) const {
-  if (!insideBoundary(a) || !insideBoundary(b)) return false;
+bool StateValidity::staysClear(geometry::Vec2 a, geometry::Vec2 b) const {
   const std::size_t n = world_->boundary.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (geometry::segmentsIntersect(a, b, world_->boundary[i], world_->boundary[(i + 1) % n])) {

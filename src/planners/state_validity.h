@@ -25,7 +25,12 @@ class StateValidity {
   // touched, and every object at least d1 from the segment — or, where one end is already
   // closer (only a camera's current pose can be), no closer than that end, and the other end
   // valid: a camera too close may only move away. Exact, not sampled.
-  bool isValidMotion(geometry::Vec2 a, geometry::Vec2 b) const;
+  bool isValidMotion(geometry::Vec2 a, geometry::Vec2 b) const {
+    return insideBoundary(a) && insideBoundary(b) && staysClear(a, b);
+  }
+  // isValidMotion for ends already known to be strictly inside the boundary: no boundary edge
+  // touched, and the objects kept at their distance.
+  bool staysClear(geometry::Vec2 a, geometry::Vec2 b) const;
   double d1() const { return d1_; }
 
  private:
