@@ -1,5 +1,7 @@
 #include "records/optimum_file.h"
 
+#include <fmt/format.h>
+
 #include <fstream>
 
 #include "params/parameter_table.h"
@@ -19,26 +21,28 @@ nlohmann::json optimumToJson(const OptimumFile& f) {
     curve.push_back(
         {{"evaluations", step.evaluations}, {"reward", step.reward}, {"coverage", step.coverage}});
   }
-  return {{"format", kOptimumFormat},
-          {"note",
-           "the best team pose a random, local search found: a reference, not a proof of "
-           "optimality; the curve shows how the best grew with the budget"},
-          {"scene", {{"name", f.scene}, {"file", f.sceneFile}, {"hash", f.sceneHash}}},
-          {"time", f.time},
-          {"seed", f.seed},
-          {"budget", f.budget},
-          {"parameters", params::toJson(f.parameters)},
-          {"best",
-           {{"poses", poses},
-            {"coverage", r.terms.coverage},
-            {"utilization", r.terms.utilization},
-            {"repulsion", r.terms.repulsion},
-            {"reward", r.terms.reward}}},
-          {"found", {{"round", r.foundInRound}, {"by", r.foundBy}, {"evaluations", r.foundAt}}},
-          {"travelTime", finiteOrNull(f.travelTime)},
-          {"rounds", r.rounds},
-          {"evaluations", r.evaluations},
-          {"curve", curve}};
+  return {
+      {"format", kOptimumFormat},
+      {"note",
+       "the best team pose a random, local search found: a reference, not a proof of "
+       "optimality; the curve shows how the best grew with the budget"},
+      {"scene",
+       {{"name", f.scene}, {"file", f.sceneFile}, {"hash", fmt::format("{:016x}", f.sceneHash)}}},
+      {"time", f.time},
+      {"seed", f.seed},
+      {"budget", f.budget},
+      {"parameters", params::toJson(f.parameters)},
+      {"best",
+       {{"poses", poses},
+        {"coverage", r.terms.coverage},
+        {"utilization", r.terms.utilization},
+        {"repulsion", r.terms.repulsion},
+        {"reward", r.terms.reward}}},
+      {"found", {{"round", r.foundInRound}, {"by", r.foundBy}, {"evaluations", r.foundAt}}},
+      {"travelTime", finiteOrNull(f.travelTime)},
+      {"rounds", r.rounds},
+      {"evaluations", r.evaluations},
+      {"curve", curve}};
 }
 
 OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) {
@@ -50,7 +54,11 @@ OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) 
     OptimumFile f;
     f.scene = j.at("scene").at("name").get<std::string>();
     f.sceneFile = j.at("scene").at("file").get<std::string>();
-    f.sceneHash = wholeNumberFrom<std::uint64_t>(j.at("scene").at("hash"), "scene.hash", source);
+    // Sixteen hexadecimal digits, as in run files and batch.json; files written before that
+    // hold a JSON number, which readers in JavaScript or Python round past 2^53.
+    const nlohmann::json& hash = j.at("scene").at("hash");
+    f.sceneHash = hash.is_string() ? hashFrom(hash, "scene.hash", source)
+                                   : wholeNumberFrom<std::uint64_t>(hash, "scene.hash", source);
     f.time = j.at("time").get<double>();
     f.seed = wholeNumberFrom<std::uint64_t>(j.at("seed"), "seed", source);
     f.budget = wholeNumberFrom<std::int64_t>(j.at("budget"), "budget", source);
