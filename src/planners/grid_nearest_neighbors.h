@@ -5,11 +5,12 @@
 // generator, which would make roadmaps depend on what else ran in the process.
 //
 // The elements are bucketed by their position in a uniform grid of square cells (side h),
-// held densely over the range of cells that hold elements; a query visits the cells ring by
-// ring outwards from its own. The distance is OMPL's SE(2) distance, ‖Δxy‖ + ½|Δγ|, worked
-// out here from the poses kept beside the elements with OMPL's own operations in its order
-// (so to the bit what SE2StateSpace::distance returns, without its virtual calls and the
-// jumps to each state); it is at least the planar distance ‖Δxy‖, so no element of a cell
+// laid out densely over the box where they are expected; a query visits the cells ring by ring
+// outwards from its own. The few elements outside that box are kept aside and measured by
+// every query, so one far away never makes the grid large. The distance is OMPL's SE(2) distance,
+// ‖Δxy‖ + ½|Δγ|, worked out here from the poses kept beside the elements with OMPL's own operations
+// in its order (so to the bit what SE2StateSpace::distance returns, without its virtual calls and
+// the jumps to each state); it is at least the planar distance ‖Δxy‖, so no element of a cell
 // farther than the k-th best (or than the radius) can qualify, and the search stops there.
 // Results are those of NearestNeighborsLinear, sorted by distance, ties in the order the
 // elements were added (Linear leaves ties to std::partial_sort: with distances of random
@@ -38,38 +39,31 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
   using PoseFn = std::function<geometry::Pose(const T&)>;
 
   // `cell`: the side h of a cell, m (> 0); about a handful of elements per cell is best.
-  // `expected`: where most elements will lie (the cells over it are laid out at once; an
-  // element outside it widens the grid).
-  GridNearestNeighbors(double cell, geometry::Box expected, PoseFn pose)
-      : cell_(cell), pose_(std::move(pose)) {
-    layOut(keyOf(expected.min), keyOf(expected.max));
+  // `expected`: where the elements will lie (finite), over which the cells are laid out.
+  GridNearestNeighbors(double cell, const geometry::Box& expected, PoseFn pose)
+      : cell_(cell), pose_(std::move(pose)), lo_(keyOf(expected.min)), hi_(keyOf(expected.max)) {
+    cells_.resize(static_cast<std::size_t>((hi_.x - lo_.x + 1) * (hi_.y - lo_.y + 1)));
   }
 
   bool reportsSortedResults() const override { return true; }
   void clear() override {
     for (auto& cell : cells_)
       cell.clear();
+    outside_.clear();
     all_.clear();
     next_ = 0;
   }
   void add(const T& data) override {
     const geometry::Pose p = pose_(data);
-    const Key k = keyOf(p.position());
-    if (k.x < lo_.x || k.x > hi_.x || k.y < lo_.y || k.y > hi_.y) {
-      layOut({std::min(lo_.x, k.x), std::min(lo_.y, k.y)},
-             {std::max(hi_.x, k.x), std::max(hi_.y, k.y)});
-    }
-    cellAt(k).push_back({p, data, next_++});
+    bucketOf(keyOf(p.position())).push_back({p, data, next_++});
     all_.push_back(data);
   }
   bool remove(const T& data) override {
-    const Key k = keyOf(pose_(data).position());
-    if (k.x < lo_.x || k.x > hi_.x || k.y < lo_.y || k.y > hi_.y) return false;
-    auto& cell = cellAt(k);
+    auto& bucket = bucketOf(keyOf(pose_(data).position()));
     const auto found =
-        std::find_if(cell.begin(), cell.end(), [&](const Entry& e) { return e.data == data; });
-    if (found == cell.end()) return false;
-    cell.erase(found);
+        std::find_if(bucket.begin(), bucket.end(), [&](const Entry& e) { return e.data == data; });
+    if (found == bucket.end()) return false;
+    bucket.erase(found);
     all_.erase(std::find(all_.begin(), all_.end(), data));
     return true;
   }
@@ -85,7 +79,9 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     found_.clear();
     const geometry::Pose p = pose_(data);
     const Key centre = keyOf(p.position());
-    for (std::int64_t ring = 0;; ++ring) {
+    for (const Entry& e : outside_)
+      consider(p, e, k);
+    for (std::int64_t ring = firstRing(centre);; ++ring) {
       // Every cell of this ring and beyond lies at least (ring − 1)·h away in the plane.
       if (found_.size() >= k && beyond(ring, kthBest(k))) break;
       if (!visitRing(centre, ring, [&](const Entry& e) { consider(p, e, k); })) break;
@@ -97,12 +93,14 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     found_.clear();
     const geometry::Pose p = pose_(data);
     const Key centre = keyOf(p.position());
-    for (std::int64_t ring = 0; !beyond(ring, radius); ++ring) {
-      const bool more = visitRing(centre, ring, [&](const Entry& e) {
-        const double d = se2Distance(p, e.pose);
-        if (d <= radius) found_.push_back({d, e.order, e.data});
-      });
-      if (!more) break;
+    const auto within = [&](const Entry& e) {
+      const double d = se2Distance(p, e.pose);
+      if (d <= radius) found_.push_back({d, e.order, e.data});
+    };
+    for (const Entry& e : outside_)
+      within(e);
+    for (std::int64_t ring = firstRing(centre); !beyond(ring, radius); ++ring) {
+      if (!visitRing(centre, ring, within)) break;
     }
     finish(found_.size(), nbh);
   }
@@ -151,26 +149,22 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
   std::size_t indexOf(std::int64_t x, std::int64_t y) const {
     return static_cast<std::size_t>((y - lo_.y) * (hi_.x - lo_.x + 1) + (x - lo_.x));
   }
-  std::vector<Entry>& cellAt(Key k) { return cells_[indexOf(k.x, k.y)]; }
-  // Cells for keys lo..hi, the elements kept in theirs.
-  void layOut(Key lo, Key hi) {
-    std::vector<std::vector<Entry>> old = std::move(cells_);
-    const Key oldLo = lo_, oldHi = hi_;
-    lo_ = lo;
-    hi_ = hi;
-    cells_.assign(static_cast<std::size_t>((hi_.x - lo_.x + 1) * (hi_.y - lo_.y + 1)), {});
-    for (std::int64_t y = oldLo.y; !old.empty() && y <= oldHi.y; ++y) {
-      for (std::int64_t x = oldLo.x; x <= oldHi.x; ++x) {
-        cells_[indexOf(x, y)] = std::move(
-            old[static_cast<std::size_t>((y - oldLo.y) * (oldHi.x - oldLo.x + 1) + (x - oldLo.x))]);
-      }
-    }
+  // The cell of key k, or the elements kept aside if k lies off the grid.
+  std::vector<Entry>& bucketOf(Key k) {
+    const bool onGrid = k.x >= lo_.x && k.x <= hi_.x && k.y >= lo_.y && k.y <= hi_.y;
+    return onGrid ? cells_[indexOf(k.x, k.y)] : outside_;
   }
   // Every point of the cells `ring` cells away from the query's (Chebyshev) lies farther than
   // `distance` in the plane, so farther by the SE(2) distance too: the slack keeps the
   // rounding of that distance from mattering.
   bool beyond(std::int64_t ring, double distance) const {
     return static_cast<double>(ring - 1) * cell_ > distance * (1.0 + 1e-9);
+  }
+  // The first ring around `centre` that holds a cell of the grid (0 if it lies on the grid):
+  // the rings inside it hold nothing, and a query far off the grid starts there.
+  std::int64_t firstRing(Key centre) const {
+    return std::max<std::int64_t>(
+        {0, lo_.x - centre.x, centre.x - hi_.x, lo_.y - centre.y, centre.y - hi_.y});
   }
   // The cells `ring` cells away from `centre`; false once the rings inside it hold every cell
   // of the grid (nothing farther can be found).
@@ -196,7 +190,8 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     }
     visitRow(centre.y - ring, centre.x - ring, centre.x + ring);
     visitRow(centre.y + ring, centre.x - ring, centre.x + ring);
-    for (std::int64_t y = centre.y - ring + 1; y <= centre.y + ring - 1; ++y) {
+    for (std::int64_t y = std::max(centre.y - ring + 1, lo_.y);
+         y <= std::min(centre.y + ring - 1, hi_.y); ++y) {
       visitRow(y, centre.x - ring, centre.x - ring);
       visitRow(y, centre.x + ring, centre.x + ring);
     }
@@ -225,10 +220,11 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
 
   double cell_;
   PoseFn pose_;
+  Key lo_, hi_;                            // the range of cells laid out
   std::vector<std::vector<Entry>> cells_;  // row by row over lo_..hi_
+  std::vector<Entry> outside_;             // the elements off the grid
   std::vector<T> all_;                     // in the order added, as Linear lists them
   std::uint64_t next_ = 0;
-  Key lo_, hi_;  // the range of cells laid out
   mutable std::vector<Found> found_;
 };
 
