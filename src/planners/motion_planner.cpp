@@ -11,7 +11,6 @@
 #include <ompl/util/Console.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
