@@ -82,7 +82,9 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     try {
       throwIfInterrupted();
       const records::RunRecord run = runJob(job.spec);
-      records::writeRunFiles(run, folder.runsDir());
+      // Not flushed run by run (a twentieth of the protocol's time): a resume runs again a run
+      // whose files a power cut left empty or short, and the file system is flushed once below.
+      records::writeRunFiles(run, folder.runsDir(), records::Durability::Deferred);
       folder.removeFailure(job.stem);
       outcome.summary = run.summary;
     } catch (const Interrupted&) {
@@ -105,6 +107,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     batch.outcomes[pending[k]] = std::move(outcome);
     batch.timings[job.stem] = timing;
   });
+  records::flushFileSystemOf(folder.root());
   // The folder keeps the timings of every job it holds, from earlier runs too.
   auto timings = folder.readTimings();
   for (const auto& [stem, t] : batch.timings)

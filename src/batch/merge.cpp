@@ -33,8 +33,15 @@ std::vector<RunFileEntry> checkedRunFiles(const records::BatchFolder& source) {
   for (const auto& entry : fs::directory_iterator(source.runsDir(), ec)) {
     if (records::isTemporaryFile(entry.path())) continue;
     RunFileEntry file{entry.path(), std::nullopt};
-    if (entry.path().extension() == ".json" && entry.path().stem().extension() != ".error")
-      file.run = records::loadRunFile(entry.path()).metadata;  // InputError if it is damaged
+    if (entry.path().extension() == ".json" && entry.path().stem().extension() != ".error") {
+      const records::RunRecord run = records::loadRunFile(entry.path());  // InputError if damaged
+      if (!records::runCsvIsWhole(run, entry.path())) {
+        throw InputError(entry.path().string() +
+                         ": its CSV is missing or cut short (the machine stopped while the batch "
+                         "ran?); run the batch there again (camcov bench resumes it)");
+      }
+      file.run = run.metadata;
+    }
     files.push_back(std::move(file));
   }
   std::sort(files.begin(), files.end(), [](const RunFileEntry& a, const RunFileEntry& b) {

@@ -51,7 +51,8 @@ void prepareOutputFile(const std::filesystem::path& file) {
     throw InputError("cannot create folder " + file.parent_path().string() + ": " + ec.message());
 }
 
-void writeFileAtomically(const std::filesystem::path& file, std::string_view content) {
+void writeFileAtomically(const std::filesystem::path& file, std::string_view content,
+                         Durability durability) {
   prepareOutputFile(file);
   const std::filesystem::path temporary =
       file.string() + std::string(kTemporaryMarker) + std::to_string(::getpid());
@@ -72,7 +73,7 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view con
     }
     written += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+  if ((durability == Durability::Synced && ::fsync(fd) != 0) || ::close(fd) != 0) {
     const std::string message = systemError("cannot flush", temporary);
     ::unlink(temporary.c_str());
     throw std::runtime_error(message);
@@ -82,6 +83,15 @@ void writeFileAtomically(const std::filesystem::path& file, std::string_view con
     ::unlink(temporary.c_str());
     throw std::runtime_error(message);
   }
+}
+
+void flushFileSystemOf(const std::filesystem::path& folder) {
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(systemError("cannot open", folder));
+  const bool flushed = ::syncfs(fd) == 0;
+  const std::string message = flushed ? "" : systemError("cannot flush the file system of", folder);
+  ::close(fd);
+  if (!flushed) throw std::runtime_error(message);
 }
 
 void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to) {

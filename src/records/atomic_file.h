@@ -1,8 +1,8 @@
 #pragma once
 // Results files appear whole or not at all: written to a temporary file beside the target,
-// flushed to disk, then renamed over it (rename is atomic within a file system). A killed
-// run leaves at most a stray "*.tmp-*" file, never a half-written result (and the CLI ended by
-// a signal not even that: util/temporary_outputs.h).
+// flushed to disk (unless deferred, below), then renamed over it (rename is atomic within a
+// file system). A killed run leaves at most a stray "*.tmp-*" file, never a half-written
+// result (and the CLI ended by a signal not even that: util/temporary_outputs.h).
 #include <filesystem>
 #include <string_view>
 
@@ -16,10 +16,28 @@ namespace camcov::records {
 // of the tool is checked the same way.
 void prepareOutputFile(const std::filesystem::path& file);
 
+// Whether a file is on the disk when writeFileAtomically returns, or only in the system's
+// cache, whole to every process, until the system writes it back.
+enum class Durability {
+  // Flushed before the rename: a power cut leaves the old file or the new one.
+  Synced,
+  // Left for the system to write back. A kill still leaves the old file or the new one whole;
+  // a power cut may leave the new one empty or cut short. For files whose reader detects that
+  // and makes them again: a batch's run files (records::runFilesAreWhole), thousands of them,
+  // whose flushes cost a twentieth of the published protocol's time; the batch flushes its file
+  // system once when it ends (flushFileSystemOf).
+  Deferred,
+};
+
 // Throws InputError if the target is refused (prepareOutputFile) or the folder cannot be
 // created or written (a bad --out), and std::runtime_error for failures while writing (e.g.
 // the disk is full).
-void writeFileAtomically(const std::filesystem::path& file, std::string_view content);
+void writeFileAtomically(const std::filesystem::path& file, std::string_view content,
+                         Durability durability = Durability::Synced);
+
+// Flushes to disk everything written to the file system that holds `folder` (syncfs):
+// std::runtime_error if the system reports a failed write-back.
+void flushFileSystemOf(const std::filesystem::path& folder);
 
 // The same for a copy of `from` (InputError if it cannot be read).
 void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);

@@ -144,6 +144,9 @@ std::optional<JobOutcome> BatchFolder::finishedJob(const std::string& stem,
   } catch (const InputError&) {
     return std::nullopt;  // unreadable: run it again, the new file replaces it atomically
   }
+  // A batch defers the flush of its run files (Durability::Deferred): after a power cut, one
+  // that reads but whose CSV was cut short runs again too.
+  if (!runCsvIsWhole(run, file)) return std::nullopt;
   if (run.metadata.sceneHash != sceneHash ||
       params::toJson(run.metadata.parameters) != params::toJson(parameters)) {
     return std::nullopt;

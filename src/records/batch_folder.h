@@ -108,8 +108,8 @@ class BatchFolder {
 
   // Deletes "*.tmp-*" files a killed batch may have left.
   void removeStaleTemporaries() const;
-  // The finished job's summary if runs/<stem>.json exists and was made with these parameters
-  // from a scene with this hash; nullopt means the job must run (again).
+  // The finished job's summary if runs/<stem>.json reads, its CSV is whole, and it was made
+  // with these parameters from a scene with this hash; nullopt means the job must run (again).
   std::optional<JobOutcome> finishedJob(const std::string& stem,
                                         const params::Parameters& parameters,
                                         std::uint64_t sceneHash) const;

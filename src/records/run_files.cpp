@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <string_view>
 
@@ -209,6 +210,11 @@ sim::RunSummary summaryFrom(const nlohmann::json& j, const std::string& source) 
                                     wholeNumberFrom<int>(m.at("lost"), "lost", source)};
   }
   return s;
+}
+
+// A run's CSV, beside its JSON file.
+std::filesystem::path csvFileOf(std::filesystem::path jsonFile) {
+  return jsonFile.replace_extension(".csv");
 }
 
 }  // namespace
@@ -507,13 +513,21 @@ std::string runToCsv(const RunRecord& run) {
   return csv;
 }
 
-std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder) {
-  const std::string stem = runStem(run.metadata);
-  const auto json = folder / (stem + ".json");
+std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder,
+                                    Durability durability) {
+  const auto json = folder / (runStem(run.metadata) + ".json");
   // The CSV first: a run counts as finished when its JSON exists (resume looks for it).
-  writeFileAtomically(folder / (stem + ".csv"), runToCsv(run));
-  writeFileAtomically(json, runToJson(run).dump(1) + "\n");
+  writeFileAtomically(csvFileOf(json), runToCsv(run), durability);
+  writeFileAtomically(json, runToJson(run).dump(1) + "\n", durability);
   return json;
+}
+
+bool runCsvIsWhole(const RunRecord& run, const std::filesystem::path& jsonFile) {
+  std::ifstream in(csvFileOf(jsonFile), std::ios::binary);
+  if (!in) return false;
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return !text.empty() && text.back() == '\n' &&
+         static_cast<std::size_t>(std::ranges::count(text, '\n')) == run.steps.size() + 1;
 }
 
 }  // namespace camcov::records

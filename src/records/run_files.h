@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "records/atomic_file.h"
 #include "records/run_record.h"
 
 namespace camcov::records {
@@ -27,7 +28,14 @@ std::string runToCsv(const RunRecord& run);
 std::string runStem(const std::string& scene, const std::string& method, std::uint64_t seed);
 std::string runStem(const RunMetadata& metadata);
 
-// Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically; returns the JSON path.
-std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder);
+// Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically, flushed to disk or not as
+// `durability` says; returns the JSON path.
+std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder,
+                                    Durability durability = Durability::Synced);
+
+// Whether the CSV beside a run's JSON file (`run`, read from `jsonFile`) is whole: its header
+// and a line for each of the run's steps, the last one ended. Files written with their flush
+// deferred may be empty or cut short after a power cut; a JSON file cut short does not read.
+bool runCsvIsWhole(const RunRecord& run, const std::filesystem::path& jsonFile);
 
 }  // namespace camcov::records

@@ -145,6 +145,44 @@ TEST(RunBatch, ASecondRunResumesWithNothingLeftAndAFailedJobIsRecorded) {
   EXPECT_EQ(again.outcomes[0].summary.averageCoverage, run.outcomes[0].summary.averageCoverage);
 }
 
+// A batch leaves its run files for the system to write back, so a power cut may leave some
+// empty or cut short after their rename; a resume must run those again, and keep the rest.
+TEST(RunBatch, RunFilesAPowerCutLeftEmptyOrShortRunAgainOnAResume) {
+  const testing::ScratchDir dir;
+  const records::BatchFolder folder(dir / "out");
+  BatchPlan plan = planBatch(tinyRequest(2), "test");
+  prepareFolder(folder, plan.manifest, false);
+  Recorder first;
+  runBatch(plan.jobs, folder, 2, first);
+  ASSERT_EQ(first.ran.size(), 8u);
+  const auto csvOf = [&](std::size_t i) {
+    return fs::path(folder.runFile(plan.jobs[i].stem)).replace_extension(".csv");
+  };
+  const auto keepFirstBytes = [](const fs::path& file, std::uintmax_t bytes) {
+    fs::resize_file(file, bytes);
+  };
+  keepFirstBytes(folder.runFile(plan.jobs[0].stem), 0);  // the JSON empty
+  keepFirstBytes(folder.runFile(plan.jobs[1].stem),
+                 fs::file_size(folder.runFile(plan.jobs[1].stem)) / 2);
+  keepFirstBytes(csvOf(2), 0);  // the JSON whole, its CSV empty
+  // The CSV cut after a whole line: it still ends with one, but a step is missing.
+  std::string csv = testing::readFile(csvOf(3));
+  csv.pop_back();
+  keepFirstBytes(csvOf(3), csv.rfind('\n') + 1);
+  fs::remove(csvOf(4));  // the JSON renamed, the CSV's rename lost
+  Recorder second;
+  const BatchRun again = runBatch(plan.jobs, folder, 2, second);
+  EXPECT_EQ(second.alreadyDone, 3u);
+  std::set<std::string> ran(second.ran.begin(), second.ran.end());
+  EXPECT_EQ(ran, (std::set<std::string>{plan.jobs[0].stem, plan.jobs[1].stem, plan.jobs[2].stem,
+                                        plan.jobs[3].stem, plan.jobs[4].stem}));
+  Recorder third;
+  runBatch(plan.jobs, folder, 2, third);
+  EXPECT_EQ(third.alreadyDone, 8u) << "the files run again are whole";
+  for (const auto& outcome : again.outcomes)
+    EXPECT_FALSE(outcome.failed) << outcome.error;
+}
+
 TEST(PlanBatch, EveryJobOfASceneIsHandedTheOneReadingOfItsFile) {
   const BatchPlan plan = planBatch(tinyRequest(2), "test");
   ASSERT_EQ(plan.jobs.size(), 8u);
@@ -339,16 +377,25 @@ TEST(MergeFolders, ADamagedRunIsNamedInItsSourceAndNothingIsCopied) {
   prepareFolder(source, plan.manifest, false);
   Recorder quiet;
   runBatch(plan.jobs, source, 1, quiet);
-  const fs::path damaged = source.runFile(plan.jobs.back().stem);
-  fs::resize_file(damaged, fs::file_size(damaged) / 2);  // a truncated copy
+  const fs::path json = source.runFile(plan.jobs.back().stem);
+  const fs::path csv = fs::path(json).replace_extension(".csv");
+  const std::string wholeJson = testing::readFile(json), wholeCsv = testing::readFile(csv);
   const records::BatchFolder target(dir / "target");
-  try {
-    mergeFolders({source.root().string()}, target, {});
-    FAIL() << "merged a truncated run";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(damaged.string()), std::string::npos) << e.what();
+  // A truncated JSON; a whole JSON whose CSV is cut short, or empty.
+  for (const auto& [damaged, bytes] : {std::pair{json, wholeJson.size() / 2},
+                                       std::pair{csv, wholeCsv.size() / 2}, std::pair{csv, 0ul}}) {
+    SCOPED_TRACE(damaged.string() + " cut to " + std::to_string(bytes) + " bytes");
+    std::ofstream(json, std::ios::binary) << wholeJson;
+    std::ofstream(csv, std::ios::binary) << wholeCsv;
+    fs::resize_file(damaged, bytes);
+    try {
+      mergeFolders({source.root().string()}, target, {});
+      ADD_FAILURE() << "merged a damaged run";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(json.string()), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(target.runsDir())) << "nothing copied";
   }
-  EXPECT_FALSE(fs::exists(target.runsDir())) << "nothing copied";
 }
 
 }  // namespace
