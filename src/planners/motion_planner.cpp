@@ -13,11 +13,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 
+#include "geometry/same_bits.h"
 #include "planners/grid_nearest_neighbors.h"
-#include "planners/pose_memo.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
 #include "reward/reward_model.h"
@@ -49,12 +50,48 @@ void fromPose(const geometry::Pose& p, ob::State* s) {
   se2->setYaw(yaw >= std::numbers::pi ? yaw - 2.0 * std::numbers::pi : yaw);
 }
 
-// What the roadmap has worked out about a pose: eq. (10)'s state cost, and whether it lies
-// strictly inside the room; each at most once.
+// What the roadmap has worked out about a state's pose: eq. (10)'s state cost, and whether it
+// lies strictly inside the room; each at most once. OMPL asks again for every edge a milestone
+// is tried with (about 25 a milestone), so the answers are kept in the state itself
+// (FactfulSE2Space), for the very bits of the pose they were worked out at: a state OMPL writes
+// again starts over.
 struct PoseFacts {
   std::optional<double> cost;
   std::optional<bool> inside;
 };
+
+struct FactfulState final : ob::SE2StateSpace::StateType {
+  mutable geometry::Pose at{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};  // none yet
+  mutable PoseFacts facts;
+};
+
+// SE(2) whose states are FactfulStates.
+class FactfulSE2Space final : public ob::SE2StateSpace {
+ public:
+  ob::State* allocState() const override {
+    auto* state = new FactfulState();
+    allocStateComponents(state);
+    return state;
+  }
+  // CompoundStateSpace::freeState's steps, deleting the state as what it was made.
+  void freeState(ob::State* state) const override {
+    auto* s = static_cast<FactfulState*>(state);
+    for (unsigned int i = 0; i < componentCount_; ++i)
+      components_[i]->freeState(s->components[i]);
+    delete[] s->components;
+    delete s;
+  }
+};
+
+// The facts of state `s`, whose pose is `p`.
+PoseFacts& factsOf(const ob::State* s, const geometry::Pose& p) {
+  const auto* state = static_cast<const FactfulState*>(s);
+  if (!geometry::sameBits(state->at, p)) {
+    state->at = p;
+    state->facts = {};
+  }
+  return state->facts;
+}
 
 // Everything the planner's callbacks share: the world at the planning instant.
 struct PlanningWorld {
@@ -83,7 +120,6 @@ struct PlanningWorld {
   std::vector<geometry::Ring> objects;
   VisibilitySampler sampler;
   std::size_t samplesDrawn = 0;
-  PoseMemo<PoseFacts> facts;
 };
 
 // The sampler of section V-C: uniform with probability p, otherwise a pose that sees a point
@@ -127,7 +163,8 @@ class ExactMotionValidator final : public ob::MotionValidator {
 
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
     const geometry::Pose a = toPose(s1), b = toPose(s2);
-    const bool ok = inside(a) && inside(b) && w_.validity.staysClear(a.position(), b.position());
+    const bool ok =
+        inside(s1, a) && inside(s2, b) && w_.validity.staysClear(a.position(), b.position());
     ok ? ++valid_ : ++invalid_;
     return ok;
   }
@@ -143,8 +180,8 @@ class ExactMotionValidator final : public ob::MotionValidator {
   }
 
  private:
-  bool inside(const geometry::Pose& p) const {
-    PoseFacts& facts = w_.facts[p];
+  bool inside(const ob::State* s, const geometry::Pose& p) const {
+    PoseFacts& facts = factsOf(s, p);
     if (!facts.inside) facts.inside = w_.validity.insideBoundary(p.position());
     return *facts.inside;
   }
@@ -153,7 +190,7 @@ class ExactMotionValidator final : public ob::MotionValidator {
 };
 
 // eq. (10): cost(p1, p2) = ½(1/reward({p1}) + 1/reward({p2})) · (‖Δxy‖ + ½|Δγ|), after OMPL's
-// StateCostIntegralObjective. A state's cost is computed once per distinct pose (PoseFacts).
+// StateCostIntegralObjective. A state's cost is computed once (PoseFacts).
 class CoverageCostObjective final : public ob::OptimizationObjective {
  public:
   CoverageCostObjective(const ob::SpaceInformationPtr& si, PlanningWorld& w)
@@ -163,7 +200,7 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
 
   ob::Cost stateCost(const ob::State* s) const override {
     const geometry::Pose p = toPose(s);
-    PoseFacts& facts = w_.facts[p];
+    PoseFacts& facts = factsOf(s, p);
     if (!facts.cost) facts.cost = 1.0 / std::max(w_.reward.reward(std::span(&p, 1)), kMinReward);
     return ob::Cost(*facts.cost);
   }
@@ -205,7 +242,7 @@ class SharedRoadmap final : public og::PRMstar {
 struct Roadmap::Impl {
   Impl(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
        std::uint64_t seed, double share)
-      : w(world, params, lens, seed), space(std::make_shared<ob::SE2StateSpace>()) {
+      : w(world, params, lens, seed), space(std::make_shared<FactfulSE2Space>()) {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ob::RealVectorBounds bounds(2);
     bounds.setLow(0, w.box.min.x);

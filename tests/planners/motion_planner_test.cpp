@@ -50,19 +50,31 @@ TEST(Roadmap, SameSeedSameRoadmapAndPath) {
   EXPECT_EQ(a.query(start, goal), b.query(start, goal));
 }
 
-TEST(Roadmap, CostIsEquationTen) {
+// Each pair's cost from its own poses, whatever pairs were asked before (the roadmap keeps what
+// it works out about a state's pose, which must never answer for another pose).
+TEST(Roadmap, CostIsEquationTenForEachPairAskedInTurn) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
   const params::Parameters p = smallBudget();
   Roadmap roadmap(w, p, kTheta, 1);
   reward::RewardModel reward(p.reward, kTheta);
   reward.setWorld(w);
-  const geometry::Pose a{0, -4, std::numbers::pi / 2}, b{1, -5, 1.2};
-  const double ra = reward.reward(std::span(&a, 1)), rb = reward.reward(std::span(&b, 1));
-  ASSERT_GT(ra, 0.0);
-  ASSERT_GT(rb, 0.0);
-  // ½(1/r(a) + 1/r(b)) · (‖Δxy‖ + ½|Δγ|)
-  const double expected = 0.5 * (1 / ra + 1 / rb) * (std::sqrt(2.0) + 0.5 * std::abs(1.2 - a.yaw));
-  EXPECT_NEAR(roadmap.cost(a, b), expected, 1e-12);
+  const geometry::Pose a{0, -4, std::numbers::pi / 2}, b{1, -5, 1.2}, c{-1, -5, 1.4};
+  const auto expected = [&](const geometry::Pose& from, const geometry::Pose& to) {
+    const double r1 = reward.reward(std::span(&from, 1)), r2 = reward.reward(std::span(&to, 1));
+    EXPECT_GT(r1, 0.0);
+    EXPECT_GT(r2, 0.0);
+    // ½(1/r(a) + 1/r(b)) · (‖Δxy‖ + ½|Δγ|)
+    return 0.5 * (1 / r1 + 1 / r2) *
+           (geometry::distance(from.position(), to.position()) + 0.5 * std::abs(to.yaw - from.yaw));
+  };
+  EXPECT_NEAR(roadmap.cost(a, b),
+              0.5 * (1 / reward.reward(std::span(&a, 1)) + 1 / reward.reward(std::span(&b, 1))) *
+                  (std::sqrt(2.0) + 0.5 * std::abs(1.2 - a.yaw)),
+              1e-12);
+  for (const auto& [from, to] :
+       {std::pair{b, c}, std::pair{c, a}, std::pair{a, c}, std::pair{b, a}}) {
+    EXPECT_NEAR(roadmap.cost(from, to), expected(from, to), 1e-12);
+  }
 }
 
 TEST(Roadmap, UnreachableGoalHasNoPath) {
