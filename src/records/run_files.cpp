@@ -64,9 +64,14 @@ class SeriesReader {
       : series_(series), source_(source) {}
 
   // series[name], an array; its length is checked against series.time's where it is read.
+  // Found once a name: a file holds a dozen columns and reads each at every step.
   const nlohmann::json& column(const char* name) const {
+    for (const auto& [known, c] : columns_) {
+      if (known == name) return *c;
+    }
     const nlohmann::json& c = series_.at(name);
     if (!c.is_array()) throw InputError(fmt::format("{}: series.{} is not a list", source_, name));
+    columns_.emplace_back(name, &c);
     return c;
   }
   // Entry k of column `name`, whatever it holds (the column one entry a step).
@@ -74,26 +79,31 @@ class SeriesReader {
     return entry(column(name), k, name);
   }
   double number(const char* name, std::size_t k, double lo, double hi) const {
-    return within(entry(column(name), k, name), lo, hi, fmt::format("series.{}[{}]", name, k));
+    return within(entry(column(name), k, name), lo, hi,
+                  [&] { return fmt::format("series.{}[{}]", name, k); });
   }
   // A distance: a number ≥ 0, or null for none (infinity: no pair of cameras).
   double distance(const char* name, std::size_t k) const {
     const nlohmann::json& v = entry(column(name), k, name);
-    return v.is_null() ? kInfinity
-                       : within(v, 0.0, kInfinity, fmt::format("series.{}[{}]", name, k));
+    return v.is_null()
+               ? kInfinity
+               : within(v, 0.0, kInfinity, [&] { return fmt::format("series.{}[{}]", name, k); });
   }
   // [x, y, yaw] of camera c at step k of series.cameras or series.goals.
   geometry::Pose pose(const nlohmann::json& perCamera, const char* name, std::size_t c,
                       std::size_t k) const {
-    const std::string where = fmt::format("series.{}[{}][{}]", name, c, k);
+    const auto where = [&](const char* part = "") {
+      return fmt::format("series.{}[{}][{}]{}", name, c, k, part);
+    };
     if (!perCamera.is_array() || k >= perCamera.size())
-      throw InputError(fmt::format("{}: {} is missing", source_, where));
+      throw InputError(fmt::format("{}: {} is missing", source_, where()));
     const nlohmann::json& p = perCamera[k];
     if (!p.is_array() || p.size() != 3)
-      throw InputError(fmt::format("{}: {} is not a pose [x, y, yaw]", source_, where));
-    return {within(p[0], -scene::kMaxCoordinate, scene::kMaxCoordinate, where + "[0]"),
-            within(p[1], -scene::kMaxCoordinate, scene::kMaxCoordinate, where + "[1]"),
-            within(p[2], -kMaxYaw, kMaxYaw, where + "[2]")};
+      throw InputError(fmt::format("{}: {} is not a pose [x, y, yaw]", source_, where()));
+    return {
+        within(p[0], -scene::kMaxCoordinate, scene::kMaxCoordinate, [&] { return where("[0]"); }),
+        within(p[1], -scene::kMaxCoordinate, scene::kMaxCoordinate, [&] { return where("[1]"); }),
+        within(p[2], -kMaxYaw, kMaxYaw, [&] { return where("[2]"); })};
   }
 
  private:
@@ -102,27 +112,30 @@ class SeriesReader {
   static constexpr double kMaxYaw = scene::kMaxYawDegrees * 3.141592653589793 / 180.0;
 
   const nlohmann::json& entry(const nlohmann::json& column, std::size_t k, const char* name) const {
-    const std::size_t steps = series_.at("time").size();
+    const std::size_t steps = this->column("time").size();
     if (column.size() != steps) {
       throw InputError(fmt::format("{}: series.{} has {} entries for {} steps", source_, name,
                                    column.size(), steps));
     }
     return column[k];
   }
-  double within(const nlohmann::json& v, double lo, double hi, const std::string& where) const {
-    if (!v.is_number()) throw InputError(fmt::format("{}: {} is not a number", source_, where));
+  // `where` names the value, worked out only for the message of a value refused.
+  template <typename Where>
+  double within(const nlohmann::json& v, double lo, double hi, const Where& where) const {
+    if (!v.is_number()) throw InputError(fmt::format("{}: {} is not a number", source_, where()));
     const double x = v.get<double>();
     if (!(x >= lo && x <= hi)) {
       throw InputError(
           fmt::format("{}: {} = {} lies outside [{}, {}], where every run's values "
                       "lie",
-                      source_, where, x, lo, hi));
+                      source_, where(), x, lo, hi));
     }
     return x;
   }
 
   const nlohmann::json& series_;
   const std::string& source_;
+  mutable std::vector<std::pair<const char*, const nlohmann::json*>> columns_;
 };
 
 // The summary's average coverage is its series' (eq. (4) by the trapezoid rule over the
@@ -387,6 +400,9 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
     const auto fraction = [&](const char* name, std::size_t k) {
       return read.number(name, k, 0.0, 1.0 + 1e-9);
     };
+    const bool weighted = series.contains("weightedCoverage"),
+               resolution = series.contains("resolutionCoverage"),
+               presence = series.contains("targetsPresent"), heard = series.contains("heard");
     for (std::size_t k = 0; k < steps; ++k) {
       StepRow row;
       row.time = read.number("time", k, 0.0, kMaxRecordedTime);
@@ -398,11 +414,8 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       }
       row.terms.coverage = fraction("coverage", k);
       // Recorded for weighted scenes only; elsewhere the two are one.
-      row.terms.weightedCoverage = series.contains("weightedCoverage")
-                                       ? fraction("weightedCoverage", k)
-                                       : row.terms.coverage;
-      if (series.contains("resolutionCoverage"))
-        row.resolutionCoverage = fraction("resolutionCoverage", k);
+      row.terms.weightedCoverage = weighted ? fraction("weightedCoverage", k) : row.terms.coverage;
+      if (resolution) row.resolutionCoverage = fraction("resolutionCoverage", k);
       row.terms.utilization = fraction("utilization", k);
       row.terms.repulsion = read.number("repulsion", k, 0.0, kInfinity);
       row.terms.reward = read.number("reward", k, -kInfinity, kInfinity);
@@ -412,11 +425,10 @@ RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
       row.minCameraDistanceInStep = read.distance("minCameraDistanceInStep", k);
       row.avoidableContactTime = read.number("avoidableContactTime", k, 0.0, kMaxRecordedTime);
       row.unavoidableContactTime = read.number("unavoidableContactTime", k, 0.0, kMaxRecordedTime);
-      if (series.contains("targetsPresent"))
+      if (presence)
         row.targetsPresent = static_cast<int>(read.number("targetsPresent", k, 0.0, 1e9));
-      if (series.contains("heard")) {
-        const nlohmann::json& heard = read.entryOf("heard", k);
-        for (const auto& h : heard) {
+      if (heard) {
+        for (const auto& h : read.entryOf("heard", k)) {
           const sim::Hearing hearing{wholeNumberFrom<int>(h.at(0), "series.heard[][0]", source),
                                      wholeNumberFrom<int>(h.at(1), "series.heard[][1]", source),
                                      h.at(2).get<double>()};
