@@ -5,47 +5,57 @@
 
 namespace camcov::planners {
 
-geometry::Pose LocalOptimizer::compassStep(reward::RewardModel& model,
-                                           std::span<geometry::Pose> team, std::size_t j,
-                                           double currentReward, StepLimits limits) const {
-  const geometry::Pose current = team[j];
+LocalOptimizer::Move LocalOptimizer::compassStep(reward::RewardModel& model,
+                                                 std::span<geometry::Pose> team, std::size_t j,
+                                                 const reward::RewardTerms& current,
+                                                 StepLimits limits) const {
+  const geometry::Pose here = team[j];
   // The gradient's step is one of the moves tried.
-  geometry::Pose best = gradientStep(model, team, j, currentReward, limits);
-  team[j] = best;
-  auto bestTerms = model.terms(team);
+  Move best = gradientStep(model, team, j, current.reward, limits).value_or(Move{here, current});
   for (const double scale : {1.0, 0.25}) {
     for (int axis = 0; axis < 3; ++axis) {
       for (const double sign : {1.0, -1.0}) {
-        geometry::Pose probe = current;
+        geometry::Pose probe = here;
         probe[axis] += sign * scale * (axis == 2 ? limits.maxRotation : limits.maxTranslation);
         probe.yaw = geometry::wrapAngle(probe.yaw);
         team[j] = probe;
         const auto t = model.terms(team);
         const bool turn = axis == 2;
         const double coverage = reward::coverageTerm(model.params(), t),
-                     bestCoverage = reward::coverageTerm(model.params(), bestTerms);
-        if (t.reward > currentReward &&
+                     bestCoverage = reward::coverageTerm(model.params(), best.terms);
+        if (t.reward > current.reward &&
             (coverage > bestCoverage ||
-             (turn && coverage == bestCoverage && t.reward > bestTerms.reward))) {
-          bestTerms = t;
-          best = probe;
+             (turn && coverage == bestCoverage && t.reward > best.terms.reward))) {
+          best = {probe, t};
         }
       }
     }
   }
-  team[j] = current;
+  team[j] = here;
   return best;
+}
+
+LocalOptimizer::Move LocalOptimizer::bestMove(reward::RewardModel& model,
+                                              std::span<geometry::Pose> team, std::size_t j,
+                                              const reward::RewardTerms& current,
+                                              StepLimits limits) const {
+  if (search_ == Search::Compass) return compassStep(model, team, j, current, limits);
+  return gradientStep(model, team, j, current.reward, limits).value_or(Move{team[j], current});
 }
 
 geometry::Pose LocalOptimizer::step(reward::RewardModel& model, std::span<geometry::Pose> team,
                                     std::size_t j, double currentReward, StepLimits limits) const {
-  return search_ == Search::Compass ? compassStep(model, team, j, currentReward, limits)
-                                    : gradientStep(model, team, j, currentReward, limits);
+  if (search_ == Search::Compass)
+    return compassStep(model, team, j, model.terms(team), limits).pose;
+  const auto move = gradientStep(model, team, j, currentReward, limits);
+  return move ? move->pose : team[j];
 }
 
-geometry::Pose LocalOptimizer::gradientStep(reward::RewardModel& model,
-                                            std::span<geometry::Pose> team, std::size_t j,
-                                            double currentReward, StepLimits limits) const {
+std::optional<LocalOptimizer::Move> LocalOptimizer::gradientStep(reward::RewardModel& model,
+                                                                 std::span<geometry::Pose> team,
+                                                                 std::size_t j,
+                                                                 double currentReward,
+                                                                 StepLimits limits) const {
   const geometry::Pose current = team[j];
   const double eps = params_.epsilon;
   // ∂reward/∂x, ∂y, ∂γ by forward differences over ε (the reward has no analytic gradient:
@@ -64,27 +74,29 @@ geometry::Pose LocalOptimizer::gradientStep(reward::RewardModel& model,
   if (length > limits.maxTranslation) move = move * (limits.maxTranslation / length);
   turn = std::clamp(turn, -limits.maxRotation, limits.maxRotation);
 
-  geometry::Pose candidate{current.x + move.x, current.y + move.y,
-                           geometry::wrapAngle(current.yaw + turn)};
-  team[j] = candidate;
-  const bool better = std::isfinite(candidate.x) && std::isfinite(candidate.y) &&
-                      std::isfinite(candidate.yaw) && model.reward(team) > currentReward;
+  const geometry::Pose candidate{current.x + move.x, current.y + move.y,
+                                 geometry::wrapAngle(current.yaw + turn)};
+  std::optional<Move> better;
+  if (std::isfinite(candidate.x) && std::isfinite(candidate.y) && std::isfinite(candidate.yaw)) {
+    team[j] = candidate;
+    if (const auto t = model.terms(team); t.reward > currentReward) better = Move{candidate, t};
+  }
   team[j] = current;
-  return better ? candidate : current;
+  return better;
 }
 
 double LocalOptimizer::improve(reward::RewardModel& model, std::span<geometry::Pose> team,
                                const scene::CameraSet& movable,
                                std::span<const StepLimits> limits) const {
-  double current = model.reward(team);
+  reward::RewardTerms current = model.terms(team);
   for (std::size_t j = 0; j < team.size(); ++j) {
     if (!movable.contains(j)) continue;
-    const geometry::Pose next = step(model, team, j, current, limits[j]);
-    if (next == team[j]) continue;
-    team[j] = next;
-    current = model.reward(team);
+    const Move next = bestMove(model, team, j, current, limits[j]);
+    if (next.pose == team[j]) continue;
+    team[j] = next.pose;
+    current = next.terms;
   }
-  return current;
+  return current.reward;
 }
 
 }  // namespace camcov::planners

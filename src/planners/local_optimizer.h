@@ -3,6 +3,7 @@
 // with a forward-difference gradient over ε, steps α (translation) and β (rotation),
 // saturated to what the camera can do in one time step, taken only if the reward rises.
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "geometry/vec2.h"
@@ -38,10 +39,20 @@ class LocalOptimizer {
                  const scene::CameraSet& movable, std::span<const StepLimits> limits) const;
 
  private:
-  geometry::Pose gradientStep(reward::RewardModel& model, std::span<geometry::Pose> team,
-                              std::size_t j, double currentReward, StepLimits limits) const;
-  geometry::Pose compassStep(reward::RewardModel& model, std::span<geometry::Pose> team,
-                             std::size_t j, double currentReward, StepLimits limits) const;
+  // A step for camera j, and the terms of the team with camera j there, which the search has
+  // worked out anyway (improve() takes them as the team's next, rather than evaluate again).
+  struct Move {
+    geometry::Pose pose;
+    reward::RewardTerms terms;
+  };
+  // The gradient's step if it raises the reward above `currentReward`.
+  std::optional<Move> gradientStep(reward::RewardModel& model, std::span<geometry::Pose> team,
+                                   std::size_t j, double currentReward, StepLimits limits) const;
+  // `current`: the terms of `team` as given.
+  Move compassStep(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
+                   const reward::RewardTerms& current, StepLimits limits) const;
+  Move bestMove(reward::RewardModel& model, std::span<geometry::Pose> team, std::size_t j,
+                const reward::RewardTerms& current, StepLimits limits) const;
 
   params::LocalParams params_;
   Search search_;
