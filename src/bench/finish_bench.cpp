@@ -147,7 +147,7 @@ records::BatchSummary finishBench(const records::BatchFolder& folder,
   const records::BatchSummary summary =
       records::summarize(outcomes, options.referenceAmong(manifest.methods), methods, groupOf);
   folder.writeSummary(summary);
-  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest.parameters, workers);
+  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest, workers);
   reportSummary(summary, methods, observer);
   for (const auto& f : summary.failures) {
     observer.report(fmt::format("  failed: {} {} seed {}: {}", f.scene, f.method, f.seed, f.error));

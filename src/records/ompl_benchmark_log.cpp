@@ -98,20 +98,18 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
 }
 
 std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
-                                             const params::Parameters& parameters,
-                                             unsigned workers) {
-  // Stems are "<scene>-<method>-seed<N>" (runStem); methods and seeds have no dashes, so
-  // the scene is everything before the last two. One scene a worker in memory at a time.
+                                             const BatchManifest& manifest, unsigned workers) {
+  std::vector<std::string> methods = manifest.methods;
+  for (const auto& [method, identity] : manifest.methodIdentities)
+    methods.push_back(method);
+  // Grouped by scene from the files' names (sceneOfStem), so that one scene a worker is in
+  // memory at a time.
   std::map<std::string, std::vector<fs::path>> byScene;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder.runsDir(), ec)) {
     const fs::path& p = entry.path();
     if (p.extension() != ".json" || p.stem().extension() == ".error") continue;
-    const std::string stem = p.stem().string();
-    const auto seedDash = stem.rfind('-');
-    const auto methodDash =
-        seedDash == std::string::npos ? seedDash : stem.rfind('-', seedDash - 1);
-    if (methodDash != std::string::npos) byScene[stem.substr(0, methodDash)].push_back(p);
+    if (const auto scene = sceneOfStem(p.stem().string(), methods)) byScene[*scene].push_back(p);
   }
   const auto timings = folder.readTimings();
   std::vector<std::pair<std::string, std::vector<fs::path>>> scenes(byScene.begin(), byScene.end());
@@ -129,7 +127,7 @@ std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
                std::tie(b.metadata.method, b.metadata.seed);
       });
       written[i] = folder.omplDir() / (scene + ".log");
-      writeFileAtomically(written[i], omplBenchmarkLog(scene, runs, timings, parameters));
+      writeFileAtomically(written[i], omplBenchmarkLog(scene, runs, timings, manifest.parameters));
     } catch (...) {
       errors[i] = std::current_exception();
     }

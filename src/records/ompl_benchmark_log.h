@@ -17,10 +17,12 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
                              const std::map<std::string, JobTiming>& timings,
                              const params::Parameters& parameters);
 
-// Writes <out>/ompl/<scene>.log for every scene with runs in the folder, `workers` scenes at a
-// time (reading a scene's run files back is most of the time); returns the files in scene order.
+// Writes <out>/ompl/<scene>.log for every scene with runs in the folder (of the manifest's
+// methods, and of those whose results an earlier batch left there: its methodIdentities),
+// `workers` scenes at a time (reading a scene's run files back is most of the time); returns
+// the files in scene order.
 std::vector<std::filesystem::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
-                                                          const params::Parameters& parameters,
+                                                          const BatchManifest& manifest,
                                                           unsigned workers = 1);
 
 }  // namespace camcov::records

@@ -274,6 +274,27 @@ std::string runStem(const RunMetadata& m) {
   return runStem(m.scene, m.method, m.seed);
 }
 
+std::optional<std::string> sceneOfStem(const std::string& stem,
+                                       const std::vector<std::string>& methods) {
+  const auto seed = stem.rfind("-seed");
+  if (seed == std::string::npos || seed + 5 == stem.size() ||
+      !std::all_of(stem.begin() + static_cast<std::ptrdiff_t>(seed) + 5, stem.end(),
+                   [](char c) { return c >= '0' && c <= '9'; }))
+    return std::nullopt;
+  const std::string_view sceneAndMethod = std::string_view(stem).substr(0, seed);
+  std::optional<std::string> scene;
+  std::size_t longest = 0;
+  for (const std::string& method : methods) {
+    const std::string ending = "-" + method;
+    if (method.size() > longest && sceneAndMethod.size() > ending.size() &&
+        sceneAndMethod.ends_with(ending)) {
+      longest = method.size();
+      scene = std::string(sceneAndMethod.substr(0, sceneAndMethod.size() - ending.size()));
+    }
+  }
+  return scene;
+}
+
 nlohmann::json runToJson(const RunRecord& run) {
   const RunMetadata& m = run.metadata;
   nlohmann::json j;

@@ -4,7 +4,9 @@
 // machine-dependent fields; numbers in shortest round-trip form.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,6 +29,10 @@ std::string runToCsv(const RunRecord& run);
 // "<scene>-<method>-seed<N>": the stem of a run's files (and of its video in a batch).
 std::string runStem(const std::string& scene, const std::string& method, std::uint64_t seed);
 std::string runStem(const RunMetadata& metadata);
+// The scene of stem "<scene>-<method>-seed<N>", made by one of `methods`: method names may hold
+// dashes (camcov-dec), so the longest that ends the stem is taken; nullopt if none does.
+std::optional<std::string> sceneOfStem(const std::string& stem,
+                                       const std::vector<std::string>& methods);
 
 // Writes <folder>/<stem>.json and <folder>/<stem>.csv atomically, flushed to disk or not as
 // `durability` says; returns the JSON path.

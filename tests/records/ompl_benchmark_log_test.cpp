@@ -35,6 +35,13 @@ RunRecord runOf(const std::string& scene, const std::string& method, std::uint64
   return run;
 }
 
+// The manifest of batchWithRuns's batch.
+BatchManifest manifestOfTwoMethods() {
+  BatchManifest manifest;
+  manifest.methods = {"paper", "local"};
+  return manifest;
+}
+
 // The batch folder `dir` with seven scenes, two methods and three seeds each.
 BatchFolder batchWithRuns(const fs::path& dir) {
   const BatchFolder folder(dir);
@@ -51,9 +58,8 @@ BatchFolder batchWithRuns(const fs::path& dir) {
 TEST(OmplBenchmarkLogs, AreTheSameBytesWhateverTheNumberOfWorkers) {
   const BatchFolder one = batchWithRuns(testing::freshDir("one"));
   const BatchFolder three = batchWithRuns(testing::freshDir("three"));
-  const params::Parameters parameters;
-  const auto fromOne = writeOmplBenchmarkLogs(one, parameters, 1);
-  const auto fromThree = writeOmplBenchmarkLogs(three, parameters, 3);
+  const auto fromOne = writeOmplBenchmarkLogs(one, manifestOfTwoMethods(), 1);
+  const auto fromThree = writeOmplBenchmarkLogs(three, manifestOfTwoMethods(), 3);
   ASSERT_EQ(fromOne.size(), 7u);
   ASSERT_EQ(fromThree.size(), 7u);
   for (std::size_t i = 0; i < fromOne.size(); ++i) {
@@ -72,12 +78,50 @@ TEST(OmplBenchmarkLogs, ABrokenRunFileIsReportedAsOneWorkerMeetsIt) {
     for (const char* stem : {"scene_2-local-seed2", "scene_5-paper-seed1"})
       std::ofstream(folder.runFile(stem)) << "{ not json";
     try {
-      writeOmplBenchmarkLogs(folder, params::Parameters{}, workers);
+      writeOmplBenchmarkLogs(folder, manifestOfTwoMethods(), workers);
       ADD_FAILURE() << "no error";
     } catch (const std::exception& e) {
       EXPECT_NE(std::string(e.what()).find("scene_2-local-seed2"), std::string::npos) << e.what();
     }
   }
+}
+
+// Method names may hold dashes: camcov-dec's runs of scene "a" are "a-camcov-dec-seed1", which
+// must not be taken for scene "a-camcov"'s runs of a method "dec"; and a method whose results an
+// earlier batch left in the folder (its identity kept in the manifest) is one of the scene's.
+TEST(OmplBenchmarkLogs, RunsAreGroupedBySceneWhateverDashesTheirMethodsAndScenesHold) {
+  const BatchFolder folder(testing::freshDir("dashes"));
+  fs::create_directories(folder.runsDir());
+  for (const char* scene : {"a", "a-camcov", "hall-2"}) {
+    for (const char* method : {"camcov", "camcov-dec", "paper"})
+      writeRunFiles(runOf(scene, method, 1), folder.runsDir());
+  }
+  BatchManifest manifest;
+  manifest.methods = {"camcov-dec", "camcov"};
+  manifest.methodIdentities = {{"paper", "c++ 0123"}};
+  const auto logs = writeOmplBenchmarkLogs(folder, manifest, 2);
+  ASSERT_EQ(logs.size(), 3u);
+  EXPECT_EQ(logs[0].filename(), "a.log");
+  EXPECT_EQ(logs[1].filename(), "a-camcov.log");
+  EXPECT_EQ(logs[2].filename(), "hall-2.log");
+  for (const auto& log : logs) {
+    const std::string text = testing::readFile(log);
+    EXPECT_NE(text.find("3 planners\ncamcov\n"), std::string::npos) << text.substr(0, 600);
+    EXPECT_NE(text.find("\ncamcov-dec\n"), std::string::npos);
+    EXPECT_NE(text.find("\npaper\n"), std::string::npos);
+  }
+}
+
+TEST(SceneOfStem, TakesTheLongestMethodThatEndsTheStem) {
+  const std::vector<std::string> methods{"camcov", "camcov-dec", "paper"};
+  EXPECT_EQ(sceneOfStem("a-camcov-dec-seed12", methods), "a");
+  EXPECT_EQ(sceneOfStem("a-camcov-seed1", methods), "a");
+  EXPECT_EQ(sceneOfStem("a-camcov-camcov-dec-seed1", methods), "a-camcov");
+  EXPECT_EQ(sceneOfStem("x-paper-seed3", methods), "x");
+  EXPECT_EQ(sceneOfStem("x-local-seed3", methods), std::nullopt) << "a method not listed";
+  EXPECT_EQ(sceneOfStem("paper-seed3", methods), std::nullopt) << "no scene";
+  EXPECT_EQ(sceneOfStem("x-paper-seed", methods), std::nullopt) << "no seed";
+  EXPECT_EQ(sceneOfStem("x-paper-seed1b", methods), std::nullopt);
 }
 
 }  // namespace
