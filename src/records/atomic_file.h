@@ -23,9 +23,9 @@ enum class Durability {
   Synced,
   // Left for the system to write back. A kill still leaves the old file or the new one whole;
   // a power cut may leave the new one empty or cut short. For files whose reader detects that
-  // and makes them again: a batch's run files (records::runFilesAreWhole), thousands of them,
-  // whose flushes cost a twentieth of the published protocol's time; the batch flushes its file
-  // system once when it ends (flushFileSystemOf).
+  // and makes them again: a batch's run files (BatchFolder::finishedJob, runCsvIsWhole),
+  // thousands of them, whose flushes cost a twentieth of the published protocol's time; the
+  // batch flushes its file system once when it ends (flushFileSystemOf).
   Deferred,
 };
 
