@@ -10,6 +10,7 @@
 #include <ctime>
 #include <exception>
 #include <mutex>
+#include <optional>
 
 #include "records/run_files.h"
 #include "util/interruption.h"
@@ -72,11 +73,13 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
   }
   observer.resuming(resumption);
   std::mutex mutex;
+  std::size_t keptBytes = 0;             // of batch.omplRuns
   std::atomic<bool> interrupted{false};  // once set, the jobs not started are left for a resume
   forEachOnWorkers(pending.size(), workers, [&](std::size_t k) {
     if (interrupted) return;
     const BatchJob& job = jobs[pending[k]];
     records::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
+    std::optional<records::OmplRun> omplRun;
     const auto wallStart = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     try {
@@ -87,6 +90,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
       records::writeRunFiles(run, folder.runsDir(), records::Durability::Deferred);
       folder.removeFailure(job.stem);
       outcome.summary = run.summary;
+      omplRun = records::omplRunOf(run);
     } catch (const Interrupted&) {
       interrupted = true;  // not the job's failure: it runs again on a resume
       return;
@@ -106,6 +110,14 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     observer.finished(job, outcome);
     batch.outcomes[pending[k]] = std::move(outcome);
     batch.timings[job.stem] = timing;
+    if (omplRun) {
+      const std::size_t bytes =
+          sizeof(records::OmplRun) + omplRun->progress.size() * sizeof(omplRun->progress.front());
+      if (keptBytes + bytes <= kOmplRunsKeptBytes) {
+        keptBytes += bytes;
+        batch.omplRuns.emplace(job.stem, std::move(*omplRun));
+      }
+    }
   });
   records::flushFileSystemOf(folder.root());
   // The folder keeps the timings of every job it holds, from earlier runs too.

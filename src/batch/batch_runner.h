@@ -11,6 +11,7 @@
 #include "batch/run_job.h"
 #include "records/batch_folder.h"
 #include "records/batch_summary.h"
+#include "records/ompl_benchmark_log.h"
 
 namespace camcov::batch {
 
@@ -24,7 +25,14 @@ struct BatchJob {
 struct BatchRun {
   std::vector<records::JobOutcome> outcomes;          // one per job, in job order
   std::map<std::string, records::JobTiming> timings;  // of the jobs run now, by stem
+  // What the OMPL logs take of the jobs run now, by stem, as long as it fits in
+  // kOmplRunsKeptBytes; the logs read the others back from their files.
+  std::map<std::string, records::OmplRun> omplRuns;
 };
+
+// Memory a batch may hold for its OMPL logs: the 1,920 runs of the published protocol with
+// our method take about 14 MB.
+inline constexpr std::size_t kOmplRunsKeptBytes = std::size_t{32} << 20;
 
 // Before any job runs: how many of the batch's jobs were found finished in the folder, and
 // when their results were written (seconds since the epoch, of the files).

@@ -137,6 +137,7 @@ void reportSummary(const records::BatchSummary& summary, const std::vector<std::
 records::BatchSummary finishBench(const records::BatchFolder& folder,
                                   const records::BatchManifest& manifest,
                                   const std::vector<records::JobOutcome>& outcomes,
+                                  const std::map<std::string, records::OmplRun>& omplRuns,
                                   const BenchOutputOptions& options, unsigned workers,
                                   BenchObserver& observer) {
   std::map<std::string, std::string> groupOf;
@@ -147,7 +148,7 @@ records::BatchSummary finishBench(const records::BatchFolder& folder,
   const records::BatchSummary summary =
       records::summarize(outcomes, options.referenceAmong(manifest.methods), methods, groupOf);
   folder.writeSummary(summary);
-  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest, workers);
+  const auto logs = records::writeOmplBenchmarkLogs(folder, manifest, workers, omplRuns);
   reportSummary(summary, methods, observer);
   for (const auto& f : summary.failures) {
     observer.report(fmt::format("  failed: {} {} seed {}: {}", f.scene, f.method, f.seed, f.error));

@@ -3,12 +3,14 @@
 // alike: the summary (JSON, CSV), the OMPL benchmark logs, the videos, the explorer pages,
 // the offline optima, the report, and the summary table said to the observer.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "bench/bench_observer.h"
 #include "records/batch_folder.h"
 #include "records/batch_summary.h"
+#include "records/ompl_benchmark_log.h"
 #include "records/video_choice.h"
 
 namespace camcov::bench {
@@ -32,10 +34,12 @@ struct BenchOutputOptions {
 };
 
 // Writes everything above into `folder`; videos and optima are made on `workers` threads.
-// Returns the summary (its failures are the jobs that failed).
+// `omplRuns`: what the OMPL logs take of the runs the batch kept in memory (BatchRun), the
+// others read back. Returns the summary (its failures are the jobs that failed).
 records::BatchSummary finishBench(const records::BatchFolder& folder,
                                   const records::BatchManifest& manifest,
                                   const std::vector<records::JobOutcome>& outcomes,
+                                  const std::map<std::string, records::OmplRun>& omplRuns,
                                   const BenchOutputOptions& options, unsigned workers,
                                   BenchObserver& observer);
 

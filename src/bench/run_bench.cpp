@@ -94,8 +94,8 @@ BenchResult runBench(const BenchRequest& request, BenchObserver& observer) {
                     shard.index + 1, shard.count, result.jobs, result.failedJobs));
     return result;
   }
-  result.summary =
-      finishBench(folder, planned.manifest, run.outcomes, request.outputs, workers, observer);
+  result.summary = finishBench(folder, planned.manifest, run.outcomes, run.omplRuns,
+                               request.outputs, workers, observer);
   result.failedJobs = result.summary.failures.size();  // with those of earlier sittings
   return result;
 }
@@ -110,7 +110,7 @@ BenchResult mergeBench(const std::vector<std::string>& inputs, const std::string
   const std::vector<records::JobOutcome> outcomes = target.allJobs();
   BenchResult result;
   result.jobs = outcomes.size();
-  result.summary = finishBench(target, manifest, outcomes, outputs, workersFor(0), observer);
+  result.summary = finishBench(target, manifest, outcomes, {}, outputs, workersFor(0), observer);
   result.failedJobs = result.summary.failures.size();
   created.keep();
   return result;

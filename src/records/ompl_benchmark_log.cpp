@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <exception>
 #include <map>
+#include <tuple>
 
 #include "params/parameter_table.h"
 #include "records/atomic_file.h"
@@ -15,28 +17,40 @@ namespace camcov::records {
 
 namespace fs = std::filesystem;
 
-std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunRecord>& runs,
+OmplRun omplRunOf(const RunRecord& run) {
+  OmplRun o{run.metadata.method, run.metadata.seed, run.metadata.toolVersion, run.summary, {}};
+  o.progress.reserve(run.steps.size());
+  for (const auto& step : run.steps)
+    o.progress.push_back({step.time, step.terms.coverage, step.terms.utilization});
+  return o;
+}
+
+std::string omplBenchmarkLog(const std::string& scene, std::vector<OmplRun> runs,
                              const std::map<std::string, JobTiming>& timings,
                              const params::Parameters& parameters) {
-  std::map<std::string, std::vector<const RunRecord*>> byMethod;
+  std::sort(runs.begin(), runs.end(), [](const OmplRun& a, const OmplRun& b) {
+    return std::tie(a.method, a.seed) < std::tie(b.method, b.seed);
+  });
+  const auto wallOf = [&](const OmplRun& run) {
+    const auto t = timings.find(runStem(scene, run.method, run.seed));
+    return t == timings.end() ? 0.0 : t->second.wallSeconds;
+  };
+  std::map<std::string, std::vector<const OmplRun*>> byMethod;
   for (const auto& run : runs)
-    byMethod[run.metadata.method].push_back(&run);
+    byMethod[run.method].push_back(&run);
   double totalTime = 0.0;
   std::size_t runsPerMethod = 0;
   for (const auto& [method, list] : byMethod) {
     runsPerMethod = std::max(runsPerMethod, list.size());
-    for (const RunRecord* run : list) {
-      if (const auto t = timings.find(runStem(run->metadata)); t != timings.end()) {
-        totalTime += t->second.wallSeconds;
-      }
-    }
+    for (const OmplRun* run : list)
+      totalTime += wallOf(*run);
   }
   char host[256] = "unknown";
   ::gethostname(host, sizeof(host) - 1);
 
   std::string log;
   auto line = [&log](const std::string& text) { log += text + "\n"; };
-  line("camcov version " + (runs.empty() ? std::string("?") : runs.front().metadata.toolVersion));
+  line("camcov version " + (runs.empty() ? std::string("?") : runs.front().toolVersion));
   line("Experiment " + scene);
   line("0 experiment properties");
   line(std::string("Running on ") + host);
@@ -70,12 +84,10 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
     for (const auto& p : properties)
       line(p);
     line(fmt::format("{} runs", list.size()));
-    for (const RunRecord* run : list) {
+    for (const OmplRun* run : list) {
       const auto& s = run->summary;
-      const auto t = timings.find(runStem(run->metadata));
-      const double wall = t == timings.end() ? 0.0 : t->second.wallSeconds;
       // Every value ends with "; ", the format's separator.
-      line(fmt::format("{}; {}; {}; {}; {}; {}; {}; {}; {}; ", run->metadata.seed, wall,
+      line(fmt::format("{}; {}; {}; {}; {}; {}; {}; {}; {}; ", run->seed, wallOf(*run),
                        s.averageCoverage, s.averageUtilization, s.averageReward,
                        s.objectCollisionTime, s.cameraCollisionTime, s.minObjectDistance,
                        s.minCameraDistance));
@@ -85,11 +97,10 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
     line("coverage REAL");
     line("utilization REAL");
     line(fmt::format("{} runs", list.size()));
-    for (const RunRecord* run : list) {
+    for (const OmplRun* run : list) {
       std::string series;
-      for (const auto& step : run->steps) {
-        series += fmt::format("{},{},{},;", step.time, step.terms.coverage, step.terms.utilization);
-      }
+      for (const auto& [time, coverage, utilization] : run->progress)
+        series += fmt::format("{},{},{},;", time, coverage, utilization);
       line(series);
     }
     line(".");
@@ -98,7 +109,8 @@ std::string omplBenchmarkLog(const std::string& scene, const std::vector<RunReco
 }
 
 std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
-                                             const BatchManifest& manifest, unsigned workers) {
+                                             const BatchManifest& manifest, unsigned workers,
+                                             const std::map<std::string, OmplRun>& kept) {
   std::vector<std::string> methods = manifest.methods;
   for (const auto& [method, identity] : manifest.methodIdentities)
     methods.push_back(method);
@@ -119,15 +131,14 @@ std::vector<fs::path> writeOmplBenchmarkLogs(const BatchFolder& folder,
     try {
       auto& [scene, files] = scenes[i];
       std::sort(files.begin(), files.end());
-      std::vector<RunRecord> runs;
-      for (const auto& file : files)
-        runs.push_back(loadRunFile(file));
-      std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) {
-        return std::tie(a.metadata.method, a.metadata.seed) <
-               std::tie(b.metadata.method, b.metadata.seed);
-      });
+      std::vector<OmplRun> runs;
+      for (const auto& file : files) {
+        const auto known = kept.find(file.stem().string());
+        runs.push_back(known != kept.end() ? known->second : omplRunOf(loadRunFile(file)));
+      }
       written[i] = folder.omplDir() / (scene + ".log");
-      writeFileAtomically(written[i], omplBenchmarkLog(scene, runs, timings, manifest.parameters));
+      writeFileAtomically(written[i],
+                          omplBenchmarkLog(scene, std::move(runs), timings, manifest.parameters));
     } catch (...) {
       errors[i] = std::current_exception();
     }

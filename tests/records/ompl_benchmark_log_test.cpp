@@ -71,6 +71,28 @@ TEST(OmplBenchmarkLogs, AreTheSameBytesWhateverTheNumberOfWorkers) {
   }
 }
 
+// The runs a batch kept in memory give the logs that reading every run file back gives, to the
+// byte; a kept run is taken from memory (its file is not read: here it is broken).
+TEST(OmplBenchmarkLogs, RunsKeptInMemoryGiveTheBytesOfRunsReadBack) {
+  const BatchFolder readBack = batchWithRuns(testing::freshDir("read_back"));
+  const BatchFolder fromMemory = batchWithRuns(testing::freshDir("from_memory"));
+  std::map<std::string, OmplRun> kept;
+  for (int s = 0; s < 7; s += 2) {
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      const RunRecord run = runOf("scene_" + std::to_string(s), "paper", seed);
+      kept.emplace(runStem(run.metadata), omplRunOf(run));
+      std::ofstream(fromMemory.runFile(runStem(run.metadata))) << "{ broken";
+    }
+  }
+  const auto expected = writeOmplBenchmarkLogs(readBack, manifestOfTwoMethods(), 2);
+  const auto logs = writeOmplBenchmarkLogs(fromMemory, manifestOfTwoMethods(), 2, kept);
+  ASSERT_EQ(logs.size(), expected.size());
+  for (std::size_t i = 0; i < logs.size(); ++i) {
+    EXPECT_EQ(logs[i].filename(), expected[i].filename());
+    EXPECT_EQ(testing::readFile(logs[i]), testing::readFile(expected[i])) << logs[i];
+  }
+}
+
 TEST(OmplBenchmarkLogs, ABrokenRunFileIsReportedAsOneWorkerMeetsIt) {
   for (const unsigned workers : {1u, 4u}) {
     SCOPED_TRACE(workers);
