@@ -43,10 +43,8 @@ nlohmann::json looksToJson(const std::map<std::string, MethodLook>& looks) {
 nlohmann::json manifestToJson(const BatchManifest& m) {
   nlohmann::json scenes = nlohmann::json::array();
   for (const auto& s : m.scenes) {
-    scenes.push_back({{"name", s.name},
-                      {"file", s.file},
-                      {"hash", fmt::format("{:016x}", s.hash)},
-                      {"group", s.group}});
+    scenes.push_back(
+        {{"name", s.name}, {"file", s.file}, {"hash", hashText(s.hash)}, {"group", s.group}});
   }
   return {{"format", "camcov-batch/1"},
           {"toolVersion", m.toolVersion},

@@ -29,6 +29,10 @@ void requireKnownKeys(const nlohmann::json& object,
   }
 }
 
+std::string hashText(std::uint64_t hash) {
+  return fmt::format("{:016x}", hash);
+}
+
 std::uint64_t hashFrom(const nlohmann::json& value, std::string_view where,
                        const std::string& source) {
   const auto bad = [&] {

@@ -24,7 +24,11 @@ void requireKnownKeys(const nlohmann::json& object,
                       std::initializer_list<std::span<const std::string_view>> known,
                       std::string_view where, const std::string& source);
 
-// A scene file's hash as camcov writes it: a string of 1 to 16 hexadecimal digits. Throws
+// A scene file's hash as camcov writes it in every file (run files, batch manifests, optimum
+// files): sixteen hexadecimal digits, a string, since a JSON number past 2^53 rounds in
+// JavaScript and Python.
+std::string hashText(std::uint64_t hash);
+// That hash read back: a string of 1 to 16 hexadecimal digits. Throws
 // InputError ("SOURCE: WHERE ...") for anything else, where std::stoull would accept a sign or
 // trailing text and throw its own exceptions for numbers out of range.
 std::uint64_t hashFrom(const nlohmann::json& value, std::string_view where,

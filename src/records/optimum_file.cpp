@@ -1,7 +1,5 @@
 #include "records/optimum_file.h"
 
-#include <fmt/format.h>
-
 #include <fstream>
 
 #include "params/parameter_table.h"
@@ -21,28 +19,26 @@ nlohmann::json optimumToJson(const OptimumFile& f) {
     curve.push_back(
         {{"evaluations", step.evaluations}, {"reward", step.reward}, {"coverage", step.coverage}});
   }
-  return {
-      {"format", kOptimumFormat},
-      {"note",
-       "the best team pose a random, local search found: a reference, not a proof of "
-       "optimality; the curve shows how the best grew with the budget"},
-      {"scene",
-       {{"name", f.scene}, {"file", f.sceneFile}, {"hash", fmt::format("{:016x}", f.sceneHash)}}},
-      {"time", f.time},
-      {"seed", f.seed},
-      {"budget", f.budget},
-      {"parameters", params::toJson(f.parameters)},
-      {"best",
-       {{"poses", poses},
-        {"coverage", r.terms.coverage},
-        {"utilization", r.terms.utilization},
-        {"repulsion", r.terms.repulsion},
-        {"reward", r.terms.reward}}},
-      {"found", {{"round", r.foundInRound}, {"by", r.foundBy}, {"evaluations", r.foundAt}}},
-      {"travelTime", finiteOrNull(f.travelTime)},
-      {"rounds", r.rounds},
-      {"evaluations", r.evaluations},
-      {"curve", curve}};
+  return {{"format", kOptimumFormat},
+          {"note",
+           "the best team pose a random, local search found: a reference, not a proof of "
+           "optimality; the curve shows how the best grew with the budget"},
+          {"scene", {{"name", f.scene}, {"file", f.sceneFile}, {"hash", hashText(f.sceneHash)}}},
+          {"time", f.time},
+          {"seed", f.seed},
+          {"budget", f.budget},
+          {"parameters", params::toJson(f.parameters)},
+          {"best",
+           {{"poses", poses},
+            {"coverage", r.terms.coverage},
+            {"utilization", r.terms.utilization},
+            {"repulsion", r.terms.repulsion},
+            {"reward", r.terms.reward}}},
+          {"found", {{"round", r.foundInRound}, {"by", r.foundBy}, {"evaluations", r.foundAt}}},
+          {"travelTime", finiteOrNull(f.travelTime)},
+          {"rounds", r.rounds},
+          {"evaluations", r.evaluations},
+          {"curve", curve}};
 }
 
 OptimumFile optimumFromJson(const nlohmann::json& j, const std::string& source) {

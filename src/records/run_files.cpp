@@ -300,8 +300,7 @@ nlohmann::json runToJson(const RunRecord& run) {
   nlohmann::json j;
   j["format"] = kRunFormat;
   j["tool"] = {{"name", "camcov"}, {"version", m.toolVersion}};
-  j["scene"] = {
-      {"name", m.scene}, {"file", m.sceneFile}, {"hash", fmt::format("{:016x}", m.sceneHash)}};
+  j["scene"] = {{"name", m.scene}, {"file", m.sceneFile}, {"hash", hashText(m.sceneHash)}};
   j["method"] = m.method;
   j["seed"] = m.seed;
   j["parameters"] = params::toJson(m.parameters);
