@@ -95,41 +95,133 @@ Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p) {
   return best;
 }
 
-double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    best = std::min(best, squaredDistanceToSegment(p, ring[i], ring[(i + 1) % n]));
-  }
-  return std::sqrt(best);
-}
-
 namespace {
 
-// Crossing number with the half-open rule, so a ray through a vertex counts once. For p off
-// the boundary.
-bool strictlyInside(std::span<const Vec2> ring, Vec2 p) {
-  bool inside = false;
-  for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
-    const Vec2 a = ring[i], b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double xCross = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < xCross) inside = !inside;
+// A ring's edges in blocks of consecutive ones, each with the box of its vertices, so that a
+// query about one point skips the blocks that cannot matter to it: a target of thousands of
+// vertices is mostly far from a camera, and the edges of a round one cross few horizontal
+// lines. Edge i runs from ring[i] to ring[(i + 1) % n]; block b holds edges [b·k, (b + 1)·k).
+// The answers are the edge-by-edge loop's to the bit: a block is skipped only where none of
+// its edges could change them.
+class EdgeBlocks {
+ public:
+  static constexpr std::size_t kEdges = 16;
+  // Below this many edges the boxes cost more than they save: every edge is visited.
+  static constexpr std::size_t kFewest = 2 * kEdges;
+
+  explicit EdgeBlocks(std::span<const Vec2> ring) : ring_(ring) {
+    const std::size_t n = ring.size();
+    boxes_.clear();
+    if (n < kFewest) {
+      // One block of every edge, never skipped.
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      boxes_.push_back({{-inf, -inf}, {inf, inf}});
+      return;
+    }
+    for (std::size_t start = 0; start < n; start += kEdges) {
+      const std::size_t end = std::min(n, start + kEdges);
+      Box box = boundingBox(ring.subspan(start, end - start));
+      const Vec2 last = ring[end % n];  // the end of the block's last edge
+      box.min = {std::min(box.min.x, last.x), std::min(box.min.y, last.y)};
+      box.max = {std::max(box.max.x, last.x), std::max(box.max.y, last.y)};
+      boxes_.push_back(box);
     }
   }
-  return inside;
-}
+
+  // min over the edges of squaredDistanceToSegment(p, ·): the nearest block first, then the
+  // others that could hold a nearer edge.
+  double squaredDistance(Vec2 p) const {
+    double best = std::numeric_limits<double>::infinity();
+    if (boxes_.size() == 1) return edgesSquaredDistance(0, p, best);
+    // The computed edge distances and box distances each round by a few ulps of the
+    // coordinates; a block is skipped only when its box is farther than the best by far more.
+    double scale = std::max(std::abs(p.x), std::abs(p.y));
+    std::size_t nearest = 0;
+    double nearestGap = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < boxes_.size(); ++b) {
+      const Box& box = boxes_[b];
+      scale = std::max({scale, std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x),
+                        std::abs(box.max.y)});
+      if (const double gap = boxGap(box, p); gap < nearestGap) {
+        nearestGap = gap;
+        nearest = b;
+      }
+    }
+    const double slack = 1e-9 * (1.0 + scale);
+    best = edgesSquaredDistance(nearest, p, best);
+    double reach = std::sqrt(best) + slack;
+    for (std::size_t b = 0; b < boxes_.size(); ++b) {
+      if (b == nearest || boxGap(boxes_[b], p) > reach) continue;
+      if (const double d = edgesSquaredDistance(b, p, best); d < best) {
+        best = d;
+        reach = std::sqrt(best) + slack;
+      }
+    }
+    return best;
+  }
+
+  // Crossing number with the half-open rule, so a ray through a vertex counts once. For p off
+  // the boundary. A block wholly above p's horizontal line, or wholly on or below it, holds no
+  // edge that crosses it.
+  bool strictlyInside(Vec2 p) const {
+    bool inside = false;
+    const std::size_t n = ring_.size();
+    for (std::size_t b = 0; b < boxes_.size(); ++b) {
+      if (boxes_[b].min.y > p.y || boxes_[b].max.y <= p.y) continue;
+      for (std::size_t i = first(b); i < last(b); ++i) {
+        const Vec2 a = ring_[i + 1 == n ? 0 : i + 1], c = ring_[i];
+        if ((a.y > p.y) != (c.y > p.y)) {
+          const double xCross = a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y);
+          if (p.x < xCross) inside = !inside;
+        }
+      }
+    }
+    return inside;
+  }
+
+ private:
+  std::size_t first(std::size_t b) const { return boxes_.size() == 1 ? 0 : b * kEdges; }
+  std::size_t last(std::size_t b) const {
+    return boxes_.size() == 1 ? ring_.size() : std::min(ring_.size(), (b + 1) * kEdges);
+  }
+  // Distance from p to the box (0 inside), never more than to anything in it.
+  static double boxGap(const Box& box, Vec2 p) {
+    const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
+    const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
+    return std::sqrt(dx * dx + dy * dy);
+  }
+  double edgesSquaredDistance(std::size_t b, Vec2 p, double best) const {
+    const std::size_t n = ring_.size();
+    for (std::size_t i = first(b); i < last(b); ++i)
+      best = std::min(best, squaredDistanceToSegment(p, ring_[i], ring_[i + 1 == n ? 0 : i + 1]));
+    return best;
+  }
+
+  std::span<const Vec2> ring_;
+  // Scratch kept by the thread, so that a query makes no allocation once the thread has seen
+  // its largest ring: one EdgeBlocks at a time per thread.
+  static thread_local std::vector<Box> boxes_;
+};
+
+thread_local std::vector<Box> EdgeBlocks::boxes_;
 
 }  // namespace
 
+double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
+  return std::sqrt(EdgeBlocks(ring).squaredDistance(p));
+}
+
 Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
-  if (distanceToBoundary(ring, p) <= tolerance) return Containment::OnBoundary;
-  return strictlyInside(ring, p) ? Containment::Inside : Containment::Outside;
+  const EdgeBlocks blocks(ring);
+  if (std::sqrt(blocks.squaredDistance(p)) <= tolerance) return Containment::OnBoundary;
+  return blocks.strictlyInside(p) ? Containment::Inside : Containment::Outside;
 }
 
 double distanceToPolygon(std::span<const Vec2> ring, Vec2 p) {
-  const double d = distanceToBoundary(ring, p);
+  const EdgeBlocks blocks(ring);
+  const double d = std::sqrt(blocks.squaredDistance(p));
   if (d == 0.0) return 0.0;
-  return strictlyInside(ring, p) ? 0.0 : d;
+  return blocks.strictlyInside(p) ? 0.0 : d;
 }
 
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {

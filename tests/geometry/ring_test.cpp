@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -57,6 +60,88 @@ TEST(DistanceToPolygon, IsZeroInsideAndOnBoundary) {
   EXPECT_EQ(distanceToPolygon(kUnitSquare, {1.0, 0.5}), 0.0);
   EXPECT_DOUBLE_EQ(distanceToPolygon(kUnitSquare, {0.5, 3.0}), 2.0);
   EXPECT_DOUBLE_EQ(distanceToBoundary(kUnitSquare, {0.5, 0.5}), 0.5);
+}
+
+// The edge-by-edge answers, written out here as the reference that the ring functions, which
+// skip blocks of edges on long rings, must give to the bit.
+double referenceDistanceToBoundary(const Ring& ring, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    best = std::min(best, squaredDistanceToSegment(p, ring[i], ring[(i + 1) % ring.size()]));
+  return std::sqrt(best);
+}
+
+bool referenceCrossesOddly(const Ring& ring, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[i], b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+      inside = !inside;
+  }
+  return inside;
+}
+
+// Star-shaped rings of n vertices around `centre`: radii drawn in [0.2, 1]·r, some vertices
+// repeated, some on the line of their neighbours.
+Ring starRing(std::size_t n, Vec2 centre, double r, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> radius(0.2 * r, r);
+  Ring ring;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+    if (i % 7 == 3) {
+      ring.push_back(ring.back());  // a repeated vertex: a zero-length edge
+    } else if (i % 11 == 5) {
+      ring.push_back(ring.back() + (ring.back() - ring[ring.size() - 2]));  // collinear
+    } else {
+      ring.push_back(centre + radius(random) * unitVector(angle));
+    }
+  }
+  return ring;
+}
+
+TEST(DistanceToPolygon, LongRingsGiveTheEdgeByEdgeAnswersToTheBit) {
+  std::mt19937_64 random(7);
+  for (const std::size_t n : {3u, 31u, 32u, 33u, 47u, 48u, 49u, 200u, 4001u}) {
+    for (const Vec2 centre : {Vec2{0, 0}, Vec2{3e5, -7e5}}) {
+      const Ring ring = starRing(n, centre, 10.0, random);
+      std::uniform_real_distribution<double> near(-25.0, 25.0), unit(0.0, 1.0);
+      std::vector<Vec2> points;
+      for (int k = 0; k < 300; ++k)
+        points.push_back(centre + Vec2{near(random), near(random)});
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        points.push_back(a);                           // on a vertex
+        points.push_back(a + unit(random) * (b - a));  // on an edge, as rounding puts it
+        points.push_back({centre.x - 30.0, a.y});      // a ray through a vertex
+      }
+      points.push_back(centre + Vec2{1e4, 1e4});  // far away
+      for (const Vec2 p : points) {
+        const double reference = referenceDistanceToBoundary(ring, p);
+        ASSERT_EQ(distanceToBoundary(ring, p), reference) << n << " at " << p.x << ", " << p.y;
+        const bool inside = referenceCrossesOddly(ring, p);
+        ASSERT_EQ(distanceToPolygon(ring, p), reference == 0.0 || inside ? 0.0 : reference);
+        for (const double tolerance : {0.0, 1e-9, 0.5}) {
+          ASSERT_EQ(locate(ring, p, tolerance), reference <= tolerance ? Containment::OnBoundary
+                                                : inside               ? Containment::Inside
+                                                                       : Containment::Outside);
+        }
+      }
+    }
+  }
+}
+
+TEST(DistanceToPolygon, LongDegenerateRingsGiveTheEdgeByEdgeAnswers) {
+  // Every vertex the same point, and every vertex on one line: no area, no crossing.
+  const Ring point(100, Vec2{2, 3});
+  Ring line;
+  for (int i = 0; i < 100; ++i)
+    line.push_back({0.5 * i, 0.0});
+  for (const Vec2 p : {Vec2{2, 3}, Vec2{2, 4}, Vec2{-1, 0}, Vec2{10, 0}, Vec2{10, 1}}) {
+    for (const Ring* ring : std::array<const Ring*, 2>{&point, &line}) {
+      EXPECT_EQ(distanceToBoundary(*ring, p), referenceDistanceToBoundary(*ring, p));
+      EXPECT_EQ(distanceToPolygon(*ring, p), referenceDistanceToBoundary(*ring, p));
+    }
+  }
 }
 
 TEST(DistanceBetweenPolygons, ZeroWhenTouchingOverlappingOrNested) {
