@@ -103,35 +103,50 @@ double lookoutYaw(reward::RewardModel& model, std::span<geometry::Pose> team, st
                   int directions) {
   const geometry::Pose kept = team[j];
   const double reach = turnRate * std::max(0.0, timeLeft);
-  double bestYaw = plannedYaw, best = -std::numeric_limits<double>::infinity();
+  // The planned yaw first: sweeping it leaves the model's kept terms those of this team, which
+  // the bound takes.
+  team[j].yaw = plannedYaw;
+  double best = model.reward(team), bestYaw = plannedYaw;
+  int bestK = -1;
   // A direction whose bound (added_camera_bound.h: camera j turned there, the others as they
-  // are) cannot beat the best so far is not swept: most look away from what the camera could
-  // add. The planned yaw, swept first, leaves the model's kept terms those of this team, which
-  // the bound takes. Where the reward counts resolution no bound holds.
+  // are) cannot beat the best so far, nor tie it, is not swept: most look away from what the
+  // camera could add. They are swept from the highest bound down, so that the best comes early
+  // and bounds more of the rest; the choice is still the first best in index order (the
+  // planned yaw, then k = 0, 1, ...). Where the reward counts resolution no bound holds, and
+  // every direction is swept.
   const bool bounded = !model.countsResolution();
   reward::AddedCameraBound bound;
   std::vector<double> terms;
-  for (int k = -1; k < directions; ++k) {
-    const double yaw =
-        k < 0 ? plannedYaw : geometry::wrapAngle(2.0 * std::numbers::pi * k / directions);
+  if (bounded) {
+    bound.prepareMoving(model, team, j);
+    bound.placeAt(kept.position(), terms);
+  }
+  struct Direction {
+    int k;
+    double yaw, bound;
+  };
+  std::vector<Direction> candidates;
+  for (int k = 0; k < directions; ++k) {
+    const double yaw = geometry::wrapAngle(2.0 * std::numbers::pi * k / directions);
     // Turning there, then on to the goal's yaw, must fit in the time left.
-    if (k >= 0 && std::abs(geometry::wrapAngle(yaw - kept.yaw)) +
-                          std::abs(geometry::wrapAngle(goalYaw - yaw)) >
-                      reach) {
+    if (std::abs(geometry::wrapAngle(yaw - kept.yaw)) +
+            std::abs(geometry::wrapAngle(goalYaw - yaw)) >
+        reach) {
       continue;
     }
-    if (k >= 0 && bounded && reward::AddedCameraBound::cannotBeat(bound.ofYaw(yaw), best)) {
-      continue;
-    }
-    team[j].yaw = yaw;
+    candidates.push_back(
+        {k, yaw, bounded ? bound.ofYaw(yaw) : std::numeric_limits<double>::infinity()});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Direction& a, const Direction& b) { return a.bound > b.bound; });
+  for (const Direction& d : candidates) {
+    if (bounded && reward::AddedCameraBound::cannotBeat(d.bound, best)) continue;
+    team[j].yaw = d.yaw;
     const double r = model.reward(team);
-    if (k < 0 && bounded) {
-      bound.prepareMoving(model, team, j);
-      bound.placeAt(kept.position(), terms);
-    }
-    if (r > best) {
+    if (r > best || (r == best && d.k < bestK)) {
       best = r;
-      bestYaw = yaw;
+      bestYaw = d.yaw;
+      bestK = d.k;
     }
   }
   team[j] = kept;

@@ -161,5 +161,24 @@ TEST(LookoutYaw, ChoosesAsIfEveryYawWereSwept) {
   EXPECT_GT(turned, 30) << "the directions, not only the planned yaw, are chosen";
 }
 
+TEST(LookoutYaw, ATieGoesToTheFirstDirectionEvenWhenALaterOneIsSweptFirst) {
+  // From the origin, east and west each show one side of a square, mirror images: the same
+  // reward to the bit. West also has a small target behind its square, hidden, which raises
+  // west's bound (occlusion is not bounded), so west is swept first; east, direction 0, still
+  // wins the tie as in index order.
+  reward::RewardModel model(params::RewardParams{}, kTheta);
+  model.setWorld(testing::world(testing::box(-20, -20, 20, 20),
+                                {testing::box(3, -0.5, 4, 0.5), testing::box(-4, -0.5, -3, 0.5),
+                                 testing::box(-8, -0.1, -7.8, 0.1)}));
+  std::vector<Pose> team{{0, 0, std::numbers::pi / 2}};
+  const double planned = std::numbers::pi / 2;  // north: nothing in view
+  std::vector<Pose> east{{0, 0, 0}}, west{{0, 0, std::numbers::pi}}, north{team};
+  const double eastReward = model.reward(east);
+  ASSERT_EQ(eastReward, model.reward(west)) << "the premise: a tie";
+  ASSERT_LT(model.reward(north), eastReward);
+  EXPECT_EQ(everyYawSwept(model, team, 0, planned, planned, 10.0, 1.0, 16), 0.0);
+  EXPECT_EQ(lookoutYaw(model, team, 0, planned, planned, 10.0, 1.0, 16), 0.0);
+}
+
 }  // namespace
 }  // namespace camcov::control
