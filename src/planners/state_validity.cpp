@@ -1,40 +1,39 @@
 #include "planners/state_validity.h"
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 namespace camcov::planners {
-
-namespace {
-
-// Distance from p to a box (0 inside): never more than the distance to what the box holds.
-double boxDistance(const geometry::Box& box, geometry::Vec2 p) {
-  const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
-  const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
-  return geometry::norm({dx, dy});
-}
-
-}  // namespace
 
 void StateValidity::setWorld(const kinematics::World& world) {
   world_ = &world;
   objects_.clear();
   boxes_.clear();
+  scale_ = 0.0;
   for (const auto* group : {&world.targets, &world.obstacles}) {
     for (const auto& object : *group) {
       objects_.push_back(&object);
-      boxes_.push_back(geometry::boundingBox(object));
+      const geometry::Box& box = boxes_.emplace_back(geometry::boundingBox(object));
+      scale_ = std::max({scale_, std::abs(box.min.x), std::abs(box.min.y), std::abs(box.max.x),
+                         std::abs(box.max.y)});
     }
   }
 }
 
-double StateValidity::clearance(geometry::Vec2 p) const {
-  double best = std::numeric_limits<double>::infinity();
+bool StateValidity::clearOfObjects(geometry::Vec2 p) const {
+  // An object whose box lies farther than d1 cannot be nearer: only the objects around p are
+  // measured. "Farther" with room for the rounding of both distances, far below a nanometre,
+  // so that the answer is the one every object measured would give.
+  const double reach = d1_ + 1e-9 * (1.0 + scale_ + std::abs(p.x) + std::abs(p.y));
+  const double reach2 = reach * reach;
   for (std::size_t i = 0; i < objects_.size(); ++i) {
-    if (boxDistance(boxes_[i], p) >= best) continue;
-    best = std::min(best, geometry::distanceToPolygon(*objects_[i], p));
+    const geometry::Box& box = boxes_[i];
+    const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
+    const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
+    if (dx * dx + dy * dy > reach2) continue;
+    if (geometry::distanceToPolygon(*objects_[i], p) < d1_) return false;
   }
-  return best;
+  return true;
 }
 
 bool StateValidity::insideBoundary(geometry::Vec2 p) const {

@@ -17,10 +17,10 @@ class StateValidity {
 
   // Keeps a reference to `world`: it must outlive the next setWorld().
   void setWorld(const kinematics::World& world);
-  // Distance to the closest target or obstacle (0 inside one); infinity if there are none.
-  double clearance(geometry::Vec2 p) const;
   bool insideBoundary(geometry::Vec2 p) const;
-  bool isValid(geometry::Vec2 p) const { return insideBoundary(p) && clearance(p) >= d1_; }
+  // At least d1 from every target and obstacle (outside each, and its distance to it ≥ d1).
+  bool clearOfObjects(geometry::Vec2 p) const;
+  bool isValid(geometry::Vec2 p) const { return insideBoundary(p) && clearOfObjects(p); }
   // The straight motion from a to b: both ends strictly inside the boundary, no boundary edge
   // touched, and every object at least d1 from the segment — or, where one end is already
   // closer (only a camera's current pose can be), no closer than that end, and the other end
@@ -38,6 +38,7 @@ class StateValidity {
   const kinematics::World* world_ = nullptr;
   std::vector<const geometry::Ring*> objects_;
   std::vector<geometry::Box> boxes_;  // of each object, for cheap rejection
+  double scale_ = 0.0;                // the largest |coordinate| of the objects' boxes
 };
 
 }  // namespace camcov::planners

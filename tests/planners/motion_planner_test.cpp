@@ -2,10 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
+#include <vector>
 
+#include "geometry/ring.h"
 #include "planners/state_validity.h"
 #include "reward/reward_model.h"
+#include "support/random_worlds.h"
 #include "support/small_worlds.h"
 
 namespace camcov::planners {
@@ -84,6 +88,34 @@ TEST(Roadmap, UnreachableGoalHasNoPath) {
   w.targets.clear();
   Roadmap roadmap(w, smallBudget(), kTheta, 2);
   EXPECT_FALSE(roadmap.query({-10, 0, 0}, {10, 0, 0}));
+}
+
+TEST(StateValidity, AStateIsClearWhenEveryObjectMeasuredIsAtLeastD1Away) {
+  // Against every object measured, points drawn at random and points exactly d1 (and a hair
+  // less) from a side of an axis-aligned square, where the boxes' skip is tightest.
+  testing::SplitMix64 random{3};
+  for (int world = 0; world < 5; ++world) {
+    kinematics::World w = testing::randomWorld(random);
+    w.obstacles.push_back({{2, -6}, {4, -6}, {4, -4}, {2, -4}});
+    for (const double d1 : {0.0, 0.5, 1.0, 3.0}) {
+      StateValidity v(d1);
+      v.setWorld(w);
+      std::vector<geometry::Vec2> points;
+      for (int k = 0; k < 400; ++k)
+        points.push_back(testing::randomPose(random).position());
+      for (const double gap : {d1, std::nextafter(d1, 0.0)})
+        points.insert(points.end(), {{4 + gap, -5}, {2 - gap, -5}, {3, -4 + gap}, {3, -6 - gap}});
+      for (const geometry::Vec2 p : points) {
+        bool clear = true;
+        for (const auto* group : {&w.targets, &w.obstacles}) {
+          for (const geometry::Ring& object : *group)
+            clear = clear && geometry::distanceToPolygon(object, p) >= d1;
+        }
+        ASSERT_EQ(v.clearOfObjects(p), clear) << "d1 " << d1 << " at " << p.x << ", " << p.y;
+        ASSERT_EQ(v.isValid(p), clear && v.insideBoundary(p));
+      }
+    }
+  }
 }
 
 TEST(StateValidity, MotionsMustKeepClearanceD1Exactly) {
