@@ -17,6 +17,7 @@ packages=(
   ffmpeg                            # ffprobe, used by tests to check videos
   libgtest-dev libgmock-dev         # tests
   libcli11-dev libfmt-dev           # command line, formatting
+  libjemalloc-dev                   # the program's allocator (src/cli/CMakeLists.txt)
   ompl-demos python3                # ompl_benchmark_statistics reads our logs in a test
   time                              # /usr/bin/time in scripts/throughput_benchmark.sh
   libbenchmark-dev                  # Google Benchmark
