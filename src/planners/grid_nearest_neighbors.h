@@ -8,9 +8,8 @@
 // laid out densely over the box where they are expected; a query visits the cells ring by ring
 // outwards from its own. The few elements outside that box are kept aside and measured by
 // every query, so one far away never makes the grid large. The distance is OMPL's SE(2) distance,
-// ‖Δxy‖ + ½|Δγ|, worked out here from the poses kept beside the elements with OMPL's own operations
-// in its order (so to the bit what SE2StateSpace::distance returns, without its virtual calls and
-// the jumps to each state); it is at least the planar distance ‖Δxy‖, so no element of a cell
+// ‖Δxy‖ + ½|Δγ| (se2_distance.h), from the poses kept beside the elements (so without the jumps
+// to each state); it is at least the planar distance ‖Δxy‖, so no element of a cell
 // farther than the k-th best (or than the radius) can qualify, and the search stops there.
 // Results are those of NearestNeighborsLinear, sorted by distance, ties in the order the
 // elements were added (Linear leaves ties to std::partial_sort: with distances of random
@@ -29,6 +28,7 @@
 
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
+#include "planners/se2_distance.h"
 
 namespace camcov::planners {
 
@@ -106,23 +106,6 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
   }
   std::size_t size() const override { return all_.size(); }
   void list(std::vector<T>& data) const override { data = all_; }
-
-  // OMPL's SE2StateSpace::distance: its compound space sums each component's distance times
-  // its weight (1 for R², ½ for SO(2)) from 0; R²'s is the root of 0 + Δx² + Δy², SO(2)'s
-  // |Δγ| or 2π − |Δγ| past π. The same operations in the same order give the same bits
-  // (the build does not fuse multiply-adds).
-  static double se2Distance(const geometry::Pose& a, const geometry::Pose& b) {
-    const double dx = a.x - b.x, dy = a.y - b.y;
-    double squares = 0.0;
-    squares += dx * dx;
-    squares += dy * dy;
-    const double turn = std::fabs(a.yaw - b.yaw);
-    const double so2 = turn > std::numbers::pi ? 2.0 * std::numbers::pi - turn : turn;
-    double distance = 0.0;
-    distance += 1.0 * std::sqrt(squares);
-    distance += 0.5 * so2;
-    return distance;
-  }
 
  private:
   struct Key {

@@ -19,6 +19,7 @@
 
 #include "geometry/same_bits.h"
 #include "planners/grid_nearest_neighbors.h"
+#include "planners/se2_distance.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
 #include "reward/reward_model.h"
@@ -213,7 +214,8 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
   }
 
   ob::Cost motionCost(const ob::State* a, const ob::State* b) const override {
-    return ob::Cost(0.5 * (stateCost(a).value() + stateCost(b).value()) * si_->distance(a, b));
+    return ob::Cost(0.5 * (stateCost(a).value() + stateCost(b).value()) *
+                    se2Distance(toPose(a), toPose(b)));
   }
 
  private:

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <vector>
 
+#include "planners/se2_distance.h"
 #include "support/splitmix64.h"
 
 namespace camcov::planners {
@@ -33,14 +34,14 @@ double omplDistance(const Pose& a, const Pose& b) {
   return space->distance(s.get(), t.get());
 }
 
-TEST(GridNearestNeighbors, MeasuresTheSe2DistanceToTheBitAsOmplDoes) {
+TEST(Se2Distance, IsWhatOmplsSe2SpaceMeasuresToTheBit) {
   testing::SplitMix64 random{5};
   for (int i = 0; i < 100000; ++i) {
     const Pose a{random.uniform(-1e3, 1e3), random.uniform(-1e-3, 1e-3),
                  random.uniform(-std::numbers::pi, std::numbers::pi)};
     const Pose b{a.x + random.uniform(-50, 50), random.uniform(-1e3, 1e3),
                  i % 7 == 0 ? a.yaw : random.uniform(-std::numbers::pi, std::numbers::pi)};
-    ASSERT_EQ(GridNearestNeighbors<int>::se2Distance(a, b), omplDistance(a, b))
+    ASSERT_EQ(se2Distance(a, b), omplDistance(a, b))
         << a.x << " " << a.y << " " << a.yaw << " / " << b.x << " " << b.y << " " << b.yaw;
   }
 }
