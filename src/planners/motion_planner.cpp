@@ -51,14 +51,15 @@ void fromPose(const geometry::Pose& p, ob::State* s) {
   se2->setYaw(yaw >= std::numbers::pi ? yaw - 2.0 * std::numbers::pi : yaw);
 }
 
-// What the roadmap has worked out about a state's pose: eq. (10)'s state cost, and whether it
-// lies strictly inside the room; each at most once. OMPL asks again for every edge a milestone
-// is tried with (about 25 a milestone), so the answers are kept in the state itself
-// (FactfulSE2Space), for the very bits of the pose they were worked out at: a state OMPL writes
-// again starts over.
+// What the roadmap has worked out about a state's pose: eq. (10)'s state cost, whether it lies
+// strictly inside the room, and whether it is clear of the objects; each at most once. OMPL asks
+// again for every edge a milestone is tried with (about 25 a milestone), so the answers are kept in
+// the state itself (FactfulSE2Space), for the very bits of the pose they were worked out at: a
+// state OMPL writes again starts over.
 struct PoseFacts {
   std::optional<double> cost;
   std::optional<bool> inside;
+  std::optional<bool> clear;  // of every object (StateValidity::clearOfObjects)
 };
 
 // Its components are parts of it, so a state is one allocation rather than five (the compound
@@ -164,7 +165,8 @@ class CoverageSampler final : public ob::ValidStateSampler {
 
 // Motions checked exactly against the objects (StateValidity::isValidMotion) instead of
 // OMPL's sampling at a resolution: faster, and no thin object slips between two samples.
-// Whether a milestone is inside the room is worked out once, not once per edge tried.
+// Whether a milestone is inside the room, and clear of the objects, is worked out once, not once
+// per edge tried.
 class ExactMotionValidator final : public ob::MotionValidator {
  public:
   ExactMotionValidator(ob::SpaceInformation* si, PlanningWorld& w) : MotionValidator(si), w_(w) {}
@@ -172,7 +174,8 @@ class ExactMotionValidator final : public ob::MotionValidator {
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
     const geometry::Pose a = toPose(s1), b = toPose(s2);
     const bool ok =
-        inside(s1, a) && inside(s2, b) && w_.validity.staysClear(a.position(), b.position());
+        inside(s1, a) && inside(s2, b) &&
+        w_.validity.staysClear(a.position(), b.position(), clear(s1, a) && clear(s2, b));
     ok ? ++valid_ : ++invalid_;
     return ok;
   }
@@ -192,6 +195,11 @@ class ExactMotionValidator final : public ob::MotionValidator {
     PoseFacts& facts = factsOf(s, p);
     if (!facts.inside) facts.inside = w_.validity.insideBoundary(p.position());
     return *facts.inside;
+  }
+  bool clear(const ob::State* s, const geometry::Pose& p) const {
+    PoseFacts& facts = factsOf(s, p);
+    if (!facts.clear) facts.clear = w_.validity.clearOfObjects(p.position());
+    return *facts.clear;
   }
 
   PlanningWorld& w_;

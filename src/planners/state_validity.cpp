@@ -40,7 +40,7 @@ bool StateValidity::insideBoundary(geometry::Vec2 p) const {
   return geometry::locate(world_->boundary, p, 0.0) == geometry::Containment::Inside;
 }
 
-bool StateValidity::staysClear(geometry::Vec2 a, geometry::Vec2 b) const {
+bool StateValidity::staysClear(geometry::Vec2 a, geometry::Vec2 b, bool endsClear) const {
   const std::size_t n = world_->boundary.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (geometry::segmentsIntersect(a, b, world_->boundary[i], world_->boundary[(i + 1) % n])) {
@@ -57,10 +57,14 @@ bool StateValidity::staysClear(geometry::Vec2 a, geometry::Vec2 b) const {
                                  box.min.y - span.max.y, span.min.y - box.max.y});
     if (gap >= d1_) continue;
     const geometry::Ring& object = *objects_[i];
-    const double da = geometry::distanceToPolygon(object, a);
-    const double db = geometry::distanceToPolygon(object, b);
-    if (da < d1_ && db < d1_) return false;  // no motion between two states too close
-    const double required = std::min({d1_, da, db});
+    // Ends clear of every object are at least d1 from this one: what is required is d1.
+    double required = d1_;
+    if (!endsClear) {
+      const double da = geometry::distanceToPolygon(object, a);
+      const double db = geometry::distanceToPolygon(object, b);
+      if (da < d1_ && db < d1_) return false;  // no motion between two states too close
+      required = std::min({d1_, da, db});
+    }
     if (required <= 0.0 || geometry::distanceSegmentToBoundary(object, a, b) < required)
       return false;
   }

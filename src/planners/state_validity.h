@@ -29,8 +29,10 @@ class StateValidity {
     return insideBoundary(a) && insideBoundary(b) && staysClear(a, b);
   }
   // isValidMotion for ends already known to be strictly inside the boundary: no boundary edge
-  // touched, and the objects kept at their distance.
-  bool staysClear(geometry::Vec2 a, geometry::Vec2 b) const;
+  // touched, and the objects kept at their distance. `endsClear`: both ends are known to be
+  // clearOfObjects (a roadmap's milestones), so every object need only be kept d1 from the
+  // segment, and the ends' own distances are not measured again.
+  bool staysClear(geometry::Vec2 a, geometry::Vec2 b, bool endsClear = false) const;
   double d1() const { return d1_; }
 
  private:

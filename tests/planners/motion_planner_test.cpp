@@ -118,6 +118,33 @@ TEST(StateValidity, AStateIsClearWhenEveryObjectMeasuredIsAtLeastD1Away) {
   }
 }
 
+TEST(StateValidity, AMotionBetweenClearEndsIsJudgedAsWhenTheEndsAreMeasured) {
+  testing::SplitMix64 random{11};
+  int judged = 0, refused = 0;
+  for (int world = 0; world < 5; ++world) {
+    const kinematics::World w = testing::randomWorld(random);
+    for (const double d1 : {0.0, 0.5, 1.5}) {
+      StateValidity v(d1);
+      v.setWorld(w);
+      for (int k = 0; k < 2000; ++k) {
+        const geometry::Vec2 a = testing::randomPose(random).position();
+        // Short motions as well as long ones, as a roadmap's edges are.
+        const geometry::Vec2 b =
+            k % 2 == 0 ? testing::randomPose(random).position()
+                       : a + geometry::Vec2{random.uniform(-3, 3), random.uniform(-3, 3)};
+        if (!v.isValid(a) || !v.isValid(b)) continue;
+        ++judged;
+        const bool measured = v.staysClear(a, b);
+        if (!measured) ++refused;
+        ASSERT_EQ(v.staysClear(a, b, true), measured)
+            << a.x << ", " << a.y << " to " << b.x << ", " << b.y << " with d1 " << d1;
+      }
+    }
+  }
+  EXPECT_GT(judged, 5000);
+  EXPECT_GT(refused, 500) << "motions refused, not only passed, are compared";
+}
+
 TEST(StateValidity, MotionsMustKeepClearanceD1Exactly) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
   StateValidity v(1.0);
