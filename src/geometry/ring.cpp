@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -97,27 +98,48 @@ Vec2 closestPointOnBoundary(std::span<const Vec2> ring, Vec2 p) {
 
 namespace {
 
-// A ring's edges in blocks of consecutive ones, each with the box of its vertices, so that a
-// query about one point skips the blocks that cannot matter to it: a target of thousands of
+// Edge i of a ring runs from ring[i] to ring[(i + 1) % n]. The two loops below take the edges
+// [first, last) of a ring, for the whole ring and for EdgeBlocks' blocks alike.
+
+// min(best, squaredDistanceToSegment(p, edge)) over the edges.
+double edgesSquaredDistance(std::span<const Vec2> ring, std::size_t first, std::size_t last, Vec2 p,
+                            double best) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = first; i < last; ++i)
+    best = std::min(best, squaredDistanceToSegment(p, ring[i], ring[i + 1 == n ? 0 : i + 1]));
+  return best;
+}
+
+// Whether an odd number of the edges cross the ray from p towards +x, with the half-open rule,
+// so that a ray through a vertex counts once: the crossing number's parity, for p off the
+// boundary.
+bool edgesCrossOddly(std::span<const Vec2> ring, std::size_t first, std::size_t last, Vec2 p) {
+  bool odd = false;
+  const std::size_t n = ring.size();
+  for (std::size_t i = first; i < last; ++i) {
+    const Vec2 a = ring[i + 1 == n ? 0 : i + 1], b = ring[i];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double xCross = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < xCross) odd = !odd;
+    }
+  }
+  return odd;
+}
+
+// A long ring's edges in blocks of consecutive ones, each with the box of its vertices, so that
+// a query about one point skips the blocks that cannot matter to it: a target of thousands of
 // vertices is mostly far from a camera, and the edges of a round one cross few horizontal
-// lines. Edge i runs from ring[i] to ring[(i + 1) % n]; block b holds edges [b·k, (b + 1)·k).
-// The answers are the edge-by-edge loop's to the bit: a block is skipped only where none of
-// its edges could change them.
+// lines. Block b holds edges [b·k, (b + 1)·k). The answers are those of the loops above over
+// every edge, to the bit: a block is skipped only where none of its edges could change them.
 class EdgeBlocks {
  public:
   static constexpr std::size_t kEdges = 16;
-  // Below this many edges the boxes cost more than they save: every edge is visited.
+  // Rings of fewer edges are not blocked: the boxes would cost more than they save.
   static constexpr std::size_t kFewest = 2 * kEdges;
 
   explicit EdgeBlocks(std::span<const Vec2> ring) : ring_(ring) {
     const std::size_t n = ring.size();
     boxes_.clear();
-    if (n < kFewest) {
-      // One block of every edge, never skipped.
-      constexpr double inf = std::numeric_limits<double>::infinity();
-      boxes_.push_back({{-inf, -inf}, {inf, inf}});
-      return;
-    }
     for (std::size_t start = 0; start < n; start += kEdges) {
       const std::size_t end = std::min(n, start + kEdges);
       Box box = boundingBox(ring.subspan(start, end - start));
@@ -128,11 +150,9 @@ class EdgeBlocks {
     }
   }
 
-  // min over the edges of squaredDistanceToSegment(p, ·): the nearest block first, then the
-  // others that could hold a nearer edge.
+  // edgesSquaredDistance over every edge: the nearest block first, then the others that could
+  // hold a nearer edge.
   double squaredDistance(Vec2 p) const {
-    double best = std::numeric_limits<double>::infinity();
-    if (boxes_.size() == 1) return edgesSquaredDistance(0, p, best);
     // The computed edge distances and box distances each round by a few ulps of the
     // coordinates; a block is skipped only when its box is farther than the best by far more.
     double scale = std::max(std::abs(p.x), std::abs(p.y));
@@ -148,11 +168,11 @@ class EdgeBlocks {
       }
     }
     const double slack = 1e-9 * (1.0 + scale);
-    best = edgesSquaredDistance(nearest, p, best);
+    double best = blockSquaredDistance(nearest, p, std::numeric_limits<double>::infinity());
     double reach = std::sqrt(best) + slack;
     for (std::size_t b = 0; b < boxes_.size(); ++b) {
       if (b == nearest || boxGap(boxes_[b], p) > reach) continue;
-      if (const double d = edgesSquaredDistance(b, p, best); d < best) {
+      if (const double d = blockSquaredDistance(b, p, best); d < best) {
         best = d;
         reach = std::sqrt(best) + slack;
       }
@@ -160,41 +180,27 @@ class EdgeBlocks {
     return best;
   }
 
-  // Crossing number with the half-open rule, so a ray through a vertex counts once. For p off
-  // the boundary. A block wholly above p's horizontal line, or wholly on or below it, holds no
-  // edge that crosses it.
-  bool strictlyInside(Vec2 p) const {
-    bool inside = false;
-    const std::size_t n = ring_.size();
+  // edgesCrossOddly over every edge: a block wholly above p's horizontal line, or wholly on or
+  // below it, holds no edge that crosses it.
+  bool crossesOddly(Vec2 p) const {
+    bool odd = false;
     for (std::size_t b = 0; b < boxes_.size(); ++b) {
       if (boxes_[b].min.y > p.y || boxes_[b].max.y <= p.y) continue;
-      for (std::size_t i = first(b); i < last(b); ++i) {
-        const Vec2 a = ring_[i + 1 == n ? 0 : i + 1], c = ring_[i];
-        if ((a.y > p.y) != (c.y > p.y)) {
-          const double xCross = a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y);
-          if (p.x < xCross) inside = !inside;
-        }
-      }
+      if (edgesCrossOddly(ring_, b * kEdges, end(b), p)) odd = !odd;
     }
-    return inside;
+    return odd;
   }
 
  private:
-  std::size_t first(std::size_t b) const { return boxes_.size() == 1 ? 0 : b * kEdges; }
-  std::size_t last(std::size_t b) const {
-    return boxes_.size() == 1 ? ring_.size() : std::min(ring_.size(), (b + 1) * kEdges);
+  std::size_t end(std::size_t b) const { return std::min(ring_.size(), (b + 1) * kEdges); }
+  double blockSquaredDistance(std::size_t b, Vec2 p, double best) const {
+    return edgesSquaredDistance(ring_, b * kEdges, end(b), p, best);
   }
   // Distance from p to the box (0 inside), never more than to anything in it.
   static double boxGap(const Box& box, Vec2 p) {
     const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
     const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
     return std::sqrt(dx * dx + dy * dy);
-  }
-  double edgesSquaredDistance(std::size_t b, Vec2 p, double best) const {
-    const std::size_t n = ring_.size();
-    for (std::size_t i = first(b); i < last(b); ++i)
-      best = std::min(best, squaredDistanceToSegment(p, ring_[i], ring_[i + 1 == n ? 0 : i + 1]));
-    return best;
   }
 
   std::span<const Vec2> ring_;
@@ -205,23 +211,45 @@ class EdgeBlocks {
 
 thread_local std::vector<Box> EdgeBlocks::boxes_;
 
+// A query's answers: the squared distance to the boundary, then whether p is inside, from the
+// blocks of a long ring or from every edge of a short one.
+class BoundaryQuery {
+ public:
+  BoundaryQuery(std::span<const Vec2> ring, Vec2 p) : ring_(ring), p_(p) {
+    if (ring.size() >= EdgeBlocks::kFewest) blocks_.emplace(ring);
+  }
+  double distance() const {
+    return std::sqrt(blocks_ ? blocks_->squaredDistance(p_)
+                             : edgesSquaredDistance(ring_, 0, ring_.size(), p_,
+                                                    std::numeric_limits<double>::infinity()));
+  }
+  bool strictlyInside() const {
+    return blocks_ ? blocks_->crossesOddly(p_) : edgesCrossOddly(ring_, 0, ring_.size(), p_);
+  }
+
+ private:
+  std::span<const Vec2> ring_;
+  Vec2 p_;
+  std::optional<EdgeBlocks> blocks_;
+};
+
 }  // namespace
 
 double distanceToBoundary(std::span<const Vec2> ring, Vec2 p) {
-  return std::sqrt(EdgeBlocks(ring).squaredDistance(p));
+  return BoundaryQuery(ring, p).distance();
 }
 
 Containment locate(std::span<const Vec2> ring, Vec2 p, double tolerance) {
-  const EdgeBlocks blocks(ring);
-  if (std::sqrt(blocks.squaredDistance(p)) <= tolerance) return Containment::OnBoundary;
-  return blocks.strictlyInside(p) ? Containment::Inside : Containment::Outside;
+  const BoundaryQuery query(ring, p);
+  if (query.distance() <= tolerance) return Containment::OnBoundary;
+  return query.strictlyInside() ? Containment::Inside : Containment::Outside;
 }
 
 double distanceToPolygon(std::span<const Vec2> ring, Vec2 p) {
-  const EdgeBlocks blocks(ring);
-  const double d = std::sqrt(blocks.squaredDistance(p));
+  const BoundaryQuery query(ring, p);
+  const double d = query.distance();
   if (d == 0.0) return 0.0;
-  return blocks.strictlyInside(p) ? 0.0 : d;
+  return query.strictlyInside() ? 0.0 : d;
 }
 
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
