@@ -211,7 +211,7 @@ class EdgeBlocks {
 
 thread_local std::vector<Box> EdgeBlocks::boxes_;
 
-// A query's answers: the squared distance to the boundary, then whether p is inside, from the
+// A query's answers: the distance to the boundary, then whether p is inside, from the
 // blocks of a long ring or from every edge of a short one.
 class BoundaryQuery {
  public:
