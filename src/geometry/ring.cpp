@@ -139,7 +139,7 @@ class EdgeBlocks {
 
   explicit EdgeBlocks(std::span<const Vec2> ring) : ring_(ring) {
     const std::size_t n = ring.size();
-    boxes_.clear();
+    boxes_.reserve((n + kEdges - 1) / kEdges);
     for (std::size_t start = 0; start < n; start += kEdges) {
       const std::size_t end = std::min(n, start + kEdges);
       Box box = boundingBox(ring.subspan(start, end - start));
@@ -204,12 +204,9 @@ class EdgeBlocks {
   }
 
   std::span<const Vec2> ring_;
-  // Scratch kept by the thread, so that a query makes no allocation once the thread has seen
-  // its largest ring: one EdgeBlocks at a time per thread.
-  static thread_local std::vector<Box> boxes_;
+  // One allocation a query of a long ring, against its edges' work; nothing shared.
+  std::vector<Box> boxes_;
 };
-
-thread_local std::vector<Box> EdgeBlocks::boxes_;
 
 // A query's answers: the distance to the boundary, then whether p is inside, from the
 // blocks of a long ring or from every edge of a short one.
