@@ -41,6 +41,10 @@
 //
 // Events: each camera's own (plans, aborts) and its global decisions, with its index.
 //
+// The loops of a step are independent (each has its own controller, world and workspace), so
+// they run side by side on the run's threads (`camcov run --threads`, util/run_threads.h),
+// their commands and events taken in camera order: the same results with any number.
+//
 // Holds a reference to `scene`: the scene must outlive the controller.
 #include <algorithm>
 #include <cstdint>
@@ -66,17 +70,31 @@ class DecentralizedController final : public Controller {
   void takeEvents(std::vector<ControlEvent>& out) override;
 
  private:
-  // Camera j's own loop, over the scene as its neighbourhood plans in it.
+  // Camera j's own loop, over the scene as its neighbourhood plans in it, with its own
+  // workspace.
   struct Loop {
     std::vector<std::size_t> members;           // scene camera indices, increasing; j among them
     std::size_t self = 0;                       // j's place in members
     std::unique_ptr<const scene::Scene> scene;  // null: the whole scene's team
     std::unique_ptr<PaperController> controller;
-    std::size_t heard = 0;  // camcov.heardOnly: the teammates it had heard of when made
+    std::size_t heard = 0;             // camcov.heardOnly: the teammates it had heard of when made
+    std::vector<ControlEvent> events;  // this step's, taken in camera order
+
+    std::vector<geometry::Pose> believed;            // scratch: its believedTeam
+    std::vector<geometry::Pose> memberPoses;         // scratch: its neighbourhood's poses
+    std::vector<scene::CameraCommand> planned;       // scratch: its commands
+    std::vector<std::optional<Claim>> claims;        // scratch: heardClaims, by scene camera
+    std::vector<std::optional<Claim>> memberClaims;  // scratch: the same, by member
+    std::optional<kinematics::World> region;         // scratch: plannedIn's region
+    std::vector<ControlEvent> controllerEvents;      // scratch: its controller's
   };
   // Camera j's loop for `members`, whose first instant is at `start` (a fresh loop: it plans
   // anew, one step after its first instant as camcov does).
   Loop makeLoop(std::size_t j, std::vector<std::size_t> members, double start) const;
+  // Camera j's step: its neighbourhood chosen again if due (`regroup`) or if it heard of
+  // another teammate, then its loop's command.
+  void controlCamera(const Observation& observation, std::size_t j, bool regroup,
+                     scene::CameraCommand& command);
   // N: camcov.neighbours (at least 1, as the parameter table checks).
   std::size_t neighbourhoodSize() const {
     return static_cast<std::size_t>(std::max(1, params_.camcov.neighbours));
@@ -85,27 +103,22 @@ class DecentralizedController final : public Controller {
   bool heardOnly() const { return params_.camcov.heardOnly && params_.knowledge.limited; }
   // camcov.ownPartOnly under limited knowledge: a camera's loop moves it only.
   bool ownPartOnly() const { return params_.camcov.ownPartOnly && params_.knowledge.limited; }
-  // The claims camera j has heard and still believes (camcov.claims), by scene camera.
+  // The claims camera j has heard and still believes (camcov.claims), into its loop's claims.
   void heardClaims(const OwnKnowledge& own, std::size_t j, double time);
   // Camera j at `pose`, heading for its loop's goal: if a claim it heard outbids it there, it
   // gives the goal up.
   void yieldIfOutbid(std::size_t j, const geometry::Pose& pose, double time);
 
-  // What camera j's loop plans in, the members at memberPoses_: in a team larger than N, its
-  // neighbourhood's region (camcov.region) where that holds a target it knows, else `known`.
-  const kinematics::World& plannedIn(const kinematics::World& known, const Loop& loop);
+  // What camera j's loop plans in, the members at their memberPoses: in a team larger than N,
+  // its neighbourhood's region (camcov.region) where that holds a target it knows, else
+  // `known`.
+  const kinematics::World& plannedIn(const kinematics::World& known, Loop& loop) const;
 
   const scene::Scene& scene_;
   params::Parameters params_;
   std::uint64_t seed_;
   std::vector<Loop> loops_;
-  double nextRegroupTime_;                          // when neighbourhoods are chosen again
-  std::vector<geometry::Pose> believed_;            // scratch: a camera's believedTeam
-  std::vector<geometry::Pose> memberPoses_;         // scratch: its neighbourhood's poses
-  std::vector<scene::CameraCommand> planned_;       // scratch: one loop's commands
-  std::vector<std::optional<Claim>> claims_;        // scratch: heardClaims, by scene camera
-  std::vector<std::optional<Claim>> memberClaims_;  // scratch: the same, by loop member
-  std::optional<kinematics::World> region_;         // scratch: plannedIn's region
+  double nextRegroupTime_;  // when neighbourhoods are chosen again
   std::vector<ControlEvent> events_;
 };
 

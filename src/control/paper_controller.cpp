@@ -8,12 +8,12 @@
 #include "control/local_controller.h"
 #include "planners/global_optimizer.h"
 #include "planners/team_improvement.h"
-#include "util/run_threads.h"
 
 namespace camcov::control {
 
 PaperController::PaperController(const scene::Scene& scene, const params::Parameters& params,
-                                 std::uint64_t seed, Variant variant, double start)
+                                 std::uint64_t seed, Variant variant, double start,
+                                 unsigned threads)
     : scene_(scene),
       params_(params),
       variant_(variant),
@@ -29,7 +29,7 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       roadmapOf_(scene.cameras.size()),
       // Ours waits one step to see whether anything moves.
       nextGlobalTime_(start + (variant == Variant::Camcov ? params.sim.dt : 0.0)) {
-  for (unsigned t = 1; t < runThreads(); ++t)
+  for (unsigned t = 1; t < threads; ++t)
     helpers_.emplace_back(params.reward, scene::lenses(scene));
 }
 

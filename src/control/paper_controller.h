@@ -26,6 +26,7 @@
 #include "reward/reward_model.h"
 #include "scene/scene.h"
 #include "util/random.h"
+#include "util/run_threads.h"
 
 namespace camcov::control {
 
@@ -45,8 +46,10 @@ class PaperController final : public Controller {
 
   // `start`: the time of the first instant it will see (a loop started during a run, as
   // camcov-dec starts one for a new neighbourhood, keeps its global steps T1 apart from then).
+  // `threads`: how many its global step may score samples on (the same results with any).
   PaperController(const scene::Scene& scene, const params::Parameters& params, std::uint64_t seed,
-                  Variant variant = Variant::Paper, double start = 0.0);
+                  Variant variant = Variant::Paper, double start = 0.0,
+                  unsigned threads = runThreads());
   ~PaperController() override;
 
   void control(const Observation& observation, std::span<scene::CameraCommand> commands) override;

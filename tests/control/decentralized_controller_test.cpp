@@ -14,6 +14,7 @@
 #include "sim/simulator.h"
 #include "support/small_worlds.h"
 #include "support/test_paths.h"
+#include "util/run_threads.h"
 
 namespace camcov::control {
 namespace {
@@ -225,6 +226,41 @@ TEST(DecentralizedController, InATeamLargerThanItsNeighbourhoodACameraPlansInIts
   const auto wholeA = run(along, p, 4), wholeB = run(across, p, 4);
   EXPECT_NE(wholeA->recorded.of(0), wholeB->recorded.of(0));
   EXPECT_EQ(a->summary.avoidableContacts + b->summary.avoidableContacts, 0);
+}
+
+TEST(DecentralizedController, ItsLoopsGiveTheSameRunOnAnyNumberOfThreads) {
+  // The loops of a step run side by side on the run's threads: commands, poses and events in
+  // the same order and to the bit, with neighbourhoods that change, limited knowledge and
+  // claims over the messages.
+  const scene::Scene scene = testing::sceneFromJson(R"js({
+  "boundary": "POLYGON((-15 -6,15 -6,15 6,-15 6))",
+  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-12 -4,12 -4))"},
+              {"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((12 4,-12 4))"}],
+  "cameraFoV": 30,
+  "cameras": [{"pos": "POINT(-13 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(-10 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(10 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1},
+              {"pos": "POINT(13 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1}]})js");
+  params::Parameters p = limited(20.0, 0.3);
+  p.sim.duration = 30.0;
+  p.camcov.neighbours = 2;
+  p.camcov.claims = 20.0;
+  struct Threads {
+    explicit Threads(unsigned n) { setRunThreads(n); }
+    ~Threads() { setRunThreads(1); }
+  };
+  const auto alone = run(scene, p, 5);
+  for (const unsigned n : {2u, 3u, 8u}) {
+    SCOPED_TRACE(n);
+    const Threads threads(n);
+    const auto side = run(scene, p, 5);
+    EXPECT_EQ(side->recorded.events, alone->recorded.events);
+    for (std::size_t j = 0; j < scene.cameras.size(); ++j)
+      EXPECT_EQ(side->recorded.of(j), alone->recorded.of(j));
+  }
+  // Something to compare: every camera moved, and neighbourhoods were chosen again.
+  EXPECT_FALSE(alone->recorded.neighbourhoods.empty());
+  EXPECT_GT(alone->recorded.events.size(), 8u);
 }
 
 TEST(DecentralizedController, ACameraIgnoresWhatItNeitherSawNorHeard) {
