@@ -14,17 +14,12 @@
 
 #include "records/run_files.h"
 #include "util/interruption.h"
+#include "util/run_threads.h"
 #include "util/worker_pool.h"
 
 namespace camcov::batch {
 
 namespace {
-
-double threadCpuSeconds() {
-  timespec ts{};
-  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 std::string utcMinute(std::int64_t seconds, const char* format) {
   const std::time_t t = seconds;
@@ -72,6 +67,15 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     }
   }
   observer.resuming(resumption);
+  // Fewer jobs than workers: each run gets the threads left over for its own work (the same
+  // results with any number), until the batch ends.
+  struct RunThreadsDuringBatch {
+    unsigned before = runThreads();
+    explicit RunThreadsDuringBatch(unsigned threads) { setRunThreads(threads); }
+    ~RunThreadsDuringBatch() { setRunThreads(before); }
+  } const runThreadsDuringBatch(
+      pending.empty() ? runThreads()
+                      : std::max(runThreads(), static_cast<unsigned>(workers / pending.size())));
   std::mutex mutex;
   std::size_t keptBytes = 0;             // of batch.omplRuns
   std::atomic<bool> interrupted{false};  // once set, the jobs not started are left for a resume
@@ -81,7 +85,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     records::JobOutcome outcome{job.scene, job.spec.method, job.spec.seed, false, "", {}};
     std::optional<records::OmplRun> omplRun;
     const auto wallStart = std::chrono::steady_clock::now();
-    const double cpuStart = threadCpuSeconds();
+    const double cpuStart = cpuSecondsWithJoinedThreads();
     try {
       throwIfInterrupted();
       const records::RunRecord run = runJob(job.spec);
@@ -105,7 +109,7 @@ BatchRun runBatch(const std::vector<BatchJob>& jobs, const records::BatchFolder&
     }
     const records::JobTiming timing{
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
-        threadCpuSeconds() - cpuStart};
+        cpuSecondsWithJoinedThreads() - cpuStart};
     const std::lock_guard lock(mutex);
     observer.finished(job, outcome);
     batch.outcomes[pending[k]] = std::move(outcome);

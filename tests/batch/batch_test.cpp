@@ -17,6 +17,7 @@
 #include "support/scratch.h"
 #include "support/test_paths.h"
 #include "util/input_error.h"
+#include "util/run_threads.h"
 
 namespace camcov::batch {
 namespace {
@@ -143,6 +144,43 @@ TEST(RunBatch, ASecondRunResumesWithNothingLeftAndAFailedJobIsRecorded) {
   EXPECT_EQ(second.alreadyDone, 3u) << "the finished ones are kept";
   EXPECT_EQ(second.ran, std::vector<std::string>{plan.jobs[1].stem}) << "the failed one runs again";
   EXPECT_EQ(again.outcomes[0].summary.averageCoverage, run.outcomes[0].summary.averageCoverage);
+}
+
+TEST(RunBatch, FewerJobsThanWorkersGiveEachRunTheThreadsLeftOverForTheSameFiles) {
+  // The threads a run may use for its own work (util/run_threads.h), as a job finishes: one
+  // job on four workers has all four, four jobs on two workers one each, and after the batch
+  // the setting is as before. The run files are the same bytes.
+  class Threads final : public BatchObserver {
+   public:
+    void resuming(const Resumption&) override {}
+    void finished(const BatchJob&, const records::JobOutcome&) override {
+      seen.push_back(runThreads());
+    }
+    std::vector<unsigned> seen;
+  };
+  BatchRequest request = tinyRequest(1);
+  request.methods = {"camcov-dec"};
+  request.parameters.knowledge.limited = true;
+  request.parameters.comms.range = 10.0;
+  BatchPlan plan = planBatch(request, "test");
+  ASSERT_GE(plan.jobs.size(), 2u);
+  const std::vector<BatchJob> one{plan.jobs.front()};
+  const testing::ScratchDir dir;
+  const records::BatchFolder wide(dir / "wide"), narrow(dir / "narrow");
+  prepareFolder(wide, plan.manifest, false);
+  prepareFolder(narrow, plan.manifest, false);
+  Threads alone, shared;
+  runBatch(one, wide, 4, alone);
+  EXPECT_EQ(alone.seen, std::vector<unsigned>{4});
+  runBatch(plan.jobs, narrow, 2, shared);
+  EXPECT_EQ(shared.seen, std::vector<unsigned>(plan.jobs.size(), 1));
+  EXPECT_EQ(runThreads(), 1u);
+  const auto bytes = [](const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string stem = one.front().stem;
+  EXPECT_EQ(bytes(wide.runFile(stem)), bytes(narrow.runFile(stem)));
 }
 
 // A batch leaves its run files for the system to write back, so a power cut may leave some
