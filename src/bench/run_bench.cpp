@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <thread>
 
 #include "batch/batch_plan.h"
 #include "batch/batch_runner.h"
@@ -11,12 +10,13 @@
 #include "camcov/version.h"
 #include "records/atomic_file.h"
 #include "util/counted.h"
+#include "util/run_threads.h"
 
 namespace camcov::bench {
 namespace {
 
 unsigned workersFor(unsigned jobs) {
-  return jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
+  return jobs > 0 ? jobs : availableCores();
 }
 
 // The batch runner's calls, said to the bench's observer: where a resumed batch picks up,

@@ -82,7 +82,7 @@ Registration addBenchCommand(CLI::App& app) {
                   "simulated seconds per run (default: a scene's own duration if it has one, else "
                   "sim.duration)")
       ->check(within(0.0, scene::kMaxDuration, false));
-  cmd->add_option("--jobs,-j", r.jobs, "worker threads (default: all cores)")
+  cmd->add_option("--jobs,-j", r.jobs, "worker threads (default: every core it may run on)")
       ->check(within(0, 1024));
   cmd->add_option("--out,-o", r.out, "results folder")->capture_default_str();
   cmd->add_option("--shard", r.shard, "run only part K of N of the jobs (K/N, 1-based)");

@@ -25,8 +25,8 @@ struct RunOptions {
   std::uint64_t seed = 1;
   double duration = -1.0;
   std::string out = "results";
-  std::string video;  // also write the run's video here, if given
-  unsigned threads = 1;
+  std::string video;     // also write the run's video here, if given
+  unsigned threads = 0;  // 0: every core it may run on
   ParameterOptions parameters;
 };
 
@@ -38,7 +38,7 @@ int run(const RunOptions& o) {
       o.scene, o.method, o.seed, o.parameters.resolve(), nullptr, batch::readSceneFile(o.scene)};
   if (o.duration >= 0.0) job.parameters.sim.duration = o.duration;
   job.parameters = sim::forScene(job.parameters, job.scene->scene, o.scene, o.duration >= 0.0);
-  setRunThreads(o.threads);
+  setRunThreads(o.threads == 0 ? availableCores() : o.threads);
   const records::RunRecord record = batch::runJob(job);
   const auto file = records::writeRunFiles(record, o.out);
   const auto& s = record.summary;
@@ -85,8 +85,9 @@ Registration addRunCommand(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "folder for the results files")->capture_default_str();
   cmd->add_option("--video", o->video, "also write the run's video (MP4, 1280x720)");
   cmd->add_option("--threads,-t", o->threads,
-                  "threads for the run's own work (the same results with any number)")
-      ->check(within(1, 256))
+                  "threads for the run's own work, the same results with any number (default 0: "
+                  "every core it may run on)")
+      ->check(within(0, 256))
       ->capture_default_str();
   o->parameters.addTo(*cmd);
   return {cmd, [o] { return run(*o); }};

@@ -89,14 +89,19 @@ TEST(CliRun, SameArgumentsGiveByteIdenticalFilesAndAnotherSeedDiffers) {
 }
 
 TEST(CliRun, MoreThreadsGiveTheSameBytes) {
-  const fs::path one = freshDir("threads1"), three = freshDir("threads3");
+  // One thread, three, and by default every core it may run on.
+  const fs::path one = freshDir("threads1"), three = freshDir("threads3"),
+                 cores = freshDir("threadsCores");
   const std::string args = " --method paper --duration 6 --seed 4 --set global.T1=2 ";
   ASSERT_EQ(runCamcov("run " + kScene + args + "--threads 1 --out " + one.string()).exitCode, 0);
   ASSERT_EQ(runCamcov("run " + kScene + args + "--threads 3 --out " + three.string()).exitCode, 0);
+  ASSERT_EQ(runCamcov("run " + kScene + args + "--out " + cores.string()).exitCode, 0);
   const std::string stem = "fig1_example-paper-seed4";
-  EXPECT_EQ(readFile(one / (stem + ".json")), readFile(three / (stem + ".json")));
-  EXPECT_EQ(readFile(one / (stem + ".csv")), readFile(three / (stem + ".csv")));
-  EXPECT_EQ(runCamcov("run " + kScene + " --threads 0 --out " + one.string()).exitCode, 2);
+  for (const fs::path& other : {three, cores}) {
+    EXPECT_EQ(readFile(one / (stem + ".json")), readFile(other / (stem + ".json")));
+    EXPECT_EQ(readFile(one / (stem + ".csv")), readFile(other / (stem + ".csv")));
+  }
+  EXPECT_EQ(runCamcov("run " + kScene + " --threads 257 --out " + one.string()).exitCode, 2);
 }
 
 TEST(CliRun, BadInputExitsTwo) {
