@@ -198,9 +198,7 @@ class EdgeBlocks {
   }
   // Distance from p to the box (0 inside), never more than to anything in it.
   static double boxGap(const Box& box, Vec2 p) {
-    const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
-    const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
-    return std::sqrt(dx * dx + dy * dy);
+    return std::sqrt(geometry::squaredDistance(box, p));
   }
 
   std::span<const Vec2> ring_;

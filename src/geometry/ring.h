@@ -1,6 +1,7 @@
 #pragma once
 // Simple polygons as open vertex rings. Convention used everywhere above this layer:
 // counter-clockwise, first vertex not repeated, at least 3 vertices.
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -83,6 +84,13 @@ inline bool contains(const Box& box, Vec2 p) {
 }
 inline bool contains(const Box& outer, const Box& inner) {
   return contains(outer, inner.min) && contains(outer, inner.max);
+}
+// The squared distance from p to the box (0 inside): never more than to anything in the box,
+// so a cheap lower bound of an object's distance from its bounding box.
+inline double squaredDistance(const Box& box, Vec2 p) {
+  const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
+  const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
+  return dx * dx + dy * dy;
 }
 inline double area(const Box& box) {
   return (box.max.x - box.min.x) * (box.max.y - box.min.y);

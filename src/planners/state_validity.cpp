@@ -27,10 +27,7 @@ bool StateValidity::clearOfObjects(geometry::Vec2 p) const {
   const double reach = d1_ + 1e-9 * (1.0 + scale_ + std::abs(p.x) + std::abs(p.y));
   const double reach2 = reach * reach;
   for (std::size_t i = 0; i < objects_.size(); ++i) {
-    const geometry::Box& box = boxes_[i];
-    const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
-    const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
-    if (dx * dx + dy * dy > reach2) continue;
+    if (geometry::squaredDistance(boxes_[i], p) > reach2) continue;
     if (geometry::distanceToPolygon(*objects_[i], p) < d1_) return false;
   }
   return true;

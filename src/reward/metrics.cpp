@@ -198,9 +198,7 @@ namespace {
 // lower bound of the polygon's, and 1e-9 relative slack keeps an object at d2 to the last bit
 // measured, whatever rounding the two distances have.
 bool mayBeWithin(const geometry::Box& box, geometry::Vec2 p, double d2) {
-  const double dx = std::max({box.min.x - p.x, 0.0, p.x - box.max.x});
-  const double dy = std::max({box.min.y - p.y, 0.0, p.y - box.max.y});
-  return dx * dx + dy * dy <= d2 * d2 * (1.0 + 1e-9);
+  return geometry::squaredDistance(box, p) <= d2 * d2 * (1.0 + 1e-9);
 }
 
 }  // namespace

@@ -233,6 +233,18 @@ TEST(BoundingBox, SpansAllVertices) {
   EXPECT_EQ(box.max, (Vec2{3, 5}));
 }
 
+TEST(BoundingBox, ItsSquaredDistanceIsThePolygonsOfItsRing) {
+  // Inside, on a side, on a corner, beside a side and beyond a corner, and a degenerate box.
+  const Box box{{-1, -4}, {3, 5}}, flat{{2, 1}, {2, 1}};
+  for (const Vec2 p : {Vec2{0, 0}, Vec2{3, 0}, Vec2{-1, -4}, Vec2{7, 1}, Vec2{1, -9}, Vec2{-4, 9},
+                       Vec2{6, -8}, Vec2{-1e6, 3e5}}) {
+    SCOPED_TRACE(::testing::Message() << p.x << ", " << p.y);
+    const double d = distanceToPolygon(ringOf(box), p);
+    EXPECT_NEAR(squaredDistance(box, p), d * d, 1e-12 * (1.0 + d * d));
+    EXPECT_DOUBLE_EQ(squaredDistance(flat, p), (p.x - 2) * (p.x - 2) + (p.y - 1) * (p.y - 1));
+  }
+}
+
 }  // namespace
 }  // namespace camcov::geometry
 
