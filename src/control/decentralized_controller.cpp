@@ -26,19 +26,22 @@ DecentralizedController::DecentralizedController(const scene::Scene& scene,
       // The loops' own first global step waits one step to see whether anything moves.
       nextRegroupTime_(params.sim.dt + params.global.T1) {
   const std::vector<geometry::Pose> initial = scene::initialPoses(scene);
+  loops_.resize(scene.cameras.size());
   for (std::size_t j = 0; j < scene.cameras.size(); ++j) {
     // With heardOnly, before any message a camera knows of no teammate to plan with.
-    loops_.push_back(makeLoop(j,
-                              heardOnly() ? neighbourhood(initial, j, neighbourhoodSize(), {})
-                                          : neighbourhood(initial, j, neighbourhoodSize()),
-                              0.0));
+    startLoop(j,
+              heardOnly() ? neighbourhood(initial, j, neighbourhoodSize(), {})
+                          : neighbourhood(initial, j, neighbourhoodSize()),
+              0.0);
   }
 }
 
-DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
-                                                                std::vector<std::size_t> members,
-                                                                double start) const {
-  Loop loop;
+void DecentralizedController::startLoop(std::size_t j, std::vector<std::size_t> members,
+                                        double start) {
+  Loop& loop = loops_[j];
+  // The old controller goes before the scene it refers to.
+  loop.controller.reset();
+  loop.scene.reset();
   loop.self =
       static_cast<std::size_t>(std::find(members.begin(), members.end(), j) - members.begin());
   if (members.size() < scene_.cameras.size()) {
@@ -54,7 +57,6 @@ DecentralizedController::Loop DecentralizedController::makeLoop(std::size_t j,
       std::make_unique<PaperController>(loop.scene ? *loop.scene : scene_, params_, seed_,
                                         PaperController::Variant::Camcov, start, threads);
   if (ownPartOnly()) loop.controller->moveOwnCameraOnly(loop.self);
-  return loop;
 }
 
 std::optional<geometry::Pose> DecentralizedController::goal(std::size_t camera) const {
@@ -182,16 +184,8 @@ void DecentralizedController::controlCamera(const Observation& observation, std:
                           fmt::format("plans with cameras {}", fmt::join(members, ", ")),
                           {},
                           {}};
-      // The new loop keeps the old one's workspace. The old controller goes before the scene
-      // it refers to (assignment would replace the scene first).
-      Loop fresh = makeLoop(j, std::move(members), observation.time);
-      Loop& old = loops_[j];
-      old.controller.reset();
-      old.members = std::move(fresh.members);
-      old.self = fresh.self;
-      old.scene = std::move(fresh.scene);
-      old.controller = std::move(fresh.controller);
-      old.events.push_back(std::move(chosen));
+      startLoop(j, std::move(members), observation.time);
+      loops_[j].events.push_back(std::move(chosen));
     }
     loops_[j].heard = heardCount;
   }

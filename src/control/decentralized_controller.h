@@ -88,9 +88,10 @@ class DecentralizedController final : public Controller {
     std::optional<kinematics::World> region;         // scratch: plannedIn's region
     std::vector<ControlEvent> controllerEvents;      // scratch: its controller's
   };
-  // Camera j's loop for `members`, whose first instant is at `start` (a fresh loop: it plans
-  // anew, one step after its first instant as camcov does).
-  Loop makeLoop(std::size_t j, std::vector<std::size_t> members, double start) const;
+  // Starts camera j's loop afresh for `members`, its first instant at `start` (it plans anew,
+  // one step after its first instant as camcov does); its workspace and this step's events
+  // stay.
+  void startLoop(std::size_t j, std::vector<std::size_t> members, double start);
   // Camera j's step: its neighbourhood chosen again if due (`regroup`) or if it heard of
   // another teammate, then its loop's command.
   void controlCamera(const Observation& observation, std::size_t j, bool regroup,

@@ -150,11 +150,10 @@ TEST(DecentralizedController, ACameraWhoseNeighbourhoodIsItselfMovesAsCamcovMove
   EXPECT_NE(run(both, p, 5)->recorded.of(0), centralized->recorded.of(0));
 }
 
-TEST(DecentralizedController, ALargerTeamPlansInNeighbourhoodsOfItsNearestChosenEveryT1) {
-  // Four cameras and two neighbourhoods of two: as the cameras follow the targets across the
-  // hall the nearest teammates change, and each change is one event at a global step's time
-  // naming the camera's nearest teammate where the run put the team at that step.
-  const scene::Scene scene = testing::sceneFromJson(R"js({
+// A 30 m hall: two cameras at each end, two targets driving across it in opposite directions,
+// so that each camera's nearest teammates change as the cameras follow them.
+scene::Scene crossingHall() {
+  return testing::sceneFromJson(R"js({
   "boundary": "POLYGON((-15 -6,15 -6,15 6,-15 6))",
   "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-12 -4,12 -4))"},
               {"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((12 4,-12 4))"}],
@@ -163,6 +162,13 @@ TEST(DecentralizedController, ALargerTeamPlansInNeighbourhoodsOfItsNearestChosen
               {"pos": "POINT(-10 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
               {"pos": "POINT(10 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1},
               {"pos": "POINT(13 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1}]})js");
+}
+
+TEST(DecentralizedController, ALargerTeamPlansInNeighbourhoodsOfItsNearestChosenEveryT1) {
+  // Four cameras and two neighbourhoods of two: as the cameras follow the targets across the
+  // hall the nearest teammates change, and each change is one event at a global step's time
+  // naming the camera's nearest teammate where the run put the team at that step.
+  const scene::Scene scene = crossingHall();
   params::Parameters p;
   p.sim.duration = 30.0;
   p.global.K = 100;
@@ -232,15 +238,7 @@ TEST(DecentralizedController, ItsLoopsGiveTheSameRunOnAnyNumberOfThreads) {
   // The loops of a step run side by side on the run's threads: commands, poses and events in
   // the same order and to the bit, with neighbourhoods that change, limited knowledge and
   // claims over the messages.
-  const scene::Scene scene = testing::sceneFromJson(R"js({
-  "boundary": "POLYGON((-15 -6,15 -6,15 6,-15 6))",
-  "targets": [{"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((-12 -4,12 -4))"},
-              {"shape": "POLYGON((-0.5 -0.5,0.5 -0.5,0.5 0.5,-0.5 0.5))", "path": "POLYGON((12 4,-12 4))"}],
-  "cameraFoV": 30,
-  "cameras": [{"pos": "POINT(-13 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
-              {"pos": "POINT(-10 0)", "angle": 0, "maxVelocity": 1, "maxAngularVelocity": 1},
-              {"pos": "POINT(10 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1},
-              {"pos": "POINT(13 0)", "angle": 180, "maxVelocity": 1, "maxAngularVelocity": 1}]})js");
+  const scene::Scene scene = crossingHall();
   params::Parameters p = limited(20.0, 0.3);
   p.sim.duration = 30.0;
   p.camcov.neighbours = 2;
