@@ -102,8 +102,12 @@ class DecentralizedController final : public Controller {
   }
   // camcov.heardOnly under limited knowledge: a camera plans with the teammates it heard of.
   bool heardOnly() const { return params_.camcov.heardOnly && params_.knowledge.limited; }
-  // camcov.ownPartOnly under limited knowledge: a camera's loop moves it only.
-  bool ownPartOnly() const { return params_.camcov.ownPartOnly && params_.knowledge.limited; }
+  // camcov.ownPartOnly under limited knowledge, or in a team larger than N: a camera's loop
+  // moves it only. (A team of at most N with full knowledge is camcov's, bit for bit.)
+  bool ownPartOnly() const {
+    return params_.camcov.ownPartOnly &&
+           (params_.knowledge.limited || neighbourhoodSize() < loops_.size());
+  }
   // The claims camera j has heard and still believes (camcov.claims), into its loop's claims.
   void heardClaims(const OwnKnowledge& own, std::size_t j, double time);
   // Camera j at `pose`, heading for its loop's goal: if a claim it heard outbids it there, it

@@ -198,10 +198,10 @@ constexpr std::array kTable{
         0, 1, false, camcovChanged<&CamcovParams::heardOnly>),
     row<&P::camcov, &CamcovParams::ownPartOnly>(
         "camcov.ownPartOnly", "", "",
-        "camcov-dec under limited knowledge: a camera takes its own part of its neighbourhood's "
-        "plan where that move alone, its teammates where it believes them committed, beats "
-        "staying, and optimizes locally for itself only; false: it judges the plan as if every "
-        "teammate took its part",
+        "camcov-dec under limited knowledge or in a team larger than N: a camera takes its own "
+        "part of its neighbourhood's plan where that move alone, its teammates where it "
+        "believes them committed, beats staying, and optimizes locally for itself only; false: "
+        "it judges the plan as if every teammate took its part",
         0, 1, false, camcovChanged<&CamcovParams::ownPartOnly>),
     row<&P::camcov, &CamcovParams::region>(
         "camcov.region", "", "",

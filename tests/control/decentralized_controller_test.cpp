@@ -343,6 +343,25 @@ TEST(DecentralizedController, MovingItsOwnPartOnlyChangesNothingForACameraWithou
               alone->recorded.of(1) != together->recorded.of(1));
 }
 
+TEST(DecentralizedController, WithFullKnowledgeACameraMovesItsOwnPartOnlyInATeamLargerThanN) {
+  // Neighbourhoods differ from camera to camera in a team larger than N, so no teammate takes
+  // the part a camera's loop planned for it, whatever the camera knows: camcov.ownPartOnly
+  // holds with full knowledge too. A team of at most N stays camcov's, bit for bit.
+  const scene::Scene scene = crossingHall();
+  params::Parameters p;
+  p.sim.duration = 11.0;  // three global steps
+  p.global.K = 100;
+  const auto posesOf = [&](int neighbours, bool ownPartOnly) {
+    p.camcov.neighbours = neighbours;
+    p.camcov.ownPartOnly = ownPartOnly;
+    return run(scene, p, 2)->recorded.poses;
+  };
+  EXPECT_NE(posesOf(2, true), posesOf(2, false));
+  const auto oneNeighbourhood = posesOf(4, true);
+  EXPECT_EQ(oneNeighbourhood, posesOf(4, false));
+  EXPECT_EQ(oneNeighbourhood, run(scene, p, 2, "camcov")->recorded.poses);
+}
+
 // The published scenes with messages that reach everyone (`range` inf), or few of them.
 void runEveryPublishedScene(const params::Parameters& p) {
   CAMCOV_REQUIRE_PUBLISHED_SCENES();
