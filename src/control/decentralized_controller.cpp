@@ -122,8 +122,8 @@ void DecentralizedController::control(const Observation& observation,
                                       std::span<scene::CameraCommand> commands) {
   // Neighbourhoods are chosen again when the loops' global steps are due (half a step of slack
   // against rounding, as theirs).
-  const bool regroup = neighbourhoodSize() < loops_.size() &&
-                       observation.time + 0.5 * params_.sim.dt >= nextRegroupTime_;
+  const bool regroup =
+      inNeighbourhoods() && observation.time + 0.5 * params_.sim.dt >= nextRegroupTime_;
   if (regroup) nextRegroupTime_ += params_.global.T1;
 
   // A loop that throws fails the step as it would alone: the first camera's error, after every

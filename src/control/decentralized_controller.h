@@ -102,11 +102,12 @@ class DecentralizedController final : public Controller {
   }
   // camcov.heardOnly under limited knowledge: a camera plans with the teammates it heard of.
   bool heardOnly() const { return params_.camcov.heardOnly && params_.knowledge.limited; }
-  // camcov.ownPartOnly under limited knowledge, or in a team larger than N: a camera's loop
-  // moves it only. (A team of at most N with full knowledge is camcov's, bit for bit.)
+  // A team larger than N plans in neighbourhoods, chosen again every T1.
+  bool inNeighbourhoods() const { return neighbourhoodSize() < scene_.cameras.size(); }
+  // camcov.ownPartOnly under limited knowledge, or in neighbourhoods: a camera's loop moves it
+  // only. (A team of at most N with full knowledge is camcov's, bit for bit.)
   bool ownPartOnly() const {
-    return params_.camcov.ownPartOnly &&
-           (params_.knowledge.limited || neighbourhoodSize() < loops_.size());
+    return params_.camcov.ownPartOnly && (params_.knowledge.limited || inNeighbourhoods());
   }
   // The claims camera j has heard and still believes (camcov.claims), into its loop's claims.
   void heardClaims(const OwnKnowledge& own, std::size_t j, double time);
