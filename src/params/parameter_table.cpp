@@ -170,8 +170,8 @@ constexpr std::array kTable{
         0, 1),
     row<&P::camcov, &CamcovParams::compass>(
         "camcov.compass", "", "",
-        "our method: local optimization by compass search (the best of moves by the step's "
-        "limit and a quarter of it along ±x, ±y, ±γ) instead of gradient ascent",
+        "our method: local optimization by compass search (the best of the gradient's step "
+        "and moves by the step's limit along ±x, ±y, ±γ) instead of gradient ascent",
         0, 1),
     row<&P::camcov, &CamcovParams::forecastStay>(
         "camcov.forecastStay", "", "",

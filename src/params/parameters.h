@@ -97,8 +97,8 @@ struct CamcovParams {
   // While following a plan, turn to the yaw (within reach this step) that sees most now, as
   // long as the goal's yaw can still be reached on arrival.
   bool transitYaw = true;
-  // Local optimization by compass search (the best of moves by the step's limit and a quarter
-  // of it along ±x, ±y, ±γ) instead of the paper's gradient ascent.
+  // Local optimization by compass search (the best of the gradient's step and moves by the
+  // step's limit along ±x, ±y, ±γ) instead of the paper's gradient ascent.
   bool compass = true;
   // Credit the committed team also with what it would see if the targets and obstacles went on
   // as they last moved (control/motion_watch.h), taking the better of that and the present.

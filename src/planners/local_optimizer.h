@@ -19,8 +19,7 @@ using scene::StepLimits;
 class LocalOptimizer {
  public:
   // How a step is found: the paper's gradient ascent, or our compass search: the
-  // best of the gradient's step and moves by the step's limit, and a quarter of it, along ±x,
-  // ±y and ±γ.
+  // best of the gradient's step and moves by the step's limit along ±x, ±y and ±γ.
   enum class Search { Gradient, Compass };
 
   explicit LocalOptimizer(const params::LocalParams& params, Search search = Search::Gradient)

@@ -2,14 +2,25 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "support/small_worlds.h"
 #include "util/random.h"
 
 namespace camcov::planners {
 namespace {
+
+// Three cameras in the middle 30 m of testing::roomWithTargetAndObstacle's room, any yaw.
+std::vector<geometry::Pose> randomTeam(Random& random) {
+  std::vector<geometry::Pose> team;
+  for (int j = 0; j < 3; ++j) {
+    team.push_back({random.uniform(-15, 15), random.uniform(-15, 15), random.uniform(-3, 3)});
+  }
+  return team;
+}
 
 TEST(LocalOptimizer, StepNeverLowersTheRewardAndRespectsLimits) {
   const kinematics::World w = testing::roomWithTargetAndObstacle();
@@ -20,10 +31,7 @@ TEST(LocalOptimizer, StepNeverLowersTheRewardAndRespectsLimits) {
   Random random(42);
   int moved = 0;
   for (int trial = 0; trial < 500; ++trial) {
-    std::vector<geometry::Pose> team;
-    for (int j = 0; j < 3; ++j) {
-      team.push_back({random.uniform(-15, 15), random.uniform(-15, 15), random.uniform(-3, 3)});
-    }
+    std::vector<geometry::Pose> team = randomTeam(random);
     const double before = model.reward(team);
     const std::vector<geometry::Pose> original = team;
     const geometry::Pose next = local.step(model, team, 1, before, limits);
@@ -62,10 +70,7 @@ TEST(LocalOptimizer, CompassStepNeverLowersTheRewardAndRespectsLimits) {
   Random random(43);
   int moved = 0, sawMore = 0;
   for (int trial = 0; trial < 500; ++trial) {
-    std::vector<geometry::Pose> team;
-    for (int j = 0; j < 3; ++j) {
-      team.push_back({random.uniform(-15, 15), random.uniform(-15, 15), random.uniform(-3, 3)});
-    }
+    std::vector<geometry::Pose> team = randomTeam(random);
     const auto before = model.terms(team);
     const std::vector<geometry::Pose> original = team;
     const geometry::Pose next = compass.step(model, team, 1, before.reward, limits);
@@ -82,6 +87,39 @@ TEST(LocalOptimizer, CompassStepNeverLowersTheRewardAndRespectsLimits) {
   }
   EXPECT_GT(moved, 50);
   EXPECT_GT(sawMore, 10);
+}
+
+TEST(LocalOptimizer, CompassStepIsTheGradientsStepOrAWholeStepAlongOneAxis) {
+  // The moves tried are the gradient's step (which makes the small moves) and the step's limit
+  // along ±x, ±y and ±γ; a step goes to one of them or stays.
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+  model.setWorld(w);
+  const LocalOptimizer gradient{params::LocalParams{}};
+  const LocalOptimizer compass{params::LocalParams{}, LocalOptimizer::Search::Compass};
+  // Long steps, so that a shorter move would often be the better one.
+  const StepLimits limits{2.0, 1.0};
+  Random random(47);
+  int axisMoves = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<geometry::Pose> team = randomTeam(random);
+    const double before = model.reward(team);
+    const geometry::Pose here = team[1];
+    std::vector<geometry::Pose> allowed{here, gradient.step(model, team, 1, before, limits)};
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double sign : {1.0, -1.0}) {
+        geometry::Pose move = here;
+        move[axis] += sign * (axis == 2 ? limits.maxRotation : limits.maxTranslation);
+        move.yaw = geometry::wrapAngle(move.yaw);
+        allowed.push_back(move);
+      }
+    }
+    const geometry::Pose next = compass.step(model, team, 1, before, limits);
+    EXPECT_NE(std::find(allowed.begin(), allowed.end(), next), allowed.end())
+        << "trial " << trial << ": " << next.x << " " << next.y << " " << next.yaw;
+    if (std::find(allowed.begin() + 2, allowed.end(), next) != allowed.end()) ++axisMoves;
+  }
+  EXPECT_GT(axisMoves, 25);
 }
 
 TEST(LocalOptimizer, CompassTurnsTowardsATargetJustOutOfViewWhereTheGradientSeesNothing) {
