@@ -81,6 +81,16 @@ void Occluders::build(const kinematics::World& world) {
   });
   buildChains();
   findTwins();
+  buildBlocks();
+}
+
+void Occluders::buildBlocks() {
+  blocks_.clear();
+  for (Chain& chain : chains_) {
+    chain.firstBlock = static_cast<std::uint32_t>(blocks_.size());
+    appendPieceBlocks(vertices_, chain.first, chain.count, hasTwins_, blocks_);
+    chain.blockCount = static_cast<std::uint32_t>(blocks_.size()) - chain.firstBlock;
+  }
 }
 
 const Chain& Occluders::chainOf(std::uint32_t piece) const {

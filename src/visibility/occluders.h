@@ -18,6 +18,7 @@
 #include "geometry/ring.h"
 #include "geometry/vec2.h"
 #include "kinematics/world.h"
+#include "visibility/piece_blocks.h"
 
 namespace camcov::visibility {
 
@@ -35,6 +36,8 @@ struct Chain {
   bool solidOnLeft = false;
   std::uint32_t owner = 0;  // index into World::obstacles or World::targets
   geometry::Box box;        // of the chain's vertices
+  // Its pieces in blocks (Occluders::blocks()), for a long chain; none for a short one.
+  std::uint32_t firstBlock = 0, blockCount = 0;
 };
 
 class Occluders {
@@ -71,6 +74,12 @@ class Occluders {
   std::uint32_t globalEdge(std::uint32_t piece) const { return globalEdge_[piece]; }
   double t0(std::uint32_t piece) const { return t0_[piece]; }
   double t1(std::uint32_t piece) const { return t1_[piece]; }
+
+  // A long chain's pieces in runs, each with its box and the cone of its directions; empty for
+  // a chain shorter than kMinBlockedChain.
+  std::span<const PieceBlock> blocks(const Chain& chain) const {
+    return std::span<const PieceBlock>(blocks_).subspan(chain.firstBlock, chain.blockCount);
+  }
 
   // The ring a piece belongs to. O(log rings).
   const Chain& chainOf(std::uint32_t piece) const;
@@ -134,6 +143,7 @@ class Occluders {
   void buildChains();
   void findTwins();
   std::uint32_t findTwinRoot(std::uint32_t piece);
+  void buildBlocks();
 
   // Input: the World's rings without repeated consecutive vertices.
   std::vector<geometry::Vec2> inVertices_;
@@ -161,6 +171,7 @@ class Occluders {
   std::vector<std::uint8_t> twinReversed_;  // relative to its representative
   std::vector<std::uint32_t> memberBegin_, memberCursor_;
   std::vector<Member> members_;
+  std::vector<PieceBlock> blocks_;
 
   std::vector<std::uint32_t> targetOffsets_{0};
   std::vector<geometry::Vec2> targetVertices_;

@@ -111,9 +111,18 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
   const auto nextOf = [first, last](std::uint32_t v) { return v == last ? first : v + 1; };
   // A chain far from the viewpoint has its pieces classified first, so that only the vertices
   // of active pieces get a key (a key costs a division; half an object's pieces face away).
+  // A long chain's blocks that face away or lie out of view as a whole keep their pieces
+  // inactive (start() left them so) without a look at each.
   if (classify) {
-    for (std::uint32_t v = first; v <= last; ++v)
-      state_[v] = farPieceState(chain, v, vertex(v), vertex(nextOf(v)));
+    const auto classifyPieces = [&](std::uint32_t from, std::uint32_t to) {
+      for (std::uint32_t v = from; v < to; ++v)
+        state_[v] = farPieceState(chain, v, vertex(v), vertex(nextOf(v)));
+    };
+    const std::span<const PieceBlock> blocks = occluders_->blocks(chain);
+    if (blocks.empty()) classifyPieces(first, last + 1);
+    for (const PieceBlock& block : blocks) {
+      if (!blockHidden(chain, block)) classifyPieces(block.first, block.first + block.count);
+    }
   }
   const auto active = [this](std::uint32_t piece) { return (state_[piece] & kActive) != 0; };
   const auto keyOf = [this](std::uint32_t v) { return quantizedAngle(vertex(v) - p_); };
@@ -124,7 +133,16 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
   std::uint8_t before = state_[last];
   int beforeHalf = geometry::angleHalf(vertex(last) - p_);
   std::uint32_t key = firstKey;
+  bool keyTaken = true;  // key is vertex v's
   for (std::uint32_t v = first; v <= last; ++v) {
+    // Between two inactive pieces nothing happens: a run of them (a block passed over, the far
+    // side of an object) costs a test a vertex.
+    if (!(before & kActive) && !active(v)) {
+      before = state_[v];
+      keyTaken = false;
+      continue;
+    }
+    if (!keyTaken) key = keyOf(v);
     std::uint32_t nextKey = firstKey;
     if (v != last) {
       nextKey = active(v) || active(v + 1) ? keyOf(v + 1) : 0;
@@ -149,9 +167,17 @@ void PolarEdges::addChainEvents(const Chain& chain, bool classify) {
       initial_.push_back(v == first ? last : v - 1);
     }
     key = nextKey;
+    keyTaken = true;
     before = after;
     beforeHalf = half;
   }
+}
+
+bool PolarEdges::blockHidden(const Chain& chain, const PieceBlock& block) const {
+  // Facing away is what farPieceState() finds piece by piece for Faces::Seeable.
+  const bool facesAway =
+      faces_ == Faces::Seeable && block.plain && block.facesAwayFrom(p_, chain.solidOnLeft);
+  return facesAway || boxOutOfView(block.box);
 }
 
 bool PolarEdges::outOfView(std::uint32_t startKey, std::uint32_t endKey) const {

@@ -158,6 +158,9 @@ class PolarEdges {
   // `state`, or 0 when the piece is out of view on every ray from its ends' keys.
   std::uint8_t cull(std::uint8_t state, std::uint32_t startKey, std::uint32_t endKey) const;
 
+  // For a chain far from the viewpoint: every piece of the block is inactive, as it faces away
+  // (farPieceState()) or lies out of view (cull()), told from the block's cone and box.
+  bool blockHidden(const Chain& chain, const PieceBlock& block) const;
   void addChainEvents(const Chain& chain, bool classify);
   void addWedge(std::uint32_t start, std::uint32_t end);
   void addEvent(geometry::Vec2 point, std::uint32_t ref, EventKind kind);

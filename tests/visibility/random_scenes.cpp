@@ -264,6 +264,66 @@ Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd) {
   return c;
 }
 
+Case longRingCase(std::uint64_t seed, std::uint64_t index) {
+  Random random(seed ^ (index * 0xa0761d6478bd642full));
+  Case c;
+  constexpr double size = 40.0;
+  c.world.boundary = rectangle(0, 0, size, size);
+  // The rectangle [x0, x1] × [y0, y1] with every side cut into `cuts` equal pieces.
+  const auto subdivided = [](double x0, double y0, double x1, double y1, int cuts) {
+    const Vec2 corners[] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    Ring ring;
+    for (int side = 0; side < 4; ++side) {
+      for (int k = 0; k < cuts; ++k)
+        ring.push_back(lerp(corners[side], corners[(side + 1) % 4], k / static_cast<double>(cuts)));
+    }
+    return ring;
+  };
+  const int longRings = random.integer(1, 2);
+  for (int i = 0; i < longRings; ++i) {
+    const Vec2 center{random.uniform(10.0, 30.0), random.uniform(10.0, 30.0)};
+    const int vertices = random.integer(128, 400);
+    Ring ring;
+    switch (random.integer(0, 3)) {
+      case 0: {  // a disc, its radius jittered by up to a hundredth
+        const double r = random.uniform(2.0, 6.0);
+        for (int k = 0; k < vertices; ++k) {
+          ring.push_back(center + geometry::unitVector(2.0 * kPi * k / vertices) * r *
+                                      random.uniform(0.99, 1.0));
+        }
+        break;
+      }
+      case 1: {  // integer corners, sides of collinear pieces
+        const double x = std::round(center.x), y = std::round(center.y);
+        ring = subdivided(x - random.integer(1, 5), y - random.integer(1, 5),
+                          x + random.integer(1, 5), y + random.integer(1, 5), vertices / 4);
+        break;
+      }
+      case 2:
+        ring = starPolygon(random, center, vertices, 1.0, 6.0, false);
+        break;
+      default: {  // a neighbour sharing part of the first one's right side: twin pieces
+        const double x = std::round(center.x), y = std::round(center.y);
+        ring = subdivided(x - 4, y - 3, x, y + 3, vertices / 4);
+        c.world.obstacles.push_back(subdivided(x, y - 1, x + 3, y + 5, vertices / 4));
+        break;
+      }
+    }
+    (i == 0 || random.chance(0.6) ? c.world.targets : c.world.obstacles).push_back(ring);
+  }
+  generalObjects(random, c.world, size, random.integer(0, 3), 0.02, 0.06);
+  const double fixedFov[] = {0.25 * kPi, 0.5 * kPi, 0.3, 0.05};
+  c.halfFov =
+      random.chance(0.5) ? random.uniform(0.05, kPi - 0.05) : fixedFov[random.integer(0, 3)];
+  const int cameras = random.integer(1, 4);
+  for (int j = 0; j < cameras; ++j) {
+    const Vec2 p = random.chance(0.3) ? Vec2{random.uniform(0.0, size), random.uniform(0.0, size)}
+                                      : cameraPosition(random, c.world, false);
+    c.cameras.push_back({p.x, p.y, cameraYaw(random, c.world, p, c.halfFov)});
+  }
+  return c;
+}
+
 Case concurrentCase(std::uint64_t seed, std::uint64_t index) {
   Random random(seed ^ (index * 0x9fb21c651e98df25ull));
   Case c;

@@ -45,6 +45,12 @@ Case randomCase(std::uint64_t seed, std::uint64_t index, Crowd crowd = Crowd::Fe
 // or anywhere.
 Case concurrentCase(std::uint64_t seed, std::uint64_t index);
 
+// Long rings, so that the sweep passes their pieces by blocks (piece_blocks.h): finely drawn
+// discs, rectangles whose sides are runs of hundreds of collinear pieces, many-pointed stars,
+// and two subdivided rectangles sharing part of a side (twins); 1–2 of them with a few small
+// objects, cameras placed as randomCase() places them or far off.
+Case longRingCase(std::uint64_t seed, std::uint64_t index);
+
 // A point where Algorithm 2 would compute a visibility polygon: anywhere, on a target's
 // boundary, at a vertex, or on the boundary.
 geometry::Vec2 randomViewpoint(Random& random, const kinematics::World& world);

@@ -183,6 +183,13 @@ TEST(RandomConfigurations, EdgesCrossingAtSharedPointsAgreeWithReference) {
                        [](std::uint64_t index) { return testing::concurrentCase(kSeed, index); });
 }
 
+// Rings long enough that the sweep passes their pieces by blocks, facing away or out of view
+// as a whole: cameras on their collinear runs' lines, beside them, and far off.
+TEST(RandomConfigurations, LongRingsPassedByBlocksAgreeWithReference) {
+  compareWithReference(envNumber("CAMCOV_VISIBILITY_CASES", 10000) / 20,
+                       [](std::uint64_t index) { return testing::longRingCase(kSeed, index); });
+}
+
 // Cases the randomized tests once found wrong, as they were drawn then (the generators have
 // changed since): targets and an obstacle sharing a vertex that lies an ulp off another
 // target's edge; rings meeting at one vertex whose pieces all start there, so that their order
