@@ -248,6 +248,12 @@ double distanceToPolygon(std::span<const Vec2> ring, Vec2 p) {
 }
 
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  // [c, d] parallel to an axis with a and b strictly on one side of its line: they do not meet.
+  // The test below says so too (one of each orientation's two products is zero, so its signs
+  // are exact, and no end lies within the other segment's box); rooms' walls are such, and this
+  // answers most of the motion checks against them without a product.
+  if (c.y == d.y && ((a.y > c.y && b.y > c.y) || (a.y < c.y && b.y < c.y))) return false;
+  if (c.x == d.x && ((a.x > c.x && b.x > c.x) || (a.x < c.x && b.x < c.x))) return false;
   const double d1 = orient(c, d, a), d2 = orient(c, d, b);
   const double d3 = orient(a, b, c), d4 = orient(a, b, d);
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {

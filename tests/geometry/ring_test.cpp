@@ -8,6 +8,8 @@
 #include <numbers>
 #include <random>
 
+#include "geometry/predicates.h"
+
 namespace camcov::geometry {
 namespace {
 
@@ -162,6 +164,49 @@ TEST(SegmentsIntersect, CoversCrossingTouchingCollinearAndDisjoint) {
   EXPECT_TRUE(segmentsIntersect({0, 0}, {2, 0}, {1, 0}, {3, 0}));   // collinear overlap
   EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {2, 0}, {3, 0}));  // collinear, apart
   EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {0, 1}, {1, 1}));  // parallel
+}
+
+// Closed segments meet, decided with exact orientations: each pair of ends on both sides of
+// (or on) the other's line, and for four collinear points, overlapping spans on one axis.
+bool meetExactly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int d1 = orientSign(c, d, a), d2 = orientSign(c, d, b);
+  const int d3 = orientSign(a, b, c), d4 = orientSign(a, b, d);
+  if (d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0) {
+    const auto overlap = [](double p, double q, double r, double s) {
+      return std::max(std::min(p, q), std::min(r, s)) <= std::min(std::max(p, q), std::max(r, s));
+    };
+    return overlap(a.x, b.x, c.x, d.x) && overlap(a.y, b.y, c.y, d.y);
+  }
+  return d1 * d2 <= 0 && d3 * d4 <= 0;
+}
+
+// Walls parallel to an axis, with ends beside, on and across their lines, on a small grid
+// (touching, collinear, zero-length) and at random: as the exact decision says.
+TEST(SegmentsIntersect, AgreesWithExactOrientationsAgainstAxisParallelSegments) {
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> grid(0, 4);
+  std::uniform_real_distribution<double> anywhere(-3.0, 7.0);
+  int meetings = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const bool onGrid = trial % 2 == 0;
+    const auto point = [&] {
+      return onGrid ? Vec2{static_cast<double>(grid(rng)), static_cast<double>(grid(rng))}
+                    : Vec2{anywhere(rng), anywhere(rng)};
+    };
+    const Vec2 a = point(), b = point(), c = point();
+    Vec2 d = point();
+    if (trial % 4 < 2) {
+      d.y = c.y;  // horizontal
+    } else {
+      d.x = c.x;  // vertical
+    }
+    const bool meet = meetExactly(a, b, c, d);
+    ASSERT_EQ(segmentsIntersect(a, b, c, d), meet)
+        << "trial " << trial << ": (" << a.x << ", " << a.y << ")–(" << b.x << ", " << b.y
+        << ") and (" << c.x << ", " << c.y << ")–(" << d.x << ", " << d.y << ")";
+    meetings += meet;
+  }
+  EXPECT_GT(meetings, 10000);
 }
 
 TEST(FindSelfIntersection, AcceptsSimpleRingsIncludingCollinearVertices) {
