@@ -13,6 +13,13 @@
 namespace camcov::planners {
 namespace {
 
+// The reward of testing::roomWithTargetAndObstacle, with a field of view of θ = 30°.
+reward::RewardModel roomModel() {
+  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
+  model.setWorld(testing::roomWithTargetAndObstacle());
+  return model;
+}
+
 // Three cameras in the middle 30 m of testing::roomWithTargetAndObstacle's room, any yaw.
 std::vector<geometry::Pose> randomTeam(Random& random) {
   std::vector<geometry::Pose> team;
@@ -23,9 +30,7 @@ std::vector<geometry::Pose> randomTeam(Random& random) {
 }
 
 TEST(LocalOptimizer, StepNeverLowersTheRewardAndRespectsLimits) {
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
-  model.setWorld(w);
+  reward::RewardModel model = roomModel();
   const LocalOptimizer local{params::LocalParams{}};
   const StepLimits limits{0.2, 0.1};
   Random random(42);
@@ -48,9 +53,7 @@ TEST(LocalOptimizer, StepNeverLowersTheRewardAndRespectsLimits) {
 }
 
 TEST(LocalOptimizer, ImproveMovesOnlyTheSelectedCameras) {
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
-  model.setWorld(w);
+  reward::RewardModel model = roomModel();
   const LocalOptimizer local{params::LocalParams{}};
   std::vector<geometry::Pose> team{{-4, -3, 0.3}, {4, 3, 3.0}};
   const std::vector<StepLimits> limits(2, StepLimits{0.2, 0.1});
@@ -62,9 +65,7 @@ TEST(LocalOptimizer, ImproveMovesOnlyTheSelectedCameras) {
 }
 
 TEST(LocalOptimizer, CompassStepNeverLowersTheRewardAndRespectsLimits) {
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
-  model.setWorld(w);
+  reward::RewardModel model = roomModel();
   const LocalOptimizer compass{params::LocalParams{}, LocalOptimizer::Search::Compass};
   const StepLimits limits{0.2, 0.1};
   Random random(43);
@@ -92,9 +93,7 @@ TEST(LocalOptimizer, CompassStepNeverLowersTheRewardAndRespectsLimits) {
 TEST(LocalOptimizer, CompassStepIsTheGradientsStepOrAWholeStepAlongOneAxis) {
   // The moves tried are the gradient's step (which makes the small moves) and the step's limit
   // along ±x, ±y and ±γ; a step goes to one of them or stays.
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
-  model.setWorld(w);
+  reward::RewardModel model = roomModel();
   const LocalOptimizer gradient{params::LocalParams{}};
   const LocalOptimizer compass{params::LocalParams{}, LocalOptimizer::Search::Compass};
   // Long steps, so that a shorter move would often be the better one.
@@ -125,9 +124,7 @@ TEST(LocalOptimizer, CompassStepIsTheGradientsStepOrAWholeStepAlongOneAxis) {
 TEST(LocalOptimizer, CompassTurnsTowardsATargetJustOutOfViewWhereTheGradientSeesNothing) {
   // The target's nearest corner lies 0.05 rad beyond the left edge of the view: no small
   // change of yaw shows it (the reward is flat, its numerical gradient 0), a full step does.
-  const kinematics::World w = testing::roomWithTargetAndObstacle();
-  reward::RewardModel model(params::RewardParams{}, std::numbers::pi / 6);
-  model.setWorld(w);
+  reward::RewardModel model = roomModel();
   const geometry::Vec2 camera{-0.5, -8.0};
   const double toCorner = std::atan2(-0.5 - camera.y, 0.5 - camera.x);  // the corner (0.5, -0.5)
   std::vector<geometry::Pose> team{{camera.x, camera.y, toCorner - std::numbers::pi / 6 - 0.05}};
