@@ -88,7 +88,7 @@ void Occluders::buildBlocks() {
   blocks_.clear();
   for (Chain& chain : chains_) {
     chain.firstBlock = static_cast<std::uint32_t>(blocks_.size());
-    appendPieceBlocks(vertices_, chain.first, chain.count, hasTwins_, blocks_);
+    appendPieceBlocks(vertices_, next_, chain.first, chain.count, hasTwins_, blocks_);
     chain.blockCount = static_cast<std::uint32_t>(blocks_.size()) - chain.firstBlock;
   }
 }

@@ -12,11 +12,9 @@ namespace {
 // The cone of the pieces' directions, about their mean direction. cos α is lowered by far more
 // than the rounding of the unit vectors and their dot products (~1e-16), so that every
 // direction lies within α of the axis however the rounding fell.
-void takeCone(std::span<const Vec2> vertices, std::uint32_t chainFirst, std::uint32_t chainCount,
+void takeCone(std::span<const Vec2> vertices, std::span<const std::uint32_t> next,
               PieceBlock& block) {
-  const auto end = [&](std::uint32_t piece) {
-    return vertices[piece + 1 == chainFirst + chainCount ? chainFirst : piece + 1];
-  };
+  const auto end = [&](std::uint32_t piece) { return vertices[next[piece]]; };
   Vec2 sum{};
   for (std::uint32_t i = block.first; i < block.first + block.count; ++i) {
     const Vec2 d = end(i) - vertices[i];
@@ -59,7 +57,8 @@ bool PieceBlock::facesAwayFrom(Vec2 p, bool solidOnLeft) const {
   return least > r + 1e-9 * scale;
 }
 
-void appendPieceBlocks(std::span<const Vec2> vertices, std::uint32_t first, std::uint32_t count,
+void appendPieceBlocks(std::span<const Vec2> vertices, std::span<const std::uint32_t> next,
+                       std::uint32_t first, std::uint32_t count,
                        std::span<const std::uint8_t> hasTwins, std::vector<PieceBlock>& out) {
   if (count < kMinBlockedChain) return;
   for (std::uint32_t start = first; start < first + count; start += kBlockPieces) {
@@ -68,14 +67,14 @@ void appendPieceBlocks(std::span<const Vec2> vertices, std::uint32_t first, std:
     // The last block takes the rest, so none is short.
     const std::uint32_t left = first + count - start;
     block.count = left < 2 * kBlockPieces ? left : kBlockPieces;
-    const std::uint32_t last = block.first + block.count;  // one past; its vertex ends the block
+    const std::uint32_t last = block.first + block.count;  // one past the block's last piece
     block.box = geometry::boundingBox(vertices.subspan(block.first, block.count));
-    const Vec2 closing = vertices[last == first + count ? first : last];
+    const Vec2 closing = vertices[next[last - 1]];
     block.box.min = {std::min(block.box.min.x, closing.x), std::min(block.box.min.y, closing.y)};
     block.box.max = {std::max(block.box.max.x, closing.x), std::max(block.box.max.y, closing.y)};
     block.plain = std::none_of(hasTwins.begin() + block.first, hasTwins.begin() + last,
                                [](std::uint8_t t) { return t != 0; });
-    takeCone(vertices, first, count, block);
+    takeCone(vertices, next, block);
     out.push_back(block);
     if (last == first + count) break;
   }

@@ -38,8 +38,9 @@ inline constexpr std::uint32_t kBlockPieces = 32, kMinBlockedChain = 128;
 inline constexpr double kMaxConeAngle = 1.0;  // rad
 
 // Appends the blocks of the chain whose pieces are first … first + count − 1, piece i running
-// from vertices[i] to vertices[next(i)] (the last one back to `first`). `hasTwins` is per piece.
-void appendPieceBlocks(std::span<const geometry::Vec2> vertices, std::uint32_t first,
+// from vertices[i] to vertices[next[i]]. `hasTwins` is per piece.
+void appendPieceBlocks(std::span<const geometry::Vec2> vertices,
+                       std::span<const std::uint32_t> next, std::uint32_t first,
                        std::uint32_t count, std::span<const std::uint8_t> hasTwins,
                        std::vector<PieceBlock>& out);
 
