@@ -5,6 +5,7 @@
 // Compared as bytes (memcmp), not std::bit_cast, which the WebAssembly toolchain's library
 // lacks; the compilers make both the same few integer compares.
 #include <cstring>
+#include <span>
 
 #include "geometry/vec2.h"
 
@@ -23,6 +24,13 @@ inline bool sameBits(const geometry::Pose& a, const geometry::Pose& b) {
 
 inline bool sameBits(geometry::Vec2 a, geometry::Vec2 b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// The same count of numbers, each with the same bits (a ring's vertices, an edge list's weights).
+template <typename T>
+bool sameBits(std::span<const T> a, std::span<const T> b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
 }
 
 }  // namespace camcov::geometry

@@ -4,7 +4,31 @@
 
 #include <utility>
 
+#include "geometry/same_bits.h"
+
 namespace camcov::reward {
+
+namespace {
+
+template <typename T>
+bool sameLists(const std::vector<std::vector<T>>& a, const std::vector<std::vector<T>>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!geometry::sameBits(std::span<const T>(a[i]), std::span<const T>(b[i]))) return false;
+  }
+  return true;
+}
+
+// Whether `a` and `b` have the same rings and edge weights to the bit: all that the occluder
+// arrangement and the incremental terms kept with it are made of.
+bool sameArrangement(const kinematics::World& a, const kinematics::World& b) {
+  return geometry::sameBits(std::span<const geometry::Vec2>(a.boundary),
+                            std::span<const geometry::Vec2>(b.boundary)) &&
+         sameLists(a.targets, b.targets) && sameLists(a.obstacles, b.obstacles) &&
+         sameLists(a.targetEdgeWeights, b.targetEdgeWeights);
+}
+
+}  // namespace
 
 RewardModel::RewardModel(const params::RewardParams& params, std::vector<scene::Lens> lenses)
     : params_(params), lenses_(std::move(lenses)) {}
@@ -13,6 +37,9 @@ RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
     : RewardModel(params, std::vector<scene::Lens>(scene::kMaxCameras, lens)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
+  // A world that has not changed (static objects, the next step) keeps its arrangement, and with
+  // it every sweep and kept term made for it: a camera that stays is not swept again.
+  const bool keep = occluders_ && sameArrangement(world_, world);
   world_ = world;
   perimeter_ = targetPerimeter(world_);
   weightedPerimeter_ = weightedPerimeter(world_);
@@ -20,11 +47,12 @@ void RewardModel::setWorld(const kinematics::World& world) {
   for (const std::vector<double>& w : world_.targetEdgeWeights)
     weights_.insert(weights_.end(), w.begin(), w.end());
   objectBoxes_ = reward::objectBoxes(world_);
+  repulsion_.reset();
+  if (keep) return;
   // A new arrangement, unless this model alone holds its last one: then its buffers are reused.
   if (!occluders_ || occluders_.use_count() > 1)
     occluders_ = std::make_shared<visibility::Occluders>();
   occluders_->build(world_);
-  repulsion_.reset();
 }
 
 void RewardModel::setInstant(const RewardModel& measured) {

@@ -25,7 +25,9 @@ class RewardModel {
   // For teams of like cameras (up to scene::kMaxCameras), every one with `lens`.
   RewardModel(const params::RewardParams& params, scene::Lens lens);
 
-  // The instant to evaluate at. The world is copied: callers may change theirs afterwards.
+  // The instant to evaluate at. The world is copied: callers may change theirs afterwards. A
+  // world with the same rings and edge weights, to the bit, as the last one keeps its occluder
+  // arrangement (Occluders::buildId()), and with it the sweeps and terms kept for it.
   void setWorld(const kinematics::World& world);
   // The instant `measured` is at, sharing its occluder arrangement (built once per instant)
   // and the sweeps it has made (a camera at a pose it measured is not swept again): how a

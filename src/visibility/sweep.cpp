@@ -324,23 +324,29 @@ Sweep& Sweep::operator=(Sweep&&) noexcept = default;
 
 void Sweep::keepSweepsOf(const Sweep& other) {
   // Only each slot's latest: the others are of earlier instants, or probes, and copying six
-  // seen lists a camera at every step would cost more than they save.
+  // seen lists a camera at every step would cost more than they save. This one's own sweeps
+  // stay: those of the same arrangement (a world that did not change) hold still, the others
+  // can never match a query again and go first.
   auto& memos = impl_->memos;
   memos.resize(std::max(memos.size(), other.impl_->memos.size()));
   impl_->clock = std::max(impl_->clock, other.impl_->clock) + 1;
-  for (std::size_t j = 0; j < memos.size(); ++j) {
-    for (CameraMemo& memo : memos[j]) {
-      memo.build = 0;  // keeps its buffer
-      memo.lastUse = 0;
-    }
-    if (j >= other.impl_->memos.size()) continue;
+  for (std::size_t j = 0; j < other.impl_->memos.size(); ++j) {
     const auto& theirs = other.impl_->memos[j];
     const CameraMemo& latest = *std::max_element(
         theirs.begin(), theirs.end(),
         [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
-    CameraMemo& mine = memos[j][0];
-    mine = latest;                // its seen list into this one's buffer
-    mine.lastUse = impl_->clock;  // the last to go
+    if (latest.build == 0) continue;
+    auto& slot = memos[j];
+    auto mine = std::find_if(slot.begin(), slot.end(), [&](const CameraMemo& m) {
+      return m.holds(latest.build, latest.pose, latest.lens);
+    });
+    if (mine == slot.end()) {
+      mine = std::min_element(
+          slot.begin(), slot.end(),
+          [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
+      *mine = latest;  // its seen list into this one's buffer
+    }
+    mine->lastUse = impl_->clock;  // the last to go
   }
 }
 

@@ -82,7 +82,8 @@ class Sweep {
                                        const geometry::Pose& camera, const scene::Lens& lens);
 
   const CullingCounts& counts() const;
-  // Keeps the latest sweep of each of `other`'s camera slots (replacing this one's), for a
+  // Keeps the latest sweep of each of `other`'s camera slots, beside this one's own (those of
+  // the same arrangement still hold: a world that did not change keeps its Occluders), for a
   // workspace that takes up another's instant: a query they answer is not swept again.
   void keepSweepsOf(const Sweep& other);
 
