@@ -6,7 +6,6 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/ValidStateSampler.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
-#include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/util/Console.h>
 
@@ -19,6 +18,7 @@
 
 #include "geometry/same_bits.h"
 #include "planners/grid_nearest_neighbors.h"
+#include "planners/lazy_edges.h"
 #include "planners/se2_distance.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
@@ -231,12 +231,27 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
 };
 
 // PRM* whose roadmap is grown once and then queried by every camera: start and goal join the
-// roadmap as milestones (PRM's own connection step), and PRM's A* extracts the path. PRM's
+// roadmap as milestones (PRM's own connection step), and A* as PRM's extracts the path. PRM's
 // solve() is not used: it grows the roadmap in a second thread until a solution appears,
-// which would make the roadmap depend on timing.
+// which would make the roadmap depend on timing. Its edges are checked lazily (LazyEdges): the
+// pairs PRM*'s connection strategy proposes become candidates, and a query's search checks
+// the motions and works out the eq. (10) costs of those it looks at, finding PRM*'s paths.
 class SharedRoadmap final : public og::PRMstar {
  public:
-  using PRMstar::PRMstar;
+  explicit SharedRoadmap(const ob::SpaceInformationPtr& si)
+      : PRMstar(si),
+        edges_(
+            [this](Vertex near, Vertex added) {
+              return si_->checkMotion(stateProperty_[near], stateProperty_[added]);
+            },
+            [this](Vertex near, Vertex added) {
+              return opt_->motionCost(stateProperty_[near], stateProperty_[added]).value();
+            }) {
+    setConnectionFilter([this](const Vertex& near, const Vertex& added) {
+      edges_.propose(near, added);
+      return false;  // PRM* itself connects nothing
+    });
+  }
 
   // Exact neighbours from a grid of cells of side `cell` (m) over `box`, with no random pivots
   // (GNAT's); before setup(), which hands them to PRM*'s connection strategy. The grid works
@@ -246,12 +261,22 @@ class SharedRoadmap final : public og::PRMstar {
         cell, box, [this](const Vertex v) { return toPose(stateProperty_[v]); });
   }
 
-  ob::PathPtr connect(const ob::State* start, const ob::State* goal) {
+  std::optional<std::vector<geometry::Pose>> connect(const ob::State* start,
+                                                     const ob::State* goal) {
     const Vertex s = addMilestone(si_->cloneState(start));
     const Vertex g = addMilestone(si_->cloneState(goal));
-    if (!sameComponent(s, g)) return nullptr;
-    return constructSolution(s, g);
+    const auto path = edges_.shortestPath(s, g, milestoneCount(), [this, g](Vertex v) {
+      return opt_->motionCostHeuristic(stateProperty_[v], stateProperty_[g]).value();
+    });
+    if (!path) return std::nullopt;
+    std::vector<geometry::Pose> poses;
+    for (const Vertex v : *path)
+      poses.push_back(toPose(stateProperty_[v]));
+    return poses;
   }
+
+ private:
+  LazyEdges edges_;
 };
 
 }  // namespace
@@ -312,13 +337,7 @@ std::optional<std::vector<geometry::Pose>> Roadmap::query(const geometry::Pose& 
   ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
   fromPose(start, s.get());
   fromPose(goal, g.get());
-  const ob::PathPtr path = impl_->planner->connect(s.get(), g.get());
-  if (!path) return std::nullopt;
-  std::vector<geometry::Pose> poses;
-  for (const ob::State* state : path->as<og::PathGeometric>()->getStates()) {
-    poses.push_back(toPose(state));
-  }
-  return poses;
+  return impl_->planner->connect(s.get(), g.get());
 }
 
 std::size_t Roadmap::milestones() const {
