@@ -13,10 +13,12 @@ namespace camcov::planners {
 
 namespace {
 
-// As PRM's roadmap: vertices and each vertex's edges in vectors, in the order added.
+// As PRM's roadmap: vertices and each vertex's edges in vectors, in the order added; the edges
+// themselves in a vector too (never removed), not one allocation each.
 using Graph =
     boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                          boost::property<boost::edge_index_t, std::size_t>>;
+                          boost::property<boost::edge_index_t, std::size_t>, boost::no_property,
+                          boost::vecS>;
 using Edge = boost::graph_traits<Graph>::edge_descriptor;
 
 struct FoundGoal {};
