@@ -256,6 +256,30 @@ struct CameraMemo {
   }
 };
 
+// A camera slot's kept sweeps.
+using MemoSlot = std::array<CameraMemo, 6>;
+
+namespace {
+
+// The slot's sweep that holds this query, or null.
+CameraMemo* heldIn(MemoSlot& slot, std::uint64_t build, const geometry::Pose& pose,
+                   const scene::Lens& lens) {
+  const auto memo = std::find_if(slot.begin(), slot.end(),
+                                 [&](const CameraMemo& m) { return m.holds(build, pose, lens); });
+  return memo == slot.end() ? nullptr : &*memo;
+}
+
+constexpr auto byLastUse = [](const CameraMemo& a, const CameraMemo& b) {
+  return a.lastUse < b.lastUse;
+};
+
+// The slot's sweep to replace: the least recently used.
+CameraMemo& leastRecent(MemoSlot& slot) {
+  return *std::min_element(slot.begin(), slot.end(), byLastUse);
+}
+
+}  // namespace
+
 struct Sweep::Impl {
   Culling culling;
   CullingCounts counts;
@@ -268,7 +292,7 @@ struct Sweep::Impl {
   // the paper method refines a goal (its pose, three probes and the step: five sweeps) between
   // the simulator's measure of the camera and its own local step from there, which then finds
   // the measured sweep still kept (on the 100-target crowd, 9 % fewer sweeps than with two).
-  std::vector<std::array<CameraMemo, 6>> memos;
+  std::vector<MemoSlot> memos;
   std::uint64_t clock = 0;
 
   // What camera slot j at `pose` sees: a kept sweep, or a new one kept in place of the
@@ -278,16 +302,12 @@ struct Sweep::Impl {
     if (memos.size() <= j) memos.resize(j + 1);
     auto& slot = memos[j];
     ++clock;
-    for (CameraMemo& memo : slot) {
-      if (memo.holds(occluders.buildId(), pose, lens)) {
-        memo.lastUse = clock;
-        ++counts.reused;
-        return memo.seen;
-      }
+    if (CameraMemo* kept = heldIn(slot, occluders.buildId(), pose, lens)) {
+      kept->lastUse = clock;
+      ++counts.reused;
+      return kept->seen;
     }
-    CameraMemo& memo = *std::min_element(
-        slot.begin(), slot.end(),
-        [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
+    CameraMemo& memo = leastRecent(slot);
     const FieldOfView fov{pose.yaw, lens.halfFov};
     TargetSink sink(edges, lens, memo.seen);
     sweepFrom(occluders, pose.position(), &fov, sink);
@@ -332,18 +352,11 @@ void Sweep::keepSweepsOf(const Sweep& other) {
   impl_->clock = std::max(impl_->clock, other.impl_->clock) + 1;
   for (std::size_t j = 0; j < other.impl_->memos.size(); ++j) {
     const auto& theirs = other.impl_->memos[j];
-    const CameraMemo& latest = *std::max_element(
-        theirs.begin(), theirs.end(),
-        [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
+    const CameraMemo& latest = *std::max_element(theirs.begin(), theirs.end(), byLastUse);
     if (latest.build == 0) continue;
-    auto& slot = memos[j];
-    auto mine = std::find_if(slot.begin(), slot.end(), [&](const CameraMemo& m) {
-      return m.holds(latest.build, latest.pose, latest.lens);
-    });
-    if (mine == slot.end()) {
-      mine = std::min_element(
-          slot.begin(), slot.end(),
-          [](const CameraMemo& a, const CameraMemo& b) { return a.lastUse < b.lastUse; });
+    CameraMemo* mine = heldIn(memos[j], latest.build, latest.pose, latest.lens);
+    if (mine == nullptr) {
+      mine = &leastRecent(memos[j]);
       *mine = latest;  // its seen list into this one's buffer
     }
     mine->lastUse = impl_->clock;  // the last to go
