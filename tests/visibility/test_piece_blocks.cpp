@@ -11,6 +11,7 @@
 
 #include "geometry/predicates.h"
 #include "random_scenes.h"
+#include "support/rings.h"
 #include "support/small_worlds.h"
 #include "visibility/occluders.h"
 
@@ -19,13 +20,7 @@ namespace {
 
 using geometry::Ring;
 using geometry::Vec2;
-
-Ring disc(Vec2 center, double radius, int vertices) {
-  Ring ring;
-  for (int k = 0; k < vertices; ++k)
-    ring.push_back(center + geometry::unitVector(2.0 * std::numbers::pi * k / vertices) * radius);
-  return ring;
-}
+using testing::disc;
 
 Vec2 pieceEnd(const Occluders& o, std::uint32_t piece) {
   return o.vertices()[o.next(piece)];
