@@ -10,6 +10,8 @@
 
 namespace camcov::kinematics {
 
+// A field added here is also copied by simplifyObjects() (world_simplification.cpp), which
+// copies a World field by field.
 struct World {
   double time = 0.0;                      // t, seconds
   geometry::Ring boundary;                // B: simple, CCW, occludes
