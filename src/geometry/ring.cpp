@@ -324,14 +324,16 @@ EdgePair findSelfIntersection(std::span<const Vec2> ring) {
 }
 
 void transformRing(Ring& ring, double angle, Vec2 offset) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  for (Vec2& v : ring)
-    v = {c * v.x - s * v.y + offset.x, s * v.x + c * v.y + offset.y};
+  placeRing(ring, angle, offset, ring);  // each vertex read before it is written
 }
 
 void placeRing(std::span<const Vec2> local, double angle, Vec2 offset, Ring& out) {
-  out.assign(local.begin(), local.end());
-  transformRing(out, angle, offset);
+  const double c = std::cos(angle), s = std::sin(angle);
+  out.resize(local.size());  // the same size when local is out: nothing moves
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Vec2 v = local[i];
+    out[i] = {c * v.x - s * v.y + offset.x, s * v.x + c * v.y + offset.y};
+  }
 }
 
 Box boundingBox(std::span<const Vec2> ring) {

@@ -38,6 +38,12 @@ ObjectPose Kinematics::obstaclePose(std::size_t i, double t) const {
 void Kinematics::place(const scene::MovingObject& object, const Motion& motion, double t,
                        geometry::Ring& out) {
   const ObjectPose p = pose(object, motion, t);
+  if (!object.deformation) {
+    // Straight from the shape, not through a copy of it (the simulator's contact search places
+    // an object many times a step).
+    geometry::placeRing(object.shape, p.angle, p.reference, out);
+    return;
+  }
   scene::localShapeAt(object, t, out);
   geometry::transformRing(out, p.angle, p.reference);
 }
