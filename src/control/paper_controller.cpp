@@ -31,6 +31,12 @@ PaperController::PaperController(const scene::Scene& scene, const params::Parame
       nextGlobalTime_(start + (variant == Variant::Camcov ? params.sim.dt : 0.0)) {
   for (unsigned t = 1; t < threads; ++t)
     helpers_.emplace_back(params.reward, scene::lenses(scene));
+  if (ours()) {
+    model_.setDetail(params.camcov.detail);
+    forecastModel_.setDetail(params.camcov.detail);
+    for (auto& helper : helpers_)
+      helper.setDetail(params.camcov.detail);
+  }
 }
 
 PaperController::~PaperController() = default;
@@ -203,8 +209,9 @@ planners::Roadmap& PaperController::roadmap(const Observation& observation, std:
       const double share =
           std::min(1.0, geometry::area(geometry::boundingBox(observation.world.boundary)) /
                             geometry::area(geometry::boundingBox(scene_.boundary)));
-      roadmapOf_[j] = std::make_shared<planners::Roadmap>(observation.world, params_, lens,
-                                                          random_.fork(), share);
+      roadmapOf_[j] =
+          std::make_shared<planners::Roadmap>(observation.world, params_, lens, random_.fork(),
+                                              share, ours() ? params_.camcov.detail : 0.0);
     }
   }
   return *roadmapOf_[j];

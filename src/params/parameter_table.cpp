@@ -179,6 +179,12 @@ constexpr std::array kTable{
         "(everything going on at its last velocity) and credit it with the better of that and "
         "the present world; a candidate is sampled to fit the present, so it is judged there",
         0, 1),
+    row<&P::camcov, &CamcovParams::detail>(
+        "camcov.detail", "", "m",
+        "our method: judge poses with every target and obstacle redrawn with fewer vertices, "
+        "each point within this distance of the ring as drawn (Douglas-Peucker; a ring that "
+        "would fold stays as drawn); the simulator measures the rings as drawn; 0: as drawn",
+        0, kInf),
     row<&P::camcov, &CamcovParams::neighbours>(
         "camcov.neighbours", "N", "cameras",
         "camcov-dec: a camera plans for itself and at most N - 1 teammates, the nearest it "

@@ -103,6 +103,10 @@ struct CamcovParams {
   // Credit the committed team also with what it would see if the targets and obstacles went on
   // as they last moved (control/motion_watch.h), taking the better of that and the present.
   bool forecastStay = true;
+  // Judge poses in a world whose finely drawn targets and obstacles are redrawn to within this
+  // many metres (kinematics/world_simplification.h): a ring of thousands of vertices is swept
+  // as one of dozens. 0: as drawn.
+  double detail = 0.01;
   // camcov-dec: a camera plans for itself and at most N - 1 teammates, the nearest it believes
   // in (control/neighbourhood.h), so that its work is bounded by its neighbourhood, not by the
   // team. A team of at most N plans as one, as camcov does.

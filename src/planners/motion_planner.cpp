@@ -105,7 +105,7 @@ PoseFacts& factsOf(const ob::State* s, const geometry::Pose& p) {
 // Everything the planner's callbacks share: the world at the planning instant.
 struct PlanningWorld {
   PlanningWorld(const kinematics::World& w, const params::Parameters& params,
-                const scene::Lens& lens, std::uint64_t seed)
+                const scene::Lens& lens, std::uint64_t seed, double detail)
       : world(w),
         validity(params.planner.d1),
         reward(params.reward, std::vector{lens}),
@@ -114,9 +114,11 @@ struct PlanningWorld {
         lens(lens),
         box(geometry::boundingBox(world.boundary)) {
     validity.setWorld(world);
+    reward.setDetail(detail);
     reward.setWorld(world);
-    objects = world.targets;
-    objects.insert(objects.end(), world.obstacles.begin(), world.obstacles.end());
+    // The points the sampler looks from lie on the rings its views are swept in.
+    objects = reward.world().targets;
+    objects.insert(objects.end(), reward.world().obstacles.begin(), reward.world().obstacles.end());
   }
 
   kinematics::World world;
@@ -283,8 +285,8 @@ class SharedRoadmap final : public og::PRMstar {
 
 struct Roadmap::Impl {
   Impl(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
-       std::uint64_t seed, double share)
-      : w(world, params, lens, seed), space(std::make_shared<FactfulSE2Space>()) {
+       std::uint64_t seed, double share, double detail)
+      : w(world, params, lens, seed, detail), space(std::make_shared<FactfulSE2Space>()) {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     ob::RealVectorBounds bounds(2);
     bounds.setLow(0, w.box.min.x);
@@ -327,8 +329,8 @@ struct Roadmap::Impl {
 };
 
 Roadmap::Roadmap(const kinematics::World& world, const params::Parameters& params,
-                 const scene::Lens& lens, std::uint64_t seed, double share)
-    : impl_(std::make_unique<Impl>(world, params, lens, seed, share)) {}
+                 const scene::Lens& lens, std::uint64_t seed, double share, double detail)
+    : impl_(std::make_unique<Impl>(world, params, lens, seed, share, detail)) {}
 
 Roadmap::~Roadmap() = default;
 

@@ -27,8 +27,11 @@ class Roadmap {
   // Builds the roadmap now (the expensive part), sampled for a camera with `lens`. T2's budget
   // of milestones is for the whole room; a world that is a part of it (camcov-dec's region) is
   // given `share` of the budget, the part's share of the room, so milestones keep their density.
+  // Its rewards (eq. (10)'s costs, the sampler's views) judge the objects simplified to within
+  // `detail` metres (RewardModel::setDetail), as the method that plans does; its motions are
+  // checked against the world as it is.
   Roadmap(const kinematics::World& world, const params::Parameters& params, const scene::Lens& lens,
-          std::uint64_t seed, double share = 1.0);
+          std::uint64_t seed, double share = 1.0, double detail = 0.0);
   ~Roadmap();
   Roadmap(const Roadmap&) = delete;
   Roadmap& operator=(const Roadmap&) = delete;

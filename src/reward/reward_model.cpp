@@ -37,6 +37,12 @@ RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
     : RewardModel(params, std::vector<scene::Lens>(scene::kMaxCameras, lens)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
+  const bool simplified =
+      detail_ > 0.0 && kinematics::simplifyObjects(world, detail_, simplified_, simplification_);
+  take(simplified ? simplified_ : world);
+}
+
+void RewardModel::take(const kinematics::World& world) {
   // A world that has not changed (static objects, the next step) keeps its arrangement, and with
   // it every sweep and kept term made for it: a camera that stays is not swept again.
   const bool keep = occluders_ && sameArrangement(world_, world);
@@ -56,6 +62,10 @@ void RewardModel::setWorld(const kinematics::World& world) {
 }
 
 void RewardModel::setInstant(const RewardModel& measured) {
+  if (detail_ > 0.0 && !geometry::sameBits(detail_, measured.detail_) &&
+      kinematics::simplifyObjects(measured.world_, detail_, simplified_, simplification_)) {
+    return take(simplified_);
+  }
   world_ = measured.world_;
   perimeter_ = measured.perimeter_;
   weights_ = measured.weights_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kinematics/world.h"
+#include "kinematics/world_simplification.h"
 #include "params/parameters.h"
 #include "reward/incremental_repulsion.h"
 #include "reward/incremental_terms.h"
@@ -34,6 +35,11 @@ class RewardModel {
   // method takes the simulator's instant (control::Observation::measured). `measured` may
   // change afterwards; what is shared stays as it was.
   void setInstant(const RewardModel& measured);
+  // Finely drawn targets and obstacles are judged simplified to within `tolerance`, metres
+  // (kinematics/world_simplification.h), from the next instant on; 0, as made: as they are.
+  // world() is then the simplified world. setInstant() of a model with another tolerance takes
+  // its world simplified by this one's (shared still where that leaves every ring as it is).
+  void setDetail(double tolerance) { detail_ = tolerance; }
   const kinematics::World& world() const { return world_; }
   const visibility::Occluders& occluders() const { return *occluders_; }
   const scene::Lens& lens(std::size_t camera) const { return lenses_[camera]; }
@@ -79,6 +85,8 @@ class RewardModel {
  private:
   // The reward weighs the edges: RewardParams::weighted, in a world with weights.
   bool rewardWeighted() const { return params_.weighted && !weights_.empty(); }
+  // setWorld() of the world as this model judges it.
+  void take(const kinematics::World& world);
   // Every term of eq. (8) from S.
   RewardTerms termsOf(std::span<const visibility::Segment> segments,
                       std::span<const geometry::Pose> cameras);
@@ -86,6 +94,9 @@ class RewardModel {
   params::RewardParams params_;
   std::vector<scene::Lens> lenses_;
   kinematics::World world_;
+  double detail_ = 0.0;  // setDetail()
+  kinematics::World simplified_;
+  kinematics::SimplificationScratch simplification_;
   double perimeter_ = 0.0;
   std::vector<double> weights_;  // World::targetEdgeWeights by global edge; empty: unweighted
   double weightedPerimeter_ = 0.0;

@@ -10,6 +10,7 @@
 #include "planners/state_validity.h"
 #include "reward/reward_model.h"
 #include "support/random_worlds.h"
+#include "support/rings.h"
 #include "support/small_worlds.h"
 
 namespace camcov::planners {
@@ -79,6 +80,50 @@ TEST(Roadmap, CostIsEquationTenForEachPairAskedInTurn) {
        {std::pair{b, c}, std::pair{c, a}, std::pair{a, c}, std::pair{b, a}}) {
     EXPECT_NEAR(roadmap.cost(from, to), expected(from, to), 1e-12);
   }
+}
+
+// Our method's roadmap judges a finely drawn object simplified (camcov.detail), as its rewards
+// do, and checks its motions against the object as drawn.
+TEST(Roadmap, WithDetailCostsAreOfTheSimplifiedWorldAndMotionsOfTheDrawnOne) {
+  kinematics::World w;
+  w.boundary = {{-15, -15}, {15, -15}, {15, 15}, {-15, 15}};
+  w.targets = {testing::disc({0, 0}, 2.0, 2000)};
+  constexpr double kDetail = 0.01;
+  const params::Parameters p = smallBudget();
+  Roadmap roadmap(w, p, kTheta, 1, 1.0, kDetail);
+  reward::RewardModel judged(p.reward, kTheta);
+  judged.setDetail(kDetail);
+  judged.setWorld(w);
+  const geometry::Ring& simple = judged.world().targets[0];
+  ASSERT_LT(simple.size(), 100u);
+
+  // eq. (10) between two poses that see the disc, from the simplified world's rewards.
+  const geometry::Pose a{0, -6, std::numbers::pi / 2}, b{1, -6.5, 1.4};
+  const double ra = judged.reward(std::span(&a, 1)), rb = judged.reward(std::span(&b, 1));
+  EXPECT_NEAR(roadmap.cost(a, b),
+              0.5 * (1 / ra + 1 / rb) *
+                  (geometry::distance(a.position(), b.position()) + 0.5 * std::abs(1.4 - a.yaw)),
+              1e-12);
+
+  // A motion along the tangent of the drawn disc at the middle of the longest simplified edge,
+  // d1 − 2 mm from the arc there: clear of the chord by d1 and more, too close to the arc.
+  std::size_t longest = 0;
+  for (std::size_t i = 0; i < simple.size(); ++i) {
+    if (geometry::distance(simple[i], simple[(i + 1) % simple.size()]) >
+        geometry::distance(simple[longest], simple[(longest + 1) % simple.size()]))
+      longest = i;
+  }
+  const geometry::Vec2 mid =
+      geometry::lerp(simple[longest], simple[(longest + 1) % simple.size()], 0.5);
+  const geometry::Vec2 out = mid * (1.0 / geometry::norm(mid));
+  ASSERT_GT(2.0 - geometry::norm(mid), 0.004) << "the chord lies inside the arc there";
+  const double d1 = p.planner.d1;
+  const geometry::Vec2 along{-out.y, out.x}, through = out * (2.0 + d1 - 0.002);
+  const geometry::Vec2 from = through - along * 3.0, to = through + along * 3.0;
+  EXPECT_FALSE(roadmap.motionValid({from.x, from.y, 0}, {to.x, to.y, 0}));
+  StateValidity simplified(d1);
+  simplified.setWorld(judged.world());
+  EXPECT_TRUE(simplified.isValidMotion(from, to)) << "the motion tells the two worlds apart";
 }
 
 TEST(Roadmap, UnreachableGoalHasNoPath) {
