@@ -36,7 +36,7 @@ class RewardModel {
   // change afterwards; what is shared stays as it was.
   void setInstant(const RewardModel& measured);
   // Finely drawn targets and obstacles are judged simplified to within `tolerance`, metres
-  // (kinematics/world_simplification.h), from the next instant on; 0, as made: as they are.
+  // (kinematics/world_simplification.h), from the next instant on; 0, the default: as drawn.
   // world() is then the simplified world. setInstant() of a model with another tolerance takes
   // its world simplified by this one's (shared still where that leaves every ring as it is).
   void setDetail(double tolerance) { detail_ = tolerance; }

@@ -12,9 +12,9 @@
 namespace camcov::kinematics {
 namespace {
 
+using camcov::testing::disc;
 using geometry::Ring;
 using geometry::Vec2;
-using testing::disc;
 
 World room() {
   World w;

@@ -18,9 +18,9 @@
 namespace camcov::visibility {
 namespace {
 
+using camcov::testing::disc;
 using geometry::Ring;
 using geometry::Vec2;
-using testing::disc;
 
 Vec2 pieceEnd(const Occluders& o, std::uint32_t piece) {
   return o.vertices()[o.next(piece)];
