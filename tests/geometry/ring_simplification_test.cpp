@@ -62,7 +62,9 @@ TEST(RingSimplification, AFinelyDrawnRingKeepsEveryPointWithinTheTolerance) {
     EXPECT_GT(signedArea(simple), 0.0);
     EXPECT_LT(simple.size(), ring.size());
   }
-  EXPECT_GT(simplified, 150) << "wobbly discs drawn this finely lose vertices";
+  // Noisy rings (noise up to twice the tolerance) may keep more than half of their vertices and
+  // are refused; the smooth ones are not: most rings are simplified (about three in four).
+  EXPECT_GT(simplified, 100) << "wobbly discs drawn this finely lose vertices";
 }
 
 TEST(RingSimplification, AFineDiscBecomesOneOfDozensOfVertices) {
