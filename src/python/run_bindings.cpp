@@ -132,9 +132,7 @@ void bindRun(py::module_& m) {
           "seed", [](const records::RunRecord& r) { return r.metadata.seed; }, "The run's seed.")
       .def_property_readonly(
           "summary",
-          [](const records::RunRecord& r) {
-            return jsonToPython(records::runToJson(r)["summary"]);
-          },
+          [](const records::RunRecord& r) { return jsonToPython(records::summaryJson(r.summary)); },
           "The results file's summary as a dict: averageCoverage, averageUtilization, "
           "minimum distances, time closer than δ, ...")
       .def_property_readonly(

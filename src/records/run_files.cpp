@@ -1,15 +1,18 @@
 #include "records/run_files.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <string_view>
+#include <utility>
 
 #include "util/input_error.h"
 #include "util/input_file.h"
@@ -18,6 +21,7 @@
 #include "records/atomic_file.h"
 #include "records/json_numbers.h"
 #include "records/known_keys.h"
+#include "records/pretty_json.h"
 #include "scene/scene_validation.h"
 #include "util/readable_number.h"
 
@@ -36,9 +40,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The latest time a run may record, s: far past any scene's duration (scene::kMaxDuration).
 constexpr double kMaxRecordedTime = 1e9;
 
-// The columns of a run file's "series", for the writer and the reader alike: one value a step
-// in every run; one value a step where the scene asks for it (weighted targets, a resolution,
-// targets that come and go, limited knowledge); a list a camera.
+// The columns of a run file's "series" the reader knows (runJsonText writes them; a column it
+// wrote that is not here would be refused on reading, as the round-trip tests would show): one
+// value a step in every run; one value a step where the scene asks for it (weighted targets, a
+// resolution, targets that come and go, limited knowledge); a list a camera.
 constexpr std::array<std::string_view, 11> kStepSeries{"time",
                                                        "coverage",
                                                        "utilization",
@@ -295,78 +300,14 @@ std::optional<std::string> sceneOfStem(const std::string& stem,
   return scene;
 }
 
-nlohmann::json runToJson(const RunRecord& run) {
+std::string runJsonText(const RunRecord& run) {
   const RunMetadata& m = run.metadata;
-  nlohmann::json j;
-  j["format"] = kRunFormat;
-  j["tool"] = {{"name", "camcov"}, {"version", m.toolVersion}};
-  j["scene"] = {{"name", m.scene}, {"file", m.sceneFile}, {"hash", hashText(m.sceneHash)}};
-  j["method"] = m.method;
-  j["seed"] = m.seed;
-  j["parameters"] = params::toJson(m.parameters);
-  j["summary"] = summaryJson(run.summary);
+  std::string text;
+  PrettyJson w(text);
+  w.beginObject();
 
-  // The time series, column by column; poses as [x, y, yaw (rad)].
-  nlohmann::json series;
-  for (const std::string_view key : kStepSeries)
-    series[std::string(key)] = nlohmann::json::array();
-  const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
-  nlohmann::json poses = nlohmann::json::array(), goals = nlohmann::json::array();
-  for (std::size_t c = 0; c < cameras; ++c) {
-    poses.push_back(nlohmann::json::array());
-    goals.push_back(nlohmann::json::array());
-  }
-  for (const StepRow& row : run.steps) {
-    series["time"].push_back(row.time);
-    series["coverage"].push_back(row.terms.coverage);
-    series["utilization"].push_back(row.terms.utilization);
-    series["repulsion"].push_back(row.terms.repulsion);
-    series["reward"].push_back(row.terms.reward);
-    series["minObjectDistance"].push_back(finiteOrNull(row.minObjectDistance));
-    series["minCameraDistance"].push_back(finiteOrNull(row.minCameraDistance));
-    series["minObjectDistanceInStep"].push_back(finiteOrNull(row.minObjectDistanceInStep));
-    series["minCameraDistanceInStep"].push_back(finiteOrNull(row.minCameraDistanceInStep));
-    series["avoidableContactTime"].push_back(row.avoidableContactTime);
-    series["unavoidableContactTime"].push_back(row.unavoidableContactTime);
-    for (std::size_t c = 0; c < cameras; ++c) {
-      poses[c].push_back(pose(row.cameras[c]));
-      goals[c].push_back(row.goals[c] ? pose(*row.goals[c]) : nlohmann::json());
-    }
-  }
-  // Weighted scenes' runs (RunSummary::averageWeightedCoverage) record weighted coverage too.
-  if (run.summary.averageWeightedCoverage) {
-    series["weightedCoverage"] = nlohmann::json::array();
-    for (const StepRow& row : run.steps)
-      series["weightedCoverage"].push_back(row.terms.weightedCoverage);
-  }
-  // Runs of scenes with a resolution (RunSummary::averageResolutionCoverage) record it too.
-  if (run.summary.averageResolutionCoverage) {
-    series["resolutionCoverage"] = nlohmann::json::array();
-    for (const StepRow& row : run.steps)
-      series["resolutionCoverage"].push_back(row.resolutionCoverage);
-  }
-  // Scenes whose targets come and go (recorded tracks) say how many are present at each step.
-  if (!run.steps.empty() && run.steps.front().targetsPresent >= 0) {
-    series["targetsPresent"] = nlohmann::json::array();
-    for (const StepRow& row : run.steps)
-      series["targetsPresent"].push_back(row.targetsPresent);
-  }
-  // Runs under limited knowledge (RunSummary::messages) say who heard whom at each step:
-  // [from, to, sent at].
-  if (run.summary.messages) {
-    series["heard"] = nlohmann::json::array();
-    for (const StepRow& row : run.steps) {
-      nlohmann::json step = nlohmann::json::array();
-      for (const sim::Hearing& h : row.heard)
-        step.push_back({h.from, h.to, h.sentAt});
-      series["heard"].push_back(std::move(step));
-    }
-  }
-  series["cameras"] = std::move(poses);
-  series["goals"] = std::move(goals);
-  j["series"] = std::move(series);
-
-  j["events"] = nlohmann::json::array();
+  w.key("events");
+  w.beginArray();
   for (const auto& e : run.events) {
     nlohmann::json event = {
         {"time", e.time}, {"kind", e.kind}, {"camera", e.camera}, {"detail", e.detail}};
@@ -376,9 +317,126 @@ nlohmann::json runToJson(const RunRecord& run) {
       for (const auto& p : e.path)
         event["path"].push_back(pose(p));
     }
-    j["events"].push_back(std::move(event));
+    w.value(event);
   }
-  return j;
+  w.endArray();
+  w.key("format");
+  w.value(kRunFormat);
+  w.key("method");
+  w.value(m.method);
+  w.key("parameters");
+  w.value(params::toJson(m.parameters));
+  w.key("scene");
+  w.value({{"name", m.scene}, {"file", m.sceneFile}, {"hash", hashText(m.sceneHash)}});
+  w.key("seed");
+  w.value(m.seed);
+
+  // The time series, column by column; poses as [x, y, yaw (rad)]. Written straight from the
+  // steps, in the order of their names (as a JSON object keeps them).
+  using Column = std::pair<std::string_view, std::function<void()>>;
+  std::vector<Column> columns;
+  const auto numbers = [&](std::string_view name, auto of) {
+    columns.emplace_back(name, [&w, &run, of] {
+      w.beginArray();
+      for (const StepRow& row : run.steps)
+        w.number(of(row));
+      w.endArray();
+    });
+  };
+  // Distances that are undefined (no object, a single camera) are infinite, written as null.
+  numbers("time", [](const StepRow& r) { return r.time; });
+  numbers("coverage", [](const StepRow& r) { return r.terms.coverage; });
+  numbers("utilization", [](const StepRow& r) { return r.terms.utilization; });
+  numbers("repulsion", [](const StepRow& r) { return r.terms.repulsion; });
+  numbers("reward", [](const StepRow& r) { return r.terms.reward; });
+  numbers("minObjectDistance", [](const StepRow& r) { return r.minObjectDistance; });
+  numbers("minCameraDistance", [](const StepRow& r) { return r.minCameraDistance; });
+  numbers("minObjectDistanceInStep", [](const StepRow& r) { return r.minObjectDistanceInStep; });
+  numbers("minCameraDistanceInStep", [](const StepRow& r) { return r.minCameraDistanceInStep; });
+  numbers("avoidableContactTime", [](const StepRow& r) { return r.avoidableContactTime; });
+  numbers("unavoidableContactTime", [](const StepRow& r) { return r.unavoidableContactTime; });
+  // Weighted scenes' runs (RunSummary::averageWeightedCoverage) record weighted coverage too.
+  if (run.summary.averageWeightedCoverage)
+    numbers("weightedCoverage", [](const StepRow& r) { return r.terms.weightedCoverage; });
+  // Runs of scenes with a resolution (RunSummary::averageResolutionCoverage) record it too.
+  if (run.summary.averageResolutionCoverage)
+    numbers("resolutionCoverage", [](const StepRow& r) { return r.resolutionCoverage; });
+  // Scenes whose targets come and go (recorded tracks) say how many are present at each step.
+  if (!run.steps.empty() && run.steps.front().targetsPresent >= 0) {
+    columns.emplace_back("targetsPresent", [&w, &run] {
+      w.beginArray();
+      for (const StepRow& row : run.steps)
+        w.integer(row.targetsPresent);
+      w.endArray();
+    });
+  }
+  // Runs under limited knowledge (RunSummary::messages) say who heard whom at each step:
+  // [from, to, sent at].
+  if (run.summary.messages) {
+    columns.emplace_back("heard", [&w, &run] {
+      w.beginArray();
+      for (const StepRow& row : run.steps) {
+        w.beginArray();
+        for (const sim::Hearing& h : row.heard) {
+          w.beginArray();
+          w.integer(h.from);
+          w.integer(h.to);
+          w.number(h.sentAt);
+          w.endArray();
+        }
+        w.endArray();
+      }
+      w.endArray();
+    });
+  }
+  const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
+  const auto posesOf = [&](std::string_view name, auto poseAt) {
+    columns.emplace_back(name, [&w, &run, cameras, poseAt] {
+      w.beginArray();
+      for (std::size_t c = 0; c < cameras; ++c) {
+        w.beginArray();
+        for (const StepRow& row : run.steps) {
+          const std::optional<geometry::Pose> p = poseAt(row, c);
+          if (!p) {
+            w.null();
+            continue;
+          }
+          w.beginArray();
+          w.number(p->x);
+          w.number(p->y);
+          w.number(p->yaw);
+          w.endArray();
+        }
+        w.endArray();
+      }
+      w.endArray();
+    });
+  };
+  posesOf("cameras", [](const StepRow& r, std::size_t c) -> std::optional<geometry::Pose> {
+    return r.cameras[c];
+  });
+  posesOf("goals", [](const StepRow& r, std::size_t c) { return r.goals[c]; });
+  std::sort(columns.begin(), columns.end(),
+            [](const Column& a, const Column& b) { return a.first < b.first; });
+  w.key("series");
+  w.beginObject();
+  for (const auto& [name, write] : columns) {
+    w.key(name);
+    write();
+  }
+  w.endObject();
+
+  w.key("summary");
+  w.value(summaryJson(run.summary));
+  w.key("tool");
+  w.value({{"name", "camcov"}, {"version", m.toolVersion}});
+  w.endObject();
+  text += '\n';
+  return text;
+}
+
+nlohmann::json runToJson(const RunRecord& run) {
+  return nlohmann::json::parse(runJsonText(run));
 }
 
 RunRecord runFromJson(const nlohmann::json& j, const std::string& source) {
@@ -518,31 +576,34 @@ RunRecord loadRunFile(const std::filesystem::path& file) {
 }
 
 std::string runToCsv(const RunRecord& run) {
-  std::string csv =
-      "time,coverage,utilization,repulsion,reward,min_object_distance,min_camera_distance,"
-      "min_object_distance_in_step,min_camera_distance_in_step,avoidable_contact_time,"
-      "unavoidable_contact_time";
+  // fmt's own buffer, which its formatting writes straight into, the rows' formats compiled.
+  fmt::memory_buffer csv;
+  const auto out = std::back_inserter(csv);
+  fmt::format_to(out,
+                 "time,coverage,utilization,repulsion,reward,min_object_distance,"
+                 "min_camera_distance,min_object_distance_in_step,min_camera_distance_in_step,"
+                 "avoidable_contact_time,unavoidable_contact_time");
   const bool weighted = run.summary.averageWeightedCoverage.has_value();
-  if (weighted) csv += ",weighted_coverage";
+  if (weighted) fmt::format_to(out, ",weighted_coverage");
   const bool resolution = run.summary.averageResolutionCoverage.has_value();
-  if (resolution) csv += ",resolution_coverage";
+  if (resolution) fmt::format_to(out, ",resolution_coverage");
   const std::size_t cameras = run.steps.empty() ? 0 : run.steps.front().cameras.size();
   for (std::size_t c = 0; c < cameras; ++c)
-    csv += fmt::format(",cam{0}_x,cam{0}_y,cam{0}_yaw", c);
-  csv += '\n';
+    fmt::format_to(out, ",cam{0}_x,cam{0}_y,cam{0}_yaw", c);
+  csv.push_back('\n');
   for (const StepRow& row : run.steps) {
-    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{}", row.time, row.terms.coverage,
-                       row.terms.utilization, row.terms.repulsion, row.terms.reward,
-                       row.minObjectDistance, row.minCameraDistance, row.minObjectDistanceInStep,
-                       row.minCameraDistanceInStep, row.avoidableContactTime,
-                       row.unavoidableContactTime);
-    if (weighted) csv += fmt::format(",{}", row.terms.weightedCoverage);
-    if (resolution) csv += fmt::format(",{}", row.resolutionCoverage);
+    fmt::format_to(out, FMT_COMPILE("{},{},{},{},{},{},{},{},{},{},{}"), row.time,
+                   row.terms.coverage, row.terms.utilization, row.terms.repulsion, row.terms.reward,
+                   row.minObjectDistance, row.minCameraDistance, row.minObjectDistanceInStep,
+                   row.minCameraDistanceInStep, row.avoidableContactTime,
+                   row.unavoidableContactTime);
+    if (weighted) fmt::format_to(out, FMT_COMPILE(",{}"), row.terms.weightedCoverage);
+    if (resolution) fmt::format_to(out, FMT_COMPILE(",{}"), row.resolutionCoverage);
     for (const auto& p : row.cameras)
-      csv += fmt::format(",{},{},{}", p.x, p.y, p.yaw);
-    csv += '\n';
+      fmt::format_to(out, FMT_COMPILE(",{},{},{}"), p.x, p.y, p.yaw);
+    csv.push_back('\n');
   }
-  return csv;
+  return fmt::to_string(csv);
 }
 
 std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem::path& folder,
@@ -550,7 +611,7 @@ std::filesystem::path writeRunFiles(const RunRecord& run, const std::filesystem:
   const auto json = folder / (runStem(run.metadata) + ".json");
   // The CSV first: a run counts as finished when its JSON exists (resume looks for it).
   writeFileAtomically(csvFileOf(json), runToCsv(run), durability);
-  writeFileAtomically(json, runToJson(run).dump(1) + "\n", durability);
+  writeFileAtomically(json, runJsonText(run), durability);
   return json;
 }
 

@@ -17,6 +17,9 @@ namespace camcov::records {
 
 inline constexpr const char* kRunFormat = "camcov-run/2";
 
+// A run's results file, as text (its JSON pretty-printed, one space a level).
+std::string runJsonText(const RunRecord& run);
+// The same, as a document.
 nlohmann::json runToJson(const RunRecord& run);
 // A run's summary as its results file writes it (runToJson's "summary").
 nlohmann::json summaryJson(const sim::RunSummary& summary);

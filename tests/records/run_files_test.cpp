@@ -56,6 +56,30 @@ TEST(RunFiles, JsonRoundTripsEveryField) {
   EXPECT_TRUE(j["series"]["minCameraDistanceInStep"][1].is_null());
 }
 
+TEST(RunFiles, TextIsNlohmannsPrintingOfTheSameDocument) {
+  // Every optional column and event field present: the streamed text has each key where
+  // nlohmann's sorted objects put it, and its layout, to the byte.
+  RunRecord run = sampleRun();
+  run.summary.averageWeightedCoverage = 0.3;
+  run.summary.averageResolutionCoverage = 0.2;
+  run.summary.messages = sim::MessageCounts{3, 2, 1};
+  for (StepRow& row : run.steps) {
+    row.resolutionCoverage = 0.125;
+    row.targetsPresent = 4;
+    row.heard = {{0, 1, row.time}, {1, 0, -0.0}};
+    row.cameras.push_back({-7.5, 1e-7, -3.14});
+    row.goals.push_back(std::nullopt);
+  }
+  run.steps.back().heard.clear();
+  const std::string text = runJsonText(run);
+  EXPECT_EQ(text, nlohmann::json::parse(text).dump(1) + "\n");
+  const nlohmann::json j = runToJson(run);
+  for (const char* column : {"weightedCoverage", "resolutionCoverage", "targetsPresent", "heard"})
+    EXPECT_TRUE(j["series"].contains(column)) << column;
+  EXPECT_EQ(j["series"]["heard"][1], nlohmann::json::array());
+  EXPECT_EQ(j["series"]["cameras"][1][0], nlohmann::json({-7.5, 1e-7, -3.14}));
+}
+
 TEST(RunFiles, CsvHasOneRowPerStepAndAColumnPerPoseComponent) {
   const std::string csv = runToCsv(sampleRun());
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
