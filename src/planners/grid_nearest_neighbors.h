@@ -79,6 +79,7 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     found_.clear();
     const geometry::Pose p = pose_(data);
     const Key centre = keyOf(p.position());
+    reachSquared_ = std::numeric_limits<double>::infinity();
     for (const Entry& e : outside_)
       consider(p, e, k);
     for (std::int64_t ring = firstRing(centre);; ++ring) {
@@ -86,7 +87,7 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
       if (found_.size() >= k && beyond(ring, kthBest(k))) break;
       if (!visitRing(centre, ring, [&](const Entry& e) { consider(p, e, k); })) break;
     }
-    finish(k, nbh);
+    take(k, nbh);
   }
   void nearestR(const T& data, double radius, std::vector<T>& nbh) const override {
     nbh.clear();
@@ -102,7 +103,8 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     for (std::int64_t ring = firstRing(centre); !beyond(ring, radius); ++ring) {
       if (!visitRing(centre, ring, within)) break;
     }
-    finish(found_.size(), nbh);
+    std::sort(found_.begin(), found_.end());
+    take(found_.size(), nbh);
   }
   std::size_t size() const override { return all_.size(); }
   void list(std::vector<T>& data) const override { data = all_; }
@@ -180,23 +182,38 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     }
     return true;
   }
-  // Keeps the k best seen so far as a max-heap on (distance, order).
+  // Keeps the k best seen so far sorted on (distance, order): one that beats the k-th moves in
+  // from the end. (A heap's sift and the sort at the end cost a third more: their comparisons
+  // go either way, a scan from the end mostly one way.) Once there are k, one farther in the
+  // plane than the k-th is passed over before its SE(2) distance is taken: that distance is at
+  // least the planar one (reachSquared_ carries the slack of beyond()).
   void consider(const geometry::Pose& p, const Entry& e, std::size_t k) const {
+    std::size_t at = found_.size();
+    if (at >= k) {
+      const double dx = p.x - e.pose.x, dy = p.y - e.pose.y;
+      if (dx * dx + dy * dy > reachSquared_) return;
+    }
     const Found f{se2Distance(p, e.pose), e.order, e.data};
-    if (found_.size() < k) {
+    if (at < k) {
       found_.push_back(f);
-      std::push_heap(found_.begin(), found_.end());
-    } else if (f < found_.front()) {
-      std::pop_heap(found_.begin(), found_.end());
-      found_.back() = f;
-      std::push_heap(found_.begin(), found_.end());
+    } else if (f < found_.back()) {
+      --at;
+    } else {
+      return;
+    }
+    for (; at > 0 && f < found_[at - 1]; --at)
+      found_[at] = found_[at - 1];
+    found_[at] = f;
+    if (found_.size() == k) {
+      const double reach = found_.back().distance * (1.0 + 1e-9);
+      reachSquared_ = reach * reach;
     }
   }
   double kthBest(std::size_t k) const {
-    return found_.size() < k ? std::numeric_limits<double>::infinity() : found_.front().distance;
+    return found_.size() < k ? std::numeric_limits<double>::infinity() : found_.back().distance;
   }
-  void finish(std::size_t k, std::vector<T>& nbh) const {
-    std::sort(found_.begin(), found_.end());
+  // The first k of found_, which is sorted.
+  void take(std::size_t k, std::vector<T>& nbh) const {
     for (std::size_t i = 0; i < found_.size() && i < k; ++i)
       nbh.push_back(found_[i].data);
   }
@@ -209,6 +226,7 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
   std::vector<T> all_;                     // in the order added, as Linear lists them
   std::uint64_t next_ = 0;
   mutable std::vector<Found> found_;
+  mutable double reachSquared_ = 0.0;  // nearestK's: (k-th best · (1 + 1e-9))², ∞ until k found
 };
 
 }  // namespace camcov::planners
