@@ -1,75 +1,152 @@
 #include "planners/lazy_edges.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
-
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/astar_search.hpp>
-#include <boost/graph/filtered_graph.hpp>
-#include <boost/property_map/function_property_map.hpp>
-#include <boost/property_map/vector_property_map.hpp>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace camcov::planners {
 
-namespace {
-
-// As PRM's roadmap: vertices and each vertex's edges in vectors, in the order added; the edges
-// themselves in a vector too (never removed), not one allocation each.
-using Graph =
-    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                          boost::property<boost::edge_index_t, std::size_t>, boost::no_property,
-                          boost::vecS>;
-using Edge = boost::graph_traits<Graph>::edge_descriptor;
-
-struct FoundGoal {};
-
-// Stops the search when the goal is taken from the queue.
-struct GoalVisitor : boost::default_astar_visitor {
-  LazyEdges::Vertex goal;
-  explicit GoalVisitor(LazyEdges::Vertex g) : goal(g) {}
-  template <typename G>
-  void examine_vertex(LazyEdges::Vertex u, const G&) const {
-    if (u == goal) throw FoundGoal{};
-  }
-};
-
-}  // namespace
-
+// The roadmap as PRM's boost graph holds it, without the graph: each vertex's edges in the
+// order they were proposed (as an undirected adjacency list lists them), each naming its pair.
+// The search is boost's astar_search, step for step (breadth_first_visit with the A* visitor,
+// relax() as for an undirected graph, a 4-ary indirect heap on f = g + h), written out over
+// these lists: the same vertices taken in the same order, ties included, without the graph's
+// descriptors, filters and property maps, which cost most of a search whose edges are known.
 struct LazyEdges::Impl {
-  struct Pair {
-    Vertex near, added;
-    std::optional<bool> valid;
-    std::optional<double> cost;
+  struct Incidence {
+    std::uint32_t other, pair;
   };
+  // What is known of a pair, a byte each: a search reads them for every edge it meets, and
+  // they stay in cache where whole records would not.
+  enum Fact : std::uint8_t { kChecked = 1, kValid = 2, kCosted = 4 };
+  enum class Color : std::uint8_t { White, Gray, Black };
 
   Valid validOf;
   Cost costOf;
-  Graph graph;
-  std::vector<Pair> pairs;  // by edge index
+  std::vector<std::pair<Vertex, Vertex>> pairs;  // (near, added), as proposed
+  std::vector<std::uint8_t> facts;               // by pair
+  std::vector<double> costs;                     // by pair, where kCosted
+  std::vector<std::vector<Incidence>> incident;  // by vertex
   std::size_t checked = 0;
 
-  bool valid(const Edge& e) {
-    Pair& p = pairs[boost::get(boost::edge_index, graph, e)];
-    if (!p.valid) {
-      p.valid = validOf(p.near, p.added);
+  // The search's state, kept between searches for its buffers.
+  std::vector<double> distance, estimate;  // g, and f = g + h (the heap's key)
+  std::vector<Vertex> previous;
+  std::vector<Color> color;
+  std::vector<std::size_t> indexInHeap;
+  std::vector<Vertex> heap;
+
+  bool valid(std::uint32_t pair) {
+    std::uint8_t& f = facts[pair];
+    if (!(f & kChecked)) {
+      f |= kChecked | (validOf(pairs[pair].first, pairs[pair].second) ? kValid : 0);
       ++checked;
     }
-    return *p.valid;
+    return (f & kValid) != 0;
   }
-  double cost(const Edge& e) {
-    Pair& p = pairs[boost::get(boost::edge_index, graph, e)];
-    if (!p.cost) p.cost = costOf(p.near, p.added);
-    return *p.cost;
+  double cost(std::uint32_t pair) {
+    if (!(facts[pair] & kCosted)) {
+      costs[pair] = costOf(pairs[pair].first, pairs[pair].second);
+      facts[pair] |= kCosted;
+    }
+    return costs[pair];
   }
 
-  struct IsValid {
-    Impl* edges = nullptr;
-    bool operator()(const Edge& e) const { return edges->valid(e); }
-  };
-  struct CostOf {
-    Impl* edges = nullptr;
-    double operator()(const Edge& e) const { return edges->cost(e); }
-  };
+  // boost::d_ary_heap_indirect<Vertex, 4, ...> with std::less on `estimate`.
+  static constexpr std::size_t kArity = 4;
+  static constexpr std::size_t kNotInHeap = std::numeric_limits<std::size_t>::max();
+  void push(Vertex v) {
+    const std::size_t index = heap.size();
+    heap.push_back(v);
+    indexInHeap[v] = index;
+    siftUp(index);
+  }
+  void pop() {
+    indexInHeap[heap[0]] = kNotInHeap;
+    if (heap.size() != 1) {
+      heap[0] = heap.back();
+      indexInHeap[heap[0]] = 0;
+      heap.pop_back();
+      siftDown();
+    } else {
+      heap.pop_back();
+    }
+  }
+  void update(Vertex v) { siftUp(indexInHeap[v]); }
+  void siftUp(std::size_t index) {
+    if (index == 0) return;
+    const std::size_t start = index;
+    std::size_t levels = 0;
+    const Vertex moving = heap[index];
+    const double key = estimate[moving];
+    while (index != 0) {
+      const std::size_t parent = (index - 1) / kArity;
+      if (!(key < estimate[heap[parent]])) break;
+      ++levels;
+      index = parent;
+    }
+    index = start;
+    for (std::size_t i = 0; i < levels; ++i) {
+      const std::size_t parent = (index - 1) / kArity;
+      indexInHeap[heap[parent]] = index;
+      heap[index] = heap[parent];
+      index = parent;
+    }
+    heap[index] = moving;
+    indexInHeap[moving] = index;
+  }
+  void siftDown() {
+    if (heap.empty()) return;
+    std::size_t index = 0;
+    const double key = estimate[heap[0]];
+    const std::size_t size = heap.size();
+    for (;;) {
+      const std::size_t first = index * kArity + 1;
+      if (first >= size) break;
+      std::size_t smallest = 0;
+      double smallestKey = estimate[heap[first]];
+      const std::size_t children = std::min(kArity, size - first);
+      for (std::size_t i = 1; i < children; ++i) {
+        const double k = estimate[heap[first + i]];
+        if (k < smallestKey) {
+          smallest = i;
+          smallestKey = k;
+        }
+      }
+      if (!(smallestKey < key)) break;
+      const Vertex a = heap[first + smallest], b = heap[index];
+      heap[first + smallest] = b;
+      heap[index] = a;
+      indexInHeap[a] = index;
+      indexInHeap[b] = first + smallest;
+      index = first + smallest;
+    }
+  }
+
+  // boost::relax for an undirected edge {u, v} met from u, weight w: v through u, else u
+  // through v.
+  bool relax(Vertex u, Vertex v, double w) {
+    const double du = distance[u], dv = distance[v];
+    if (du + w < dv) {
+      distance[v] = du + w;
+      if (distance[v] < dv) {
+        previous[v] = u;
+        return true;
+      }
+      return false;
+    }
+    if (dv + w < du) {
+      distance[u] = dv + w;
+      if (distance[u] < du) {
+        previous[u] = v;
+        return true;
+      }
+    }
+    return false;
+  }
 };
 
 LazyEdges::LazyEdges(Valid valid, Cost cost) : impl_(std::make_unique<Impl>()) {
@@ -80,36 +157,70 @@ LazyEdges::LazyEdges(Valid valid, Cost cost) : impl_(std::make_unique<Impl>()) {
 LazyEdges::~LazyEdges() = default;
 
 void LazyEdges::propose(Vertex near, Vertex added) {
-  while (boost::num_vertices(impl_->graph) <= std::max(near, added))
-    boost::add_vertex(impl_->graph);
-  boost::add_edge(near, added, impl_->pairs.size(), impl_->graph);
-  impl_->pairs.push_back({near, added, std::nullopt, std::nullopt});
+  Impl& s = *impl_;
+  // Numbered in 32 bits: a roadmap has thousands of milestones, tens of thousands of pairs.
+  constexpr std::size_t kMost = std::numeric_limits<std::uint32_t>::max();
+  if (std::max(near, added) >= kMost || s.pairs.size() >= kMost)
+    throw std::length_error("LazyEdges: more vertices or pairs than 32-bit numbers hold");
+  if (s.incident.size() <= std::max(near, added)) s.incident.resize(std::max(near, added) + 1);
+  const auto pair = static_cast<std::uint32_t>(s.pairs.size());
+  s.incident[near].push_back({static_cast<std::uint32_t>(added), pair});
+  s.incident[added].push_back({static_cast<std::uint32_t>(near), pair});
+  s.pairs.emplace_back(near, added);
+  s.facts.push_back(0);
+  s.costs.push_back(0.0);
 }
 
 std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex start, Vertex goal,
                                                                       std::size_t vertices,
                                                                       const Heuristic& heuristic) {
-  Graph& graph = impl_->graph;
-  while (boost::num_vertices(graph) < std::max({vertices, start + 1, goal + 1}))
-    boost::add_vertex(graph);
-  const boost::filtered_graph<Graph, Impl::IsValid> valid(graph, Impl::IsValid{impl_.get()});
-  boost::vector_property_map<Vertex> previous(boost::num_vertices(graph));
-  // OMPL's PRM::constructSolution, with an objective whose costs add and compare as numbers.
-  try {
-    boost::astar_search(
-        valid, start, [&heuristic](Vertex v) { return heuristic(v); },
-        boost::predecessor_map(previous)
-            .weight_map(boost::make_function_property_map<Edge>(Impl::CostOf{impl_.get()}))
-            .distance_compare([](double a, double b) { return a < b; })
-            .distance_combine([](double a, double b) { return a + b; })
-            .distance_inf(std::numeric_limits<double>::infinity())
-            .distance_zero(0.0)
-            .visitor(GoalVisitor(goal)));
-  } catch (const FoundGoal&) {
+  Impl& s = *impl_;
+  using Color = Impl::Color;
+  const std::size_t n = std::max({vertices, start + 1, goal + 1, s.incident.size()});
+  s.incident.resize(n);
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  s.distance.assign(n, kInfinity);
+  s.estimate.assign(n, kInfinity);
+  s.color.assign(n, Color::White);
+  s.indexInHeap.assign(n, Impl::kNotInHeap);
+  s.previous.resize(n);
+  for (Vertex v = 0; v < n; ++v)
+    s.previous[v] = v;
+  s.heap.clear();
+  s.distance[start] = 0.0;
+  s.estimate[start] = heuristic(start);
+  s.color[start] = Color::Gray;
+  s.push(start);
+  while (!s.heap.empty()) {
+    const Vertex u = s.heap[0];
+    s.pop();
+    if (u == goal) break;  // taken from the queue: OMPL's PRM stops there
+    // Indexed, not iterated: a self-pair lists u twice, and nothing is added while searching.
+    for (std::size_t i = 0; i < s.incident[u].size(); ++i) {
+      const auto [other, pair] = s.incident[u][i];
+      const Vertex v = other;
+      if (!s.valid(pair)) continue;
+      const double w = s.cost(pair);
+      // As boost's examine_edge: Dijkstra's order holds for weights of at least 0 only.
+      if (w < 0.0) throw std::invalid_argument("LazyEdges: an edge with a negative cost");
+      const Color c = s.color[v];
+      const bool decreased = s.relax(u, v, w);
+      if (decreased) s.estimate[v] = s.distance[v] + heuristic(v);
+      if (c == Color::White) {
+        s.color[v] = Color::Gray;
+        s.push(v);
+      } else if (c == Color::Gray) {
+        if (decreased) s.update(v);
+      } else if (decreased) {
+        s.push(v);
+        s.color[v] = Color::Gray;
+      }
+    }
+    s.color[u] = Color::Black;
   }
-  if (previous[goal] == goal) return std::nullopt;
+  if (s.previous[goal] == goal) return std::nullopt;
   std::vector<Vertex> path;
-  for (Vertex v = goal; previous[v] != v; v = previous[v])
+  for (Vertex v = goal; s.previous[v] != v; v = s.previous[v])
     path.push_back(v);
   path.push_back(start);
   std::reverse(path.begin(), path.end());

@@ -9,7 +9,8 @@
 //  - budget: T2 stands for T2 · milestonesPerSecond roadmap milestones, so runs do not
 //    depend on the machine (SPEC section 3).
 // OMPL's own random numbers are not used: sampling draws from the run's Random, and the
-// roadmap's neighbour search is the exhaustive (RNG-free) one, so a seed fixes the roadmap.
+// roadmap's neighbour search is exact and draws nothing (GridNearestNeighbors), so a seed fixes
+// the roadmap.
 #include <memory>
 #include <optional>
 #include <vector>
