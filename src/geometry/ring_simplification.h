@@ -28,6 +28,10 @@ bool simplificationHolds(std::span<const Vec2> ring, double tolerance,
                          std::span<const std::uint8_t> mustKeep,
                          std::span<const std::uint8_t> keep);
 
+// A simplified ring keeps at least 3 vertices and at most half of them: simplifiedRing() never
+// simplifies a ring of fewer vertices than this.
+inline constexpr std::size_t kFewestSimplified = 6;
+
 // The kept vertices as a ring, when they are at most half of the vertices (a finely drawn ring)
 // and still a simple ring of the same orientation; else false, and `out` is left as it was.
 // `keep` comes in as the choice to try first (empty: none; simplificationHolds() decides), and

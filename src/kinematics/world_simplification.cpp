@@ -1,5 +1,7 @@
 #include "kinematics/world_simplification.h"
 
+#include <algorithm>
+
 #include "geometry/ring_simplification.h"
 
 namespace camcov::kinematics {
@@ -33,6 +35,12 @@ bool simplify(const geometry::Ring& ring, const std::vector<double>& weights, do
 }
 
 }  // namespace
+
+bool hasFinelyDrawnObjects(const World& world) {
+  const auto fine = [](const geometry::Ring& r) { return r.size() >= geometry::kFewestSimplified; };
+  return std::any_of(world.targets.begin(), world.targets.end(), fine) ||
+         std::any_of(world.obstacles.begin(), world.obstacles.end(), fine);
+}
 
 bool simplifyObjects(const World& world, double tolerance, World& out,
                      SimplificationScratch& scratch) {

@@ -14,8 +14,12 @@ namespace camcov::kinematics {
 struct SimplificationScratch {
   std::vector<std::uint8_t> mustKeep;
   std::vector<std::vector<std::uint8_t>> targetKeep, obstacleKeep;
-  geometry::Ring ring;
 };
+
+// Whether simplifyObjects() could simplify any ring of `world`: one has at least
+// geometry::kFewestSimplified vertices. Most worlds draw every object coarsely, and a model
+// judging them asks at every instant.
+bool hasFinelyDrawnObjects(const World& world);
 
 // `world` with each target and obstacle ring simplified to within `tolerance`, metres
 // (geometry/ring_simplification.h), into `out`; true if any ring lost a vertex, else `out` is

@@ -37,8 +37,8 @@ RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
     : RewardModel(params, std::vector<scene::Lens>(scene::kMaxCameras, lens)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
-  const bool simplified =
-      detail_ > 0.0 && kinematics::simplifyObjects(world, detail_, simplified_, simplification_);
+  const bool simplified = detail_ > 0.0 && kinematics::hasFinelyDrawnObjects(world) &&
+                          kinematics::simplifyObjects(world, detail_, simplified_, simplification_);
   take(simplified ? simplified_ : world);
 }
 
@@ -63,6 +63,7 @@ void RewardModel::take(const kinematics::World& world) {
 
 void RewardModel::setInstant(const RewardModel& measured) {
   if (detail_ > 0.0 && !geometry::sameBits(detail_, measured.detail_) &&
+      kinematics::hasFinelyDrawnObjects(measured.world_) &&
       kinematics::simplifyObjects(measured.world_, detail_, simplified_, simplification_)) {
     return take(simplified_);
   }

@@ -48,6 +48,21 @@ TEST(WorldSimplification, FineObjectsAreRedrawnAndTheRestStays) {
   EXPECT_FALSE(simplifyObjects(coarse, 0.01, out, scratch));
   EXPECT_EQ(out.targets, coarse.targets);
   EXPECT_EQ(out.boundary, coarse.boundary);
+  EXPECT_TRUE(hasFinelyDrawnObjects(w));
+  EXPECT_FALSE(hasFinelyDrawnObjects(coarse));
+}
+
+TEST(WorldSimplification, OnlyRingsOfSixVerticesOrMoreCountAsFinelyDrawn) {
+  // Keeping at least 3 vertices and at most half, a pentagon can lose none; a hexagon three,
+  // whether it is the target or the obstacle.
+  World w = room();
+  w.targets = {disc({0, 0}, 1.0, 5)};
+  EXPECT_FALSE(hasFinelyDrawnObjects(w));
+  w.obstacles = {disc({5, 5}, 1.0, 6)};
+  EXPECT_TRUE(hasFinelyDrawnObjects(w));
+  w.obstacles.clear();
+  w.targets.push_back(disc({5, 5}, 1.0, 6));
+  EXPECT_TRUE(hasFinelyDrawnObjects(w));
 }
 
 TEST(WorldSimplification, EdgeWeightsFollowTheirEdges) {
