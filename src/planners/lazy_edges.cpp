@@ -127,23 +127,19 @@ struct LazyEdges::Impl {
   }
 
   // boost::relax for an undirected edge {u, v} met from u, weight w: v through u, else u
-  // through v.
+  // through v. (boost compares again once a distance is stored, against x87's wider
+  // registers; doubles in SSE registers store as computed.)
   bool relax(Vertex u, Vertex v, double w) {
     const double du = distance[u], dv = distance[v];
     if (du + w < dv) {
       distance[v] = du + w;
-      if (distance[v] < dv) {
-        previous[v] = u;
-        return true;
-      }
-      return false;
+      previous[v] = u;
+      return true;
     }
     if (dv + w < du) {
       distance[u] = dv + w;
-      if (distance[u] < du) {
-        previous[u] = v;
-        return true;
-      }
+      previous[u] = v;
+      return true;
     }
     return false;
   }
@@ -197,8 +193,9 @@ std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex sta
     if (u == goal) break;  // taken from the queue: OMPL's PRM stops there
     // Indexed, not iterated: a self-pair lists u twice, and nothing is added while searching.
     for (std::size_t i = 0; i < s.incident[u].size(); ++i) {
-      const auto [other, pair] = s.incident[u][i];
-      const Vertex v = other;
+      const Impl::Incidence edge = s.incident[u][i];
+      const Vertex v = edge.other;
+      const std::uint32_t pair = edge.pair;
       if (!s.valid(pair)) continue;
       const double w = s.cost(pair);
       // As boost's examine_edge: Dijkstra's order holds for weights of at least 0 only.
