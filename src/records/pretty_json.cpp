@@ -1,6 +1,8 @@
 #include "records/pretty_json.h"
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -78,10 +80,20 @@ void PrettyJson::number(double v) {
     out_ += "null";
     return;
   }
-  // nlohmann's serializer's own conversion (serializer::dump_float).
-  std::array<char, 64> digits;
-  const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), v);
-  out_.append(digits.data(), static_cast<std::size_t>(end - digits.data()));
+  if (known_.empty()) known_.resize(std::size_t{1} << kKnownBits);
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  KnownNumber& slot = known_[(bits * 0x9e3779b97f4a7c15u) >> (64 - kKnownBits)];
+  if (slot.length == 0 || slot.bits != bits) {
+    // nlohmann's serializer's own conversion (serializer::dump_float).
+    std::array<char, 64> digits;
+    const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), v);
+    const auto length = static_cast<std::size_t>(end - digits.data());
+    if (length > sizeof slot.text) throw std::logic_error("PrettyJson: a number's text too long");
+    slot.bits = bits;
+    slot.length = static_cast<std::uint8_t>(length);
+    std::copy_n(digits.data(), length, slot.text);
+  }
+  out_.append(slot.text, slot.length);
 }
 
 void PrettyJson::integer(std::int64_t v) {

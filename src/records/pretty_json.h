@@ -46,10 +46,21 @@ class PrettyJson {
   void newLine(std::size_t depth);
   void close(char bracket);
 
+  // The text of numbers written lately, by their bits: a run's series repeat values (zeros,
+  // a camera that holds still), and the conversion is most of a number's cost. The same bits
+  // give the same text, so a hit writes what the conversion would.
+  struct KnownNumber {
+    std::uint64_t bits = 0;
+    std::uint8_t length = 0;  // 0: empty (no number's text is empty)
+    char text[31];            // the longest, "-1.7976931348623157e+308", takes 24
+  };
+  static constexpr int kKnownBits = 8;  // 256 slots, by the top bits of a multiplicative hash
+
   std::string& out_;
   unsigned indent_;
   std::vector<Open> open_;
   bool afterKey_ = false;
+  std::vector<KnownNumber> known_;  // 2^kKnownBits once a number is written
 };
 
 }  // namespace camcov::records

@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "support/splitmix64.h"
 
@@ -102,6 +103,32 @@ TEST(PrettyJson, WritesWhatNlohmannsDumpWritesForTheSameDocument) {
       ASSERT_EQ(text, document.dump(static_cast<int>(indent))) << "document " << i;
     }
   }
+}
+
+TEST(PrettyJson, WritesRepeatedNumbersAsTheyWereWrittenFirst) {
+  // A run's series repeat values: the writer keeps the text of numbers it wrote lately. Values
+  // drawn again and again from a pool larger than it keeps, so that they evict each other, and
+  // neighbouring doubles (and ±0), to catch a number told from another by too few of its bits.
+  testing::SplitMix64 random{12};
+  std::vector<double> pool;
+  for (int i = 0; i < 1200; ++i)
+    pool.push_back(awkwardDouble(random));
+  for (const double v : {0.0, 1.0, 0.1, 1e16})
+    pool.insert(pool.end(), {v, -v, std::nextafter(v, 2.0), std::nextafter(v, -2.0)});
+  // More neighbours than slots: two of them share a slot, and differ in the last bits only.
+  for (double v = 0.1, i = 0; i < 300; ++i, v = std::nextafter(v, 1.0))
+    pool.push_back(v);
+  std::string text;
+  PrettyJson w(text);
+  nlohmann::json document = nlohmann::json::array();
+  w.beginArray();
+  for (int i = 0; i < 20000; ++i) {
+    const double v = pool[static_cast<std::size_t>(random.uniform(0.0, pool.size()))];
+    w.number(v);
+    document.push_back(v);
+  }
+  w.endArray();
+  EXPECT_EQ(text, document.dump(1));
 }
 
 TEST(PrettyJson, RefusesKeysOutOfOrderAndUnbalancedContainers) {
