@@ -328,7 +328,10 @@ void transformRing(Ring& ring, double angle, Vec2 offset) {
 }
 
 void placeRing(std::span<const Vec2> local, double angle, Vec2 offset, Ring& out) {
-  const double c = std::cos(angle), s = std::sin(angle);
+  // Most objects do not turn (angle ±0), and the simulator's contact search places them many
+  // times a step: cos(±0) = 1 and sin(±0) = ±0 without the library's call.
+  const bool turned = angle != 0.0;
+  const double c = turned ? std::cos(angle) : 1.0, s = turned ? std::sin(angle) : angle;
   out.resize(local.size());  // the same size when local is out: nothing moves
   for (std::size_t i = 0; i < out.size(); ++i) {
     const Vec2 v = local[i];

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "geometry/predicates.h"
+#include "geometry/same_bits.h"
 
 namespace camcov::geometry {
 namespace {
@@ -270,6 +271,25 @@ TEST(PlaceRing, RotatesAboutOriginThenTranslates) {
   EXPECT_NEAR(out[1].x, 10.0, 1e-15);  // (1, 0) -> (0, 1) -> (10, 1)
   EXPECT_NEAR(out[1].y, 1.0, 1e-15);
   EXPECT_GT(signedArea(out), 0.0);  // rotation keeps orientation
+}
+
+TEST(PlaceRing, AnObjectThatDoesNotTurnIsPlacedAsTheRotationFormulaPlacesIt) {
+  // Unturned (±0) it skips the library's cos and sin: the same bits as the formula with them,
+  // the signs of zeros included.
+  const Ring shape{{0.0, 0.0}, {-0.0, 1.5}, {2.0, -0.0}, {-3.25, -1e-300}, {1e300, 7.0}};
+  for (const double angle : {0.0, -0.0}) {
+    for (const Vec2 offset : {Vec2{0.0, 0.0}, Vec2{-0.0, -0.0}, Vec2{4.5, -2.0}}) {
+      Ring out;
+      placeRing(shape, angle, offset, out);
+      ASSERT_EQ(out.size(), shape.size());
+      const double c = std::cos(angle), s = std::sin(angle);
+      for (std::size_t i = 0; i < shape.size(); ++i) {
+        const Vec2 v = shape[i];
+        const Vec2 expected{c * v.x - s * v.y + offset.x, s * v.x + c * v.y + offset.y};
+        EXPECT_TRUE(sameBits(out[i], expected)) << "vertex " << i << ", angle " << angle;
+      }
+    }
+  }
 }
 
 TEST(BoundingBox, SpansAllVertices) {
