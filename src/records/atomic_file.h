@@ -21,11 +21,12 @@ void prepareOutputFile(const std::filesystem::path& file);
 enum class Durability {
   // Flushed before the rename: a power cut leaves the old file or the new one.
   Synced,
-  // Left for the system to write back. A kill still leaves the old file or the new one whole;
-  // a power cut may leave the new one empty or cut short. For files whose reader detects that
-  // and makes them again: a batch's run files (BatchFolder::finishedJob, runCsvIsWhole),
-  // thousands of them, whose flushes cost a twentieth of the published protocol's time; the
-  // batch flushes its file system once when it ends (flushFileSystemOf).
+  // Left for the system to write back, which starts at once but is not waited for. A kill
+  // still leaves the old file or the new one whole; a power cut may leave the new one empty or
+  // cut short. For files whose reader detects that and makes them again: a batch's run files
+  // (BatchFolder::finishedJob, runCsvIsWhole), thousands of them, whose flushes cost a
+  // twentieth of the published protocol's time; the batch flushes its file system once when it
+  // ends (flushFileSystemOf), and finds little left to write.
   Deferred,
 };
 
