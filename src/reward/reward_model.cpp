@@ -37,9 +37,12 @@ RewardModel::RewardModel(const params::RewardParams& params, scene::Lens lens)
     : RewardModel(params, std::vector<scene::Lens>(scene::kMaxCameras, lens)) {}
 
 void RewardModel::setWorld(const kinematics::World& world) {
-  const bool simplified = detail_ > 0.0 && kinematics::hasFinelyDrawnObjects(world) &&
-                          kinematics::simplifyObjects(world, detail_, simplified_, simplification_);
-  take(simplified ? simplified_ : world);
+  take(simplify(world) ? simplified_ : world);
+}
+
+bool RewardModel::simplify(const kinematics::World& world) {
+  return detail_ > 0.0 && kinematics::hasFinelyDrawnObjects(world) &&
+         kinematics::simplifyObjects(world, detail_, simplified_, simplification_);
 }
 
 void RewardModel::take(const kinematics::World& world) {
@@ -62,11 +65,8 @@ void RewardModel::take(const kinematics::World& world) {
 }
 
 void RewardModel::setInstant(const RewardModel& measured) {
-  if (detail_ > 0.0 && !geometry::sameBits(detail_, measured.detail_) &&
-      kinematics::hasFinelyDrawnObjects(measured.world_) &&
-      kinematics::simplifyObjects(measured.world_, detail_, simplified_, simplification_)) {
+  if (!geometry::sameBits(detail_, measured.detail_) && simplify(measured.world_))
     return take(simplified_);
-  }
   world_ = measured.world_;
   perimeter_ = measured.perimeter_;
   weights_ = measured.weights_;

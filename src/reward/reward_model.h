@@ -87,6 +87,10 @@ class RewardModel {
   bool rewardWeighted() const { return params_.weighted && !weights_.empty(); }
   // setWorld() of the world as this model judges it.
   void take(const kinematics::World& world);
+  // Whether `world` as this model judges it is a simplified drawing of it, then in simplified_:
+  // with a detail set and a ring fine enough to lose a vertex (most worlds have none, and are
+  // not copied to find that out).
+  bool simplify(const kinematics::World& world);
   // Every term of eq. (8) from S.
   RewardTerms termsOf(std::span<const visibility::Segment> segments,
                       std::span<const geometry::Pose> cameras);
