@@ -22,6 +22,7 @@
 #include "planners/se2_distance.h"
 #include "planners/state_validity.h"
 #include "planners/visibility_sampler.h"
+#include "reward/metrics.h"
 #include "reward/reward_model.h"
 
 namespace camcov::planners {
@@ -212,14 +213,23 @@ class ExactMotionValidator final : public ob::MotionValidator {
 class CoverageCostObjective final : public ob::OptimizationObjective {
  public:
   CoverageCostObjective(const ob::SpaceInformationPtr& si, PlanningWorld& w)
-      : OptimizationObjective(si), w_(w) {
+      : OptimizationObjective(si),
+        w_(w),
+        ceiling_(std::max(reward::rewardCeiling(w.reward.params()), kMinReward)),
+        // Shrunk by 1e-9 so that the rounding of the distances never makes the bound exceed a
+        // path's cost: the triangle inequality holds to far better than that in doubles.
+        leastStateCost_(std::isinf(ceiling_) ? 0.0 : (1.0 - 1e-9) / ceiling_) {
     description_ = "camcov eq. (10): mean inverse single-camera reward times SE(2) distance";
   }
 
+  // The reward is taken within [kMinReward, its ceiling]: the ceiling is the most a camera's
+  // reward can be (reward::rewardCeiling, λ1 + λ2), so every state costs at least 1/ceiling.
+  // A reward above it, where two targets share a seen edge, costs as the ceiling does.
   ob::Cost stateCost(const ob::State* s) const override {
     const geometry::Pose p = toPose(s);
     PoseFacts& facts = factsOf(s, p);
-    if (!facts.cost) facts.cost = 1.0 / std::max(w_.reward.reward(std::span(&p, 1)), kMinReward);
+    if (!facts.cost)
+      facts.cost = 1.0 / std::clamp(w_.reward.reward(std::span(&p, 1)), kMinReward, ceiling_);
     return ob::Cost(*facts.cost);
   }
 
@@ -228,8 +238,19 @@ class CoverageCostObjective final : public ob::OptimizationObjective {
                     se2Distance(toPose(a), toPose(b)));
   }
 
+  // A lower bound of eq. (10) along any path from a to b: each of its motions costs at least
+  // the least state cost times its length, and the SE(2) distance is a metric. It is
+  // consistent, so the query's A* still finds the cheapest path, and it costs and checks only
+  // the milestones whose cost from the start plus this bound is below the path's, not every
+  // milestone cheaper to reach than the goal.
+  ob::Cost motionCostHeuristic(const ob::State* a, const ob::State* b) const override {
+    return ob::Cost(leastStateCost_ * se2Distance(toPose(a), toPose(b)));
+  }
+
  private:
   PlanningWorld& w_;
+  double ceiling_;
+  double leastStateCost_;
 };
 
 // PRM* whose roadmap is grown once and then queried by every camera: start and goal join the
@@ -355,6 +376,13 @@ double Roadmap::cost(const geometry::Pose& a, const geometry::Pose& b) const {
   fromPose(a, s.get());
   fromPose(b, g.get());
   return impl_->objective->motionCost(s.get(), g.get()).value();
+}
+
+double Roadmap::costLowerBound(const geometry::Pose& a, const geometry::Pose& b) const {
+  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
+  fromPose(a, s.get());
+  fromPose(b, g.get());
+  return impl_->objective->motionCostHeuristic(s.get(), g.get()).value();
 }
 
 }  // namespace camcov::planners

@@ -5,7 +5,8 @@
 //  - sampler: with probability p uniform, else the visibility sampler (a point q1 on an
 //    object's boundary, its visibility polygon, a valid pose inside it that sees q1);
 //  - cost: eq. (10), the mean of 1/reward of a single camera at both ends times OMPL's SE(2)
-//    distance (‖Δxy‖ + ½|Δγ|);
+//    distance (‖Δxy‖ + ½|Δγ|), the reward taken as at most its ceiling λ1 + λ2;
+//  - query: A* over the roadmap, guided by the least cost a metre any state can have;
 //  - budget: T2 stands for T2 · milestonesPerSecond roadmap milestones, so runs do not
 //    depend on the machine (SPEC section 3).
 // OMPL's own random numbers are not used: sampling draws from the run's Random, and the
@@ -47,6 +48,9 @@ class Roadmap {
 
   // eq. (10) between two poses, for tests and for the cost of a path.
   double cost(const geometry::Pose& a, const geometry::Pose& b) const;
+  // A lower bound of eq. (10) summed along any path from a to b: the heuristic of a query's
+  // A*, consistent (never more than one motion's cost plus the bound from its end).
+  double costLowerBound(const geometry::Pose& a, const geometry::Pose& b) const;
 
  private:
   struct Impl;

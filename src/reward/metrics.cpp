@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "reward/fixed_point_sum.h"
 #include "reward/resolution_coverage.h"
@@ -243,6 +244,11 @@ double pairTerm(geometry::Vec2 a, geometry::Vec2 b, double d2) {
 double combine(const params::RewardParams& p, double coverage, double utilization,
                double repulsion) {
   return p.lambda1 * coverage + p.lambda2 * utilization - p.lambda3 * repulsion;
+}
+
+double rewardCeiling(const params::RewardParams& p) {
+  if (p.lambda3 < 0.0) return std::numeric_limits<double>::infinity();
+  return std::max(p.lambda1, 0.0) + std::max(p.lambda2, 0.0);
 }
 
 }  // namespace camcov::reward

@@ -113,5 +113,9 @@ RewardTerms termsAlone(const kinematics::World& world,
 // Reward, eq. (8).
 double combine(const params::RewardParams& p, double coverage, double utilization,
                double repulsion);
+// The most eq. (8) gives where coverage and utilization are at most 1 and repulsion is not
+// negative: λ1 + λ2, each where positive; +∞ where λ3 < 0 (repulsion then adds). Utilization
+// passes 1 only where two targets share a seen edge (each counts the edge's angle).
+double rewardCeiling(const params::RewardParams& p);
 
 }  // namespace camcov::reward

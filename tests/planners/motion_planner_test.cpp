@@ -12,6 +12,7 @@
 #include "support/random_worlds.h"
 #include "support/rings.h"
 #include "support/small_worlds.h"
+#include "support/splitmix64.h"
 
 namespace camcov::planners {
 namespace {
@@ -124,6 +125,50 @@ TEST(Roadmap, WithDetailCostsAreOfTheSimplifiedWorldAndMotionsOfTheDrawnOne) {
   StateValidity simplified(d1);
   simplified.setWorld(judged.world());
   EXPECT_TRUE(simplified.isValidMotion(from, to)) << "the motion tells the two worlds apart";
+}
+
+// The query's A* heuristic against eq. (10) itself: never above the cost of one motion plus the
+// bound from its end (consistent, so A* finds the cheapest path), and positive, so it guides.
+TEST(Roadmap, CostLowerBoundNeverExceedsAMotionsCostPlusTheBoundFromItsEnd) {
+  const kinematics::World w = testing::roomWithTargetAndObstacle();
+  Roadmap roadmap(w, smallBudget(), kTheta, 4);
+  testing::SplitMix64 random{7};
+  const auto pose = [&] {
+    return geometry::Pose{random.uniform(-19, 19), random.uniform(-19, 19),
+                          random.uniform(-std::numbers::pi, std::numbers::pi)};
+  };
+  for (int i = 0; i < 2000; ++i) {
+    const geometry::Pose a = pose(), b = pose(), c = pose();
+    EXPECT_GT(roadmap.costLowerBound(a, b), 0.0);
+    EXPECT_LE(roadmap.costLowerBound(a, b), roadmap.cost(a, b));
+    EXPECT_LE(roadmap.costLowerBound(a, c), roadmap.cost(a, b) + roadmap.costLowerBound(b, c));
+  }
+  // Along a path, ties of the bound included: from a pose to itself it is nothing.
+  const geometry::Pose a = pose();
+  EXPECT_EQ(roadmap.costLowerBound(a, a), 0.0);
+}
+
+// Two targets drawn on one another share every edge, and each counts a seen edge's angle, so a
+// camera's utilization passes 1 and its reward the ceiling λ1 + λ2: eq. (10) takes it as the
+// ceiling, which keeps the query's bound below every cost.
+TEST(Roadmap, ARewardAboveItsCeilingCostsAsTheCeiling) {
+  kinematics::World w = testing::roomWithTargetAndObstacle();
+  w.obstacles.clear();
+  w.targets = {testing::box(-5, -5, 5, 5), testing::box(-5, -5, 5, 5)};
+  params::Parameters p = smallBudget();
+  p.reward.lambda1 = 0.1;
+  p.reward.lambda2 = 1.0;
+  p.reward.lambda3 = 0.0;  // no repulsion from the side a metre away
+  const double ceiling = 1.1;
+  reward::RewardModel reward(p.reward, kTheta);
+  reward.setWorld(w);
+  // Looking at a side from a metre away: both targets fill the whole field of view.
+  const geometry::Pose a{0, -6, std::numbers::pi / 2}, b{0.5, -6, std::numbers::pi / 2};
+  ASSERT_GT(reward.reward(std::span(&a, 1)), ceiling);
+  ASSERT_GT(reward.reward(std::span(&b, 1)), ceiling);
+  Roadmap roadmap(w, p, kTheta, 1);
+  EXPECT_DOUBLE_EQ(roadmap.cost(a, b), 0.5 / ceiling);
+  EXPECT_LE(roadmap.costLowerBound(a, b), roadmap.cost(a, b));
 }
 
 TEST(Roadmap, UnreachableGoalHasNoPath) {

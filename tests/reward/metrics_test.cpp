@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 #include "reward/reward_model.h"
+#include "support/random_worlds.h"
 
 namespace camcov::reward {
 namespace {
@@ -105,6 +108,33 @@ TEST(Combine, IsEquationEight) {
   p.lambda2 = 0.5;
   p.lambda3 = 3.0;
   EXPECT_DOUBLE_EQ(combine(p, 0.5, 0.4, 0.1), 2.0 * 0.5 + 0.5 * 0.4 - 3.0 * 0.1);
+}
+
+// Against the reward itself: teams of one to three cameras anywhere in random worlds (no seen
+// edge shared by two targets there), with weights drawn for each team, never score above it.
+TEST(RewardCeiling, NoTeamScoresAboveItAndRepulsionThatAddsLeavesNone) {
+  testing::SplitMix64 random{11};
+  for (int world = 0; world < 20; ++world) {
+    const kinematics::World w = testing::randomWorld(random);
+    for (int team = 0; team < 100; ++team) {
+      params::RewardParams p;
+      p.lambda1 = random.uniform(0, 2);
+      p.lambda2 = random.uniform(0, 2);
+      p.lambda3 = random.uniform(0, 0.1);
+      RewardModel model(p, kTheta);
+      model.setWorld(w);
+      std::vector<Pose> cameras(1 + team % 3);
+      for (Pose& c : cameras)
+        c = testing::randomPose(random);
+      EXPECT_LE(model.reward(cameras), rewardCeiling(p)) << world << " " << team;
+    }
+  }
+  params::RewardParams p;
+  p.lambda1 = 0.5;
+  p.lambda2 = 0.25;
+  EXPECT_EQ(rewardCeiling(p), 0.75);
+  p.lambda3 = -1.0;
+  EXPECT_EQ(rewardCeiling(p), std::numeric_limits<double>::infinity());
 }
 
 TEST(Coverage, IsZeroWithoutPerimeter) {
