@@ -26,11 +26,65 @@ struct LazyEdges::Impl {
 
   Valid validOf;
   Cost costOf;
-  std::vector<std::pair<Vertex, Vertex>> pairs;  // (near, added), as proposed
-  std::vector<std::uint8_t> facts;               // by pair
-  std::vector<double> costs;                     // by pair, where kCosted
-  std::vector<std::vector<Incidence>> incident;  // by vertex
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (near, added), as proposed
+  std::vector<std::uint8_t> facts;                             // by pair
+  std::vector<double> costs;                                   // by pair, where kCosted
   std::size_t checked = 0;
+
+  // Each vertex's incidences in the order their pairs were proposed. The pairs known at a
+  // search are packed vertex after vertex (packed[firstOf[v] .. firstOf[v + 1]]), once: a
+  // roadmap proposes tens of thousands before its first query. Those proposed later, a query's
+  // start and goal joining the roadmap, follow in short lists of their own (later[v]), until
+  // they outnumber the packed ones and everything is packed again.
+  std::vector<std::uint32_t> firstOf;
+  std::vector<Incidence> packed;
+  std::vector<std::vector<Incidence>> later;
+  std::size_t listed = 0;    // pairs packed or in later lists
+  std::size_t vertices = 0;  // one past the largest vertex proposed
+
+  void list(std::size_t vertices) {
+    later.resize(std::max(later.size(), vertices));
+    facts.resize(pairs.size(), 0);
+    costs.resize(pairs.size());
+    if (pairs.size() - listed <= packed.size() / 2) {
+      for (; listed < pairs.size(); ++listed) {
+        const auto [near, added] = pairs[listed];
+        const auto pair = static_cast<std::uint32_t>(listed);
+        later[near].push_back({added, pair});
+        later[added].push_back({near, pair});
+      }
+      return;
+    }
+    // Counted, then placed: a vertex's incidences in the order of its pairs.
+    firstOf.assign(later.size() + 1, 0);
+    for (const auto& [near, added] : pairs) {
+      ++firstOf[near + 1];
+      ++firstOf[added + 1];
+    }
+    for (std::size_t v = 1; v < firstOf.size(); ++v)
+      firstOf[v] += firstOf[v - 1];
+    packed.resize(2 * pairs.size());
+    std::vector<std::uint32_t> next(firstOf.begin(), firstOf.end() - 1);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto [near, added] = pairs[i];
+      const auto pair = static_cast<std::uint32_t>(i);
+      packed[next[near]++] = {added, pair};
+      packed[next[added]++] = {near, pair};
+    }
+    for (auto& l : later)
+      l.clear();
+    listed = pairs.size();
+  }
+  // Vertex u's incidences: its packed ones, then its later ones.
+  template <typename F>
+  void forEachIncidence(Vertex u, F&& f) const {
+    if (u + 1 < firstOf.size()) {
+      for (std::uint32_t i = firstOf[u]; i < firstOf[u + 1]; ++i)
+        f(packed[i]);
+    }
+    for (const Incidence& e : later[u])
+      f(e);
+  }
 
   // The search's state, kept between searches for its buffers.
   std::vector<double> distance, estimate;  // g, and f = g + h (the heap's key)
@@ -154,17 +208,13 @@ LazyEdges::~LazyEdges() = default;
 
 void LazyEdges::propose(Vertex near, Vertex added) {
   Impl& s = *impl_;
-  // Numbered in 32 bits: a roadmap has thousands of milestones, tens of thousands of pairs.
+  // Numbered in 32 bits, a pair's two incidences too: a roadmap has thousands of milestones,
+  // tens of thousands of pairs.
   constexpr std::size_t kMost = std::numeric_limits<std::uint32_t>::max();
-  if (std::max(near, added) >= kMost || s.pairs.size() >= kMost)
+  if (std::max(near, added) >= kMost || s.pairs.size() >= kMost / 2)
     throw std::length_error("LazyEdges: more vertices or pairs than 32-bit numbers hold");
-  if (s.incident.size() <= std::max(near, added)) s.incident.resize(std::max(near, added) + 1);
-  const auto pair = static_cast<std::uint32_t>(s.pairs.size());
-  s.incident[near].push_back({static_cast<std::uint32_t>(added), pair});
-  s.incident[added].push_back({static_cast<std::uint32_t>(near), pair});
-  s.pairs.emplace_back(near, added);
-  s.facts.push_back(0);
-  s.costs.push_back(0.0);
+  s.pairs.emplace_back(static_cast<std::uint32_t>(near), static_cast<std::uint32_t>(added));
+  s.vertices = std::max(s.vertices, std::max(near, added) + 1);
 }
 
 std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex start, Vertex goal,
@@ -172,8 +222,8 @@ std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex sta
                                                                       const Heuristic& heuristic) {
   Impl& s = *impl_;
   using Color = Impl::Color;
-  const std::size_t n = std::max({vertices, start + 1, goal + 1, s.incident.size()});
-  s.incident.resize(n);
+  const std::size_t n = std::max({vertices, start + 1, goal + 1, s.vertices});
+  s.list(n);
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   s.distance.assign(n, kInfinity);
   s.estimate.assign(n, kInfinity);
@@ -191,12 +241,10 @@ std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex sta
     const Vertex u = s.heap[0];
     s.pop();
     if (u == goal) break;  // taken from the queue: OMPL's PRM stops there
-    // Indexed, not iterated: a self-pair lists u twice, and nothing is added while searching.
-    for (std::size_t i = 0; i < s.incident[u].size(); ++i) {
-      const Impl::Incidence edge = s.incident[u][i];
+    s.forEachIncidence(u, [&](const Impl::Incidence edge) {
       const Vertex v = edge.other;
       const std::uint32_t pair = edge.pair;
-      if (!s.valid(pair)) continue;
+      if (!s.valid(pair)) return;
       const double w = s.cost(pair);
       // As boost's examine_edge: Dijkstra's order holds for weights of at least 0 only.
       if (w < 0.0) throw std::invalid_argument("LazyEdges: an edge with a negative cost");
@@ -212,7 +260,7 @@ std::optional<std::vector<LazyEdges::Vertex>> LazyEdges::shortestPath(Vertex sta
         s.push(v);
         s.color[v] = Color::Gray;
       }
-    }
+    });
     s.color[u] = Color::Black;
   }
   if (s.previous[goal] == goal) return std::nullopt;

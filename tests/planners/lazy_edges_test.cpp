@@ -1,9 +1,9 @@
 // The lazily checked roadmap against the eager one it stands for: random roadmaps grown as
 // PRM* grows them (each new vertex proposed with its nearest earlier ones), with invalid
-// motions, costs that tie, split components and queries between growth, searched by LazyEdges
-// and by boost's A* over the eagerly checked graph as OMPL's PRM::constructSolution calls it
-// (the independent reference): the same path, vertex for vertex, or none for both; every pair
-// asked once at most, and far from all of them asked.
+// motions, costs that tie, split components, queries between growth and growth between queries,
+// searched by LazyEdges and by boost's A* over the eagerly checked graph as OMPL's
+// PRM::constructSolution calls it (the independent reference): the same path, vertex for vertex,
+// or none for both; every pair asked once at most, and far from all of them asked.
 #include "planners/lazy_edges.h"
 
 #include <gtest/gtest.h>
@@ -120,6 +120,12 @@ TEST(LazyEdges, FindThePathsOfTheEagerlyCheckedRoadmapAndCheckFewOfItsEdges) {
     for (int i = 0; i < 300; ++i)
       r.grow(lazy, eager);
     for (int query = 0; query < 8; ++query) {
+      // The roadmap grows by more than it had between two queries (its pairs are listed
+      // afresh), or by a query's start and goal only.
+      if (query == 5) {
+        for (int i = 0; i < 400; ++i)
+          r.grow(lazy, eager);
+      }
       // Start and goal join the roadmap, as a query's do.
       r.grow(lazy, eager);
       r.grow(lazy, eager);
