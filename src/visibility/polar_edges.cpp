@@ -319,6 +319,7 @@ void PolarEdges::bucketSortByKey(std::vector<Event>& events, std::vector<Event>&
 }
 
 bool PolarEdges::classifyNearChain(const Chain& chain) {
+  if (chain.kind == RingKind::Boundary && classifyFromKernel(chain)) return true;
   const std::uint32_t first = chain.first, count = chain.count;
 
   near_.resize(count);
@@ -378,6 +379,21 @@ bool PolarEdges::classifyNearChain(const Chain& chain) {
   return true;
 }
 
+bool PolarEdges::classifyFromKernel(const Chain& chain) {
+  // Strictly on the room's side of every side's line, and more than 2ε from each: the
+  // viewpoint lies in the room's kernel (the intersection of those half-planes), so inside it,
+  // and farther than ε from every piece whatever the rounding of the distances below, so near
+  // no vertex or piece. classifyNearChain() would find that too, piece by piece.
+  const int roomSide = chain.solidOnLeft ? -1 : 1;
+  for (std::uint32_t i = chain.first; i < chain.first + chain.count; ++i) {
+    const Vec2 a = vertex(i), b = vertex(occluders_->next(i));
+    const geometry::Orientation o = geometry::orientation(a, b, p_);
+    if (o.sign != roomSide || o.det * o.det <= 4.0 * eps2_ * norm2(b - a)) return false;
+    state_[i] = occluders_->isRepresentative(i) ? stateOf(o, a, b) : 0;
+  }
+  return true;
+}
+
 std::uint8_t PolarEdges::farPieceState(const Chain& chain, std::uint32_t piece, Vec2 a,
                                        Vec2 b) const {
   const std::uint8_t state = pieceState(piece, a, b);
@@ -392,7 +408,10 @@ std::uint8_t PolarEdges::farPieceState(const Chain& chain, std::uint32_t piece, 
 
 std::uint8_t PolarEdges::pieceState(std::uint32_t piece, Vec2 a, Vec2 b) const {
   if (!occluders_->isRepresentative(piece)) return 0;
-  const geometry::Orientation o = geometry::orientation(a, b, p_);
+  return stateOf(geometry::orientation(a, b, p_), a, b);
+}
+
+std::uint8_t PolarEdges::stateOf(const geometry::Orientation& o, Vec2 a, Vec2 b) const {
   if (o.sign == 0) return 0;  // p on the supporting line: the piece subtends no angle
   // det is the distance from p to the line times |b − a|.
   const bool edgeOn = o.det * o.det <= eps2_ * norm2(b - a);

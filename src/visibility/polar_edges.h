@@ -23,6 +23,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/predicates.h"
 #include "geometry/vec2.h"
 #include "visibility/occluders.h"
 
@@ -144,7 +145,12 @@ class PolarEdges {
   bool addChain(const Chain& chain);
   void finish(const FieldOfView* fov);
   bool classifyNearChain(const Chain& chain);
+  // classifyNearChain() of the boundary when the viewpoint lies well inside its kernel, else
+  // false, and the states it wrote are worked out again.
+  bool classifyFromKernel(const Chain& chain);
   std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
+  // pieceState() of a representative piece from its orientation test, taken already.
+  std::uint8_t stateOf(const geometry::Orientation& o, geometry::Vec2 a, geometry::Vec2 b) const;
   // pieceState() of a piece of an object whose box the viewpoint is outside, and so strictly
   // outside the object: a piece the viewpoint sees from the object's solid side is never the
   // front edge (a ray reaching it from inside the object has crossed the object's boundary

@@ -2,6 +2,7 @@
 // cases, then random viewpoints checked against the reference's angular decomposition.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -10,6 +11,7 @@
 #include "random_scenes.h"
 #include "reference_visibility.h"
 #include "support/small_worlds.h"
+#include "visibility/occluders.h"
 #include "visibility/sweep.h"
 
 namespace camcov::visibility {
@@ -56,6 +58,23 @@ TEST(VisibilityPolygon, FromABoundaryCornerTheRoomIsSeenWhole) {
   const Ring p = polygonFrom(world(box(0, 0, 10, 10), {}), {0, 0});
   EXPECT_NEAR(geometry::signedArea(p), 100.0, 1e-12);
   expectStarShaped(p, {0, 0});
+}
+
+TEST(VisibilityPolygon, AViewpointWithinTheToleranceOfAWallStandsOnIt) {
+  // Within ε of the bottom wall the viewpoint stands on it: the wall's far side is blocked at the
+  // viewpoint, which becomes a vertex of the polygon. Farther, the room is seen from inside, as
+  // from its middle.
+  const kinematics::World w = world(box(0, 0, 10, 10), {});
+  const double eps = Occluders(w).tolerance();
+  for (const double height : {0.5 * eps, 0.99 * eps}) {
+    const Ring p = polygonFrom(w, {5, height});
+    EXPECT_NE(std::find(p.begin(), p.end(), Vec2{5, height}), p.end()) << height / eps;
+  }
+  for (const double height : {1.5 * eps, 2.5 * eps, 1.0}) {
+    const Ring p = polygonFrom(w, {5, height});
+    EXPECT_EQ(p.size(), 4u) << height / eps;
+    EXPECT_NEAR(geometry::signedArea(p), 100.0, 1e-12) << height / eps;
+  }
 }
 
 TEST(VisibilityPolygon, FromATargetEdgeOnlyTheFreeHalfPlaneIsSeen) {
