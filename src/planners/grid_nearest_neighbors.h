@@ -87,6 +87,7 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
       if (found_.size() >= k && beyond(ring, kthBest(k))) break;
       if (!visitRing(centre, ring, [&](const Entry& e) { consider(p, e, k); })) break;
     }
+    if (found_.size() < k) std::sort(found_.begin(), found_.end());  // fewer than k in all
     take(k, nbh);
   }
   void nearestR(const T& data, double radius, std::vector<T>& nbh) const override {
@@ -182,32 +183,30 @@ class GridNearestNeighbors final : public ompl::NearestNeighbors<T> {
     }
     return true;
   }
-  // Keeps the k best seen so far sorted on (distance, order): one that beats the k-th moves in
-  // from the end. (A heap's sift and the sort at the end cost a third more: their comparisons
-  // go either way, a scan from the end mostly one way.) Once there are k, one farther in the
-  // plane than the k-th is passed over before its SE(2) distance is taken: that distance is at
-  // least the planar one (reachSquared_ carries the slack of beyond()).
+  // Keeps the k best seen so far: the first k as met, sorted on (distance, order) once there
+  // are k (one sort costs less than placing each in turn); then one that beats the k-th moves
+  // in from the end. (A heap's sift and the sort at the end cost a third more: their
+  // comparisons go either way, a scan from the end mostly one way.) Once there are k, one
+  // farther in the plane than the k-th is passed over before its SE(2) distance is taken: that
+  // distance is at least the planar one (reachSquared_ carries the slack of beyond()).
   void consider(const geometry::Pose& p, const Entry& e, std::size_t k) const {
     std::size_t at = found_.size();
-    if (at >= k) {
+    if (at < k) {
+      // The first k in the order met, sorted once there are k.
+      found_.push_back({se2Distance(p, e.pose), e.order, e.data});
+      if (found_.size() < k) return;
+      std::sort(found_.begin(), found_.end());
+    } else {
       const double dx = p.x - e.pose.x, dy = p.y - e.pose.y;
       if (dx * dx + dy * dy > reachSquared_) return;
+      const Found f{se2Distance(p, e.pose), e.order, e.data};
+      if (!(f < found_.back())) return;
+      for (--at; at > 0 && f < found_[at - 1]; --at)
+        found_[at] = found_[at - 1];
+      found_[at] = f;
     }
-    const Found f{se2Distance(p, e.pose), e.order, e.data};
-    if (at < k) {
-      found_.push_back(f);
-    } else if (f < found_.back()) {
-      --at;
-    } else {
-      return;
-    }
-    for (; at > 0 && f < found_[at - 1]; --at)
-      found_[at] = found_[at - 1];
-    found_[at] = f;
-    if (found_.size() == k) {
-      const double reach = found_.back().distance * (1.0 + 1e-9);
-      reachSquared_ = reach * reach;
-    }
+    const double reach = found_.back().distance * (1.0 + 1e-9);
+    reachSquared_ = reach * reach;
   }
   double kthBest(std::size_t k) const {
     return found_.size() < k ? std::numeric_limits<double>::infinity() : found_.back().distance;
