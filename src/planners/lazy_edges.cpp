@@ -75,7 +75,8 @@ struct LazyEdges::Impl {
       l.clear();
     listed = pairs.size();
   }
-  // Vertex u's incidences: its packed ones, then its later ones.
+  // Vertex u's incidences: its packed ones, then its later ones (a self-pair lists u twice).
+  // Nothing is proposed while a search runs, so the lists hold still under it.
   template <typename F>
   void forEachIncidence(Vertex u, F&& f) const {
     if (u + 1 < firstOf.size()) {

@@ -382,8 +382,8 @@ bool PolarEdges::classifyNearChain(const Chain& chain) {
 bool PolarEdges::classifyFromKernel(const Chain& chain) {
   // Strictly on the room's side of every side's line, and more than 2ε from each: the
   // viewpoint lies in the room's kernel (the intersection of those half-planes), so inside it,
-  // and farther than ε from every piece whatever the rounding of the distances below, so near
-  // no vertex or piece. classifyNearChain() would find that too, piece by piece.
+  // and farther than ε from every piece however classifyNearChain()'s distances round, so near
+  // no vertex or piece: what classifyNearChain() would find, piece by piece.
   const int roomSide = chain.solidOnLeft ? -1 : 1;
   for (std::uint32_t i = chain.first; i < chain.first + chain.count; ++i) {
     const Vec2 a = vertex(i), b = vertex(occluders_->next(i));
