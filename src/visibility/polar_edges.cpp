@@ -319,8 +319,10 @@ void PolarEdges::bucketSortByKey(std::vector<Event>& events, std::vector<Event>&
 }
 
 bool PolarEdges::classifyNearChain(const Chain& chain) {
-  if (chain.kind == RingKind::Boundary && classifyFromKernel(chain)) return true;
   const std::uint32_t first = chain.first, count = chain.count;
+  // Pieces first .. first + known have their final states already.
+  const std::uint32_t known = chain.kind == RingKind::Boundary ? classifyFromKernel(chain) : 0;
+  if (known == count) return true;
 
   near_.resize(count);
   bool touching = false;
@@ -373,25 +375,29 @@ bool PolarEdges::classifyNearChain(const Chain& chain) {
       }
     }
   }
-  for (std::uint32_t i = first; i < first + count; ++i) {
+  for (std::uint32_t i = first + known; i < first + count; ++i) {
     if (state_[i] != kTouching) state_[i] = pieceState(i, vertex(i), vertex(occluders_->next(i)));
   }
   return true;
 }
 
-bool PolarEdges::classifyFromKernel(const Chain& chain) {
+std::uint32_t PolarEdges::classifyFromKernel(const Chain& chain) {
   // Strictly on the room's side of every side's line, and more than 2ε from each: the
   // viewpoint lies in the room's kernel (the intersection of those half-planes), so inside it,
   // and farther than ε from every piece however classifyNearChain()'s distances round, so near
-  // no vertex or piece: what classifyNearChain() would find, piece by piece.
+  // no vertex or piece: what classifyNearChain() would find, piece by piece. A piece that
+  // passes lies farther than 2ε from the viewpoint, so no piece found touching after it can
+  // change its state.
   const int roomSide = chain.solidOnLeft ? -1 : 1;
-  for (std::uint32_t i = chain.first; i < chain.first + chain.count; ++i) {
+  std::uint32_t known = 0;
+  for (; known < chain.count; ++known) {
+    const std::uint32_t i = chain.first + known;
     const Vec2 a = vertex(i), b = vertex(occluders_->next(i));
     const geometry::Orientation o = geometry::orientation(a, b, p_);
-    if (o.sign != roomSide || o.det * o.det <= 4.0 * eps2_ * norm2(b - a)) return false;
+    if (o.sign != roomSide || o.det * o.det <= 4.0 * eps2_ * norm2(b - a)) break;
     state_[i] = occluders_->isRepresentative(i) ? stateOf(o, a, b) : 0;
   }
-  return true;
+  return known;
 }
 
 std::uint8_t PolarEdges::farPieceState(const Chain& chain, std::uint32_t piece, Vec2 a,

@@ -145,9 +145,10 @@ class PolarEdges {
   bool addChain(const Chain& chain);
   void finish(const FieldOfView* fov);
   bool classifyNearChain(const Chain& chain);
-  // classifyNearChain() of the boundary when the viewpoint lies well inside its kernel, else
-  // false, and the states it wrote are worked out again.
-  bool classifyFromKernel(const Chain& chain);
+  // classifyNearChain()'s states of the boundary's pieces, in chain order, while the viewpoint
+  // lies well inside each one's half-plane: all of them when it lies well inside the kernel.
+  // How many it set.
+  std::uint32_t classifyFromKernel(const Chain& chain);
   std::uint8_t pieceState(std::uint32_t piece, geometry::Vec2 a, geometry::Vec2 b) const;
   // pieceState() of a representative piece from its orientation test, taken already.
   std::uint8_t stateOf(const geometry::Orientation& o, geometry::Vec2 a, geometry::Vec2 b) const;
