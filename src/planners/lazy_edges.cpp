@@ -42,8 +42,9 @@ struct LazyEdges::Impl {
   std::size_t listed = 0;    // pairs packed or in later lists
   std::size_t vertices = 0;  // one past the largest vertex proposed
 
-  void list(std::size_t vertices) {
-    later.resize(std::max(later.size(), vertices));
+  // Lists every pair proposed so far, for a search over n vertices.
+  void list(std::size_t n) {
+    later.resize(std::max(later.size(), n));
     facts.resize(pairs.size(), 0);
     costs.resize(pairs.size());
     if (pairs.size() - listed <= packed.size() / 2) {

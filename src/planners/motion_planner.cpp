@@ -342,6 +342,15 @@ struct Roadmap::Impl {
     }));
   }
 
+  // f(a, b) of OMPL states of the two poses.
+  template <typename F>
+  auto onStates(const geometry::Pose& a, const geometry::Pose& b, F&& f) const {
+    ob::ScopedState<ob::SE2StateSpace> s(space), g(space);
+    fromPose(a, s.get());
+    fromPose(b, g.get());
+    return f(s.get(), g.get());
+  }
+
   PlanningWorld w;
   std::shared_ptr<ob::SE2StateSpace> space;
   ob::SpaceInformationPtr si;
@@ -357,10 +366,9 @@ Roadmap::~Roadmap() = default;
 
 std::optional<std::vector<geometry::Pose>> Roadmap::query(const geometry::Pose& start,
                                                           const geometry::Pose& goal) {
-  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
-  fromPose(start, s.get());
-  fromPose(goal, g.get());
-  return impl_->planner->connect(s.get(), g.get());
+  return impl_->onStates(start, goal, [this](const ob::State* s, const ob::State* g) {
+    return impl_->planner->connect(s, g);
+  });
 }
 
 std::size_t Roadmap::milestones() const {
@@ -372,17 +380,15 @@ bool Roadmap::motionValid(const geometry::Pose& a, const geometry::Pose& b) cons
 }
 
 double Roadmap::cost(const geometry::Pose& a, const geometry::Pose& b) const {
-  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
-  fromPose(a, s.get());
-  fromPose(b, g.get());
-  return impl_->objective->motionCost(s.get(), g.get()).value();
+  return impl_->onStates(a, b, [this](const ob::State* s, const ob::State* g) {
+    return impl_->objective->motionCost(s, g).value();
+  });
 }
 
 double Roadmap::costLowerBound(const geometry::Pose& a, const geometry::Pose& b) const {
-  ob::ScopedState<ob::SE2StateSpace> s(impl_->space), g(impl_->space);
-  fromPose(a, s.get());
-  fromPose(b, g.get());
-  return impl_->objective->motionCostHeuristic(s.get(), g.get()).value();
+  return impl_->onStates(a, b, [this](const ob::State* s, const ob::State* g) {
+    return impl_->objective->motionCostHeuristic(s, g).value();
+  });
 }
 
 }  // namespace camcov::planners
