@@ -212,21 +212,35 @@ bool PolarEdges::boxBeyondARay(const geometry::Box& box) const {
   return right || left;
 }
 
-bool PolarEdges::boxWellInView(const geometry::Box& box) const {
-  if (!narrowFov_) return false;
-  // Every point x of the box lies within r = (w + h)/2 of its centre c, so cross(ray, x − p) ≥
-  // cross(ray, c − p) − |ray|·r and |x − p|₁ ≤ |c − p|₁ + 2r: past the margin with c, past it
-  // with every corner.
+PolarEdges::DiscView PolarEdges::discView(const geometry::Box& box) const {
+  if (!narrowFov_) return DiscView::Unsure;
+  // Every point x of the box lies within r = (w + h)/2 of its centre c, so cross(ray, x − p)
+  // lies within |ray|·r of cross(ray, c − p), and |x − p|₁ ≤ |c − p|₁ + 2r: past twice the
+  // margin with the disc, past the margin with every corner (the factor 2 dwarfs rounding).
   const Vec2 c{0.5 * (box.min.x + box.max.x), 0.5 * (box.min.y + box.max.y)};
   const double r = 0.5 * ((box.max.x - box.min.x) + (box.max.y - box.min.y));
   const Vec2 d = c - p_;
   const double l1 = std::abs(d.x) + std::abs(d.y) + 2.0 * r;
-  return geometry::cross(rayRight_, d) - rayRightNorm_ * r > 2.0 * rayRightMargin_ * l1 &&
-         geometry::cross(d, rayLeft_) - rayLeftNorm_ * r > 2.0 * rayLeftMargin_ * l1;
+  const double right = geometry::cross(rayRight_, d), left = geometry::cross(d, rayLeft_);
+  const double rightMargin = 2.0 * rayRightMargin_ * l1, leftMargin = 2.0 * rayLeftMargin_ * l1;
+  if (right + rayRightNorm_ * r < -rightMargin || left + rayLeftNorm_ * r < -leftMargin)
+    return DiscView::BeyondARay;
+  if (right - rayRightNorm_ * r > rightMargin && left - rayLeftNorm_ * r > leftMargin)
+    return DiscView::WellInView;
+  return DiscView::Unsure;
 }
 
 bool PolarEdges::boxOutOfView(const geometry::Box& box) const {
-  return cullWidth_ != 0 && !boxWellInView(box) && (boxBeyondARay(box) || boxArcOutOfView(box));
+  if (cullWidth_ == 0) return false;
+  switch (discView(box)) {
+    case DiscView::BeyondARay:
+      return true;
+    case DiscView::WellInView:
+      return false;
+    case DiscView::Unsure:
+      break;
+  }
+  return boxBeyondARay(box) || boxArcOutOfView(box);
 }
 
 bool PolarEdges::boxArcOutOfView(const geometry::Box& box) const {

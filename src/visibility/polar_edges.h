@@ -107,7 +107,7 @@ class PolarEdges {
   bool sameRay(const Event& a, const Event& b) const;
 
   // The box, seen from a viewpoint outside it, is out of view as a whole (after build()):
-  // boxBeyondARay() first, then boxArcOutOfView().
+  // discView() first, then boxBeyondARay(), then boxArcOutOfView().
   bool boxOutOfView(const geometry::Box& box) const;
   // The arc the box spans, in keys, lies in the out-of-view arc with two quanta to spare.
   bool boxArcOutOfView(const geometry::Box& box) const;
@@ -118,10 +118,15 @@ class PolarEdges {
   // never culls a chain the other would keep, and the sweep's output is unchanged.
   bool boxBeyondARay(const geometry::Box& box) const;
   static constexpr double kBeyondRayMargin = 1e-6;
-  // A quicker test the other way, for θ ≤ π/2: the disc about the box's centre that holds it
-  // lies inside both rays by twice that margin, so neither test above can say out of view. Most
-  // chains a camera looks at pass it, and skip them.
-  bool boxWellInView(const geometry::Box& box) const;
+  // Quicker tests both ways, for θ ≤ π/2, on the disc about the box's centre that holds it
+  // (radius (w + h)/2, which bounds each corner's distance and |·|₁ offset from the centre):
+  //  - BeyondARay: the disc lies beyond one of the rays by twice boxBeyondARay()'s margin, so
+  //    every corner lies beyond it by that margin and boxBeyondARay() says so too. Most chains
+  //    lie out of a narrow view, and are culled at the cost of one point's test.
+  //  - WellInView: it lies inside both rays by twice the margin, so neither test above can say
+  //    out of view. Most chains a camera looks at pass it, and skip them.
+  enum class DiscView : std::uint8_t { BeyondARay, WellInView, Unsure };
+  DiscView discView(const geometry::Box& box) const;
 
   // Two stable sorts of events by key, one result: an LSD radix sort (four passes of 8 bits),
   // and for a few events, as a camera's narrow view holds, a counting sort into 256 buckets

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "support/small_worlds.h"
 #include "support/splitmix64.h"
@@ -44,6 +45,53 @@ TEST(PolarEdges, TheQuickRayTestCullsNoBoxTheKeyTestKeeps) {
         << "p (" << p.x << ", " << p.y << "), yaw " << fov.yaw << ", θ " << fov.halfAngle;
   }
   EXPECT_GT(quick, 50000) << "the quick test must decide often enough to be worth it";
+}
+
+TEST(PolarEdges, TheDiscTestsDecideOnlyWhatTheCornerAndKeyTestsDecide) {
+  const Occluders occluders(camcov::testing::world(camcov::testing::box(-50, -50, 50, 50), {}));
+  camcov::testing::SplitMix64 random{12};
+  PolarEdges edges;
+  int beyond = 0, within = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Vec2 p{random.uniform(-40, 40), random.uniform(-40, 40)};
+    const FieldOfView fov{random.uniform(-4, 4), random.uniform(1e-3, 0.5 * std::numbers::pi)};
+    geometry::Box box;
+    box.min = {random.uniform(-45, 40), random.uniform(-45, 40)};
+    // Flat and point boxes too (a vertical or horizontal edge's box, a lone vertex's), whose
+    // disc is as narrow as the box.
+    const double w = i % 5 == 0 ? 0.0 : random.uniform(1e-3, 5);
+    const double h = i % 7 == 0 ? 0.0 : random.uniform(1e-3, 5);
+    box.max = box.min + Vec2{w, h};
+    if (i % 3 == 0) {  // a corner on either ray, off it by a few ulps to 1e-5 rad either way
+      const double off = std::pow(10.0, random.uniform(-15, -5)) * (i % 2 == 0 ? 1 : -1);
+      const double side = i % 4 == 0 ? -1.0 : 1.0;
+      const Vec2 corner =
+          p + random.uniform(1, 30) * geometry::unitVector(fov.yaw + side * (fov.halfAngle + off));
+      box.min = corner;
+      box.max = corner + Vec2{w, h};
+    }
+    if (geometry::contains(geometry::grown(box, 1e-9), p)) continue;
+    edges.build(occluders, p, &fov);
+    const auto where = [&] {
+      return "p (" + std::to_string(p.x) + ", " + std::to_string(p.y) + "), yaw " +
+             std::to_string(fov.yaw) + ", θ " + std::to_string(fov.halfAngle);
+    };
+    switch (edges.discView(box)) {
+      case PolarEdges::DiscView::BeyondARay:
+        ++beyond;
+        ASSERT_TRUE(edges.boxBeyondARay(box)) << where();
+        break;
+      case PolarEdges::DiscView::WellInView:
+        ++within;
+        ASSERT_FALSE(edges.boxBeyondARay(box)) << where();
+        ASSERT_FALSE(edges.boxArcOutOfView(box)) << where();
+        break;
+      case PolarEdges::DiscView::Unsure:
+        break;
+    }
+  }
+  EXPECT_GT(beyond, 50000) << "the disc must decide most boxes out of view";
+  EXPECT_GT(within, 5000);
 }
 
 TEST(PolarEdges, TheQuickRayTestStaysOutOfWideFieldsOfView) {
