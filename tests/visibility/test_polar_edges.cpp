@@ -1,6 +1,7 @@
 // PolarEdges' culling of what lies out of a camera's view: the quick test against the rays
 // (boxBeyondARay) may only leave out what the test on the keys (boxArcOutOfView) leaves out,
-// so the sweep's output cannot depend on which of the two decided.
+// and the quicker one on a box's disc (discView) only decide what those two decide, so the
+// sweep's output cannot depend on which of them decided.
 #include "visibility/polar_edges.h"
 
 #include <gtest/gtest.h>
