@@ -64,8 +64,10 @@ TEST(PolarEdges, TheDiscTestsDecideOnlyWhatTheCornerAndKeyTestsDecide) {
     const double h = i % 7 == 0 ? 0.0 : random.uniform(1e-3, 5);
     box.max = box.min + Vec2{w, h};
     if (i % 3 == 0) {  // a corner on either ray, off it by a few ulps to 1e-5 rad either way
-      const double off = std::pow(10.0, random.uniform(-15, -5)) * (i % 2 == 0 ? 1 : -1);
-      const double side = i % 4 == 0 ? -1.0 : 1.0;
+      // Side and sign drawn apart, so that each ray gets corners just beyond and just inside.
+      const double off =
+          std::pow(10.0, random.uniform(-15, -5)) * (random.uniform(0, 1) < 0.5 ? 1.0 : -1.0);
+      const double side = random.uniform(0, 1) < 0.5 ? -1.0 : 1.0;
       const Vec2 corner =
           p + random.uniform(1, 30) * geometry::unitVector(fov.yaw + side * (fov.halfAngle + off));
       box.min = corner;
